@@ -1,0 +1,427 @@
+#!/usr/bin/python3
+"""Draw the figure of a wpg run dataset (HDF5, datasets/SCHEMA.md) as one PNG.
+
+For every group under /runs/: on the left the top view (every footstep as an oriented sole
+rectangle centred on the ankle, the CoM and CoP paths, equal axes); on the right CoM and CoP
+x and y against time, and the NMPC solve time per iteration over the support phases.
+
+    /usr/bin/python3 plot_run.py RUN.h5 [-o FIG.png] [--run NAME]
+
+Needs Debian's python3-h5py and python3-matplotlib (run it with /usr/bin/python3: a pyenv
+python3 does not see them). The PNG is written atomically (temporary file, then rename).
+Exit status 2 with one line on stderr on a bad file.
+"""
+import argparse
+import math
+import os
+import re
+import sys
+import tempfile
+
+PROG = os.environ.get("WPG_PLOT_PROG") or os.path.basename(sys.argv[0])
+
+# HRP-2 sole (DESIGN.md), used when the run's scenario text does not give the foot size.
+DEFAULT_FOOT_LENGTH = 0.2172  # [m]
+DEFAULT_FOOT_WIDTH = 0.138  # [m]
+
+LEFT_COLOUR = "tab:blue"
+RIGHT_COLOUR = "tab:red"
+COM_COLOUR = "black"
+COP_COLOUR = "tab:green"
+PUSH_COLOUR = "tab:purple"
+
+# mpc/status values (libwpg IterationStatus) and how they are drawn.
+STATUS_STYLE = {
+    0: ("solved", "tab:gray", "o"),
+    1: ("relaxed", "tab:orange", "s"),
+    2: ("fallback", "tab:red", "X"),
+    3: ("iteration limit", "tab:purple", "D"),
+}
+SCHEMA_DATASETS = ("time", "com", "cop", "support", "footsteps", "footstep_side")
+
+
+class BadInput(Exception):
+    """A problem with the input file: one line on stderr, exit status 2."""
+
+
+def fail(message):
+    sys.stderr.write("%s: error: %s\n" % (PROG, " ".join(str(message).split())))
+    sys.exit(2)
+
+
+try:
+    import numpy as np
+    import h5py
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from matplotlib.patches import Patch, Polygon
+    from matplotlib.lines import Line2D
+except ImportError as error:
+    fail("plotting needs h5py and matplotlib for %s (%s): install the Debian packages "
+         "python3-h5py python3-matplotlib" % (sys.executable, error))
+
+
+# --- scenario text (root attribute `scenario`) -------------------------------------------------
+def parse_scenario(text):
+    """The scenario YAML as a dict: PyYAML when present, else {} (callers fall back)."""
+    if not text:
+        return {}
+    try:
+        import yaml  # python3-yaml: usually there, not required
+    except ImportError:
+        return {}
+    try:
+        data = yaml.safe_load(text)
+    except yaml.YAMLError:
+        return {}
+    return data if isinstance(data, dict) else {}
+
+
+def walking_value(scenario, text, key, default):
+    """walking.<key> from the scenario, by YAML or by a plain regular expression."""
+    walking = scenario.get("walking")
+    if isinstance(walking, dict) and isinstance(walking.get(key), (int, float)):
+        return float(walking[key])
+    match = re.search(r"^walking:\s*\n(?:[ \t]+.*\n|\s*\n)*?[ \t]+%s:\s*([-+0-9.eE]+)" % key,
+                      text or "", re.MULTILINE)
+    if match:
+        try:
+            return float(match.group(1))
+        except ValueError:
+            pass
+    return default
+
+
+def as_text(value):
+    if value is None:
+        return ""
+    if isinstance(value, bytes):
+        return value.decode("utf-8", "replace")
+    if isinstance(value, np.ndarray) and value.size == 1:
+        return as_text(value.item())
+    return str(value)
+
+
+def fmt_number(value):
+    try:
+        return ("%.3g" % float(value))
+    except (TypeError, ValueError):
+        return str(value)
+
+
+def describe_command(scenario):
+    """A short text of the velocity command(s) of the scenario, or ''."""
+    request = scenario.get("request") if isinstance(scenario.get("request"), dict) else scenario
+    for key in ("reference", "command", "commands", "velocity"):
+        entries = request.get(key)
+        if entries is None:
+            continue
+        if isinstance(entries, dict):
+            entries = [entries]
+        if not isinstance(entries, list):
+            return "%s: %s" % (key, entries)
+        parts = []
+        for entry in entries:
+            if isinstance(entry, dict):
+                velocity = entry.get("velocity", entry.get("command", entry.get("v")))
+                if isinstance(velocity, (list, tuple)):
+                    velocity = "(" + ", ".join(fmt_number(v) for v in velocity) + ")"
+                elif isinstance(velocity, dict):
+                    velocity = "(" + ", ".join(
+                        "%s %s" % (k, fmt_number(v)) for k, v in velocity.items()) + ")"
+                t = entry.get("t", entry.get("time"))
+                parts.append(("t=%ss: " % fmt_number(t) if t is not None else "") + str(velocity))
+            elif isinstance(entry, (list, tuple)):
+                parts.append("(" + ", ".join(fmt_number(v) for v in entry) + ")")
+            else:
+                parts.append(str(entry))
+        if len(parts) > 4:
+            parts = parts[:3] + ["... (%d commands)" % len(parts)]
+        text = "command [vx m/s, vy m/s, ω rad/s] " + "; ".join(parts)
+        pushes = request.get("pushes")
+        if isinstance(pushes, list) and pushes:
+            text += "; %d push%s" % (len(pushes), "es" if len(pushes) > 1 else "")
+            first = pushes[0]
+            if isinstance(first, dict) and isinstance(first.get("force"), (list, tuple)):
+                text += " (%s N at t=%ss)" % (
+                    ", ".join(fmt_number(v) for v in first["force"]), fmt_number(first.get("t")))
+        return text
+    return ""
+
+
+# --- reading -----------------------------------------------------------------------------------
+def read_runs(path, only=None):
+    if not os.path.exists(path):
+        raise BadInput("cannot read '%s': no such file" % path)
+    if os.path.isdir(path):
+        raise BadInput("cannot read '%s': it is a directory" % path)
+    if not os.access(path, os.R_OK):
+        raise BadInput("cannot read '%s': permission denied" % path)
+    try:
+        handle = h5py.File(path, "r")
+    except (OSError, ValueError) as error:
+        if not h5py.is_hdf5(path):
+            raise BadInput("cannot read '%s': not an HDF5 file" % path)
+        raise BadInput("cannot read '%s': %s" % (path, str(error)[:200]))
+    with handle:
+        scenario_text = as_text(handle.attrs.get("scenario"))
+        runs_group = handle.get("runs")
+        if not isinstance(runs_group, h5py.Group) or len(runs_group) == 0:
+            raise BadInput("'%s' holds no run: no group under /runs/" % path)
+        names = sorted(runs_group.keys())
+        if only is not None:
+            if only not in runs_group:
+                raise BadInput("'%s' has no run '%s' (runs: %s)" % (path, only, ", ".join(names)))
+            names = [only]
+        runs = []
+        for name in names:
+            group = runs_group[name]
+            if not isinstance(group, h5py.Group):
+                continue
+            missing = [key for key in SCHEMA_DATASETS if key not in group]
+            if missing:
+                raise BadInput("'%s': /runs/%s lacks %s" % (path, name, ", ".join(missing)))
+            run = {"name": name}
+            for key in SCHEMA_DATASETS:
+                run[key] = np.asarray(group[key][()])
+            mpc = group.get("mpc")
+            run["mpc"] = None
+            if isinstance(mpc, h5py.Group) and "time" in mpc and "solve_time" in mpc:
+                run["mpc"] = {key: np.asarray(mpc[key][()]) for key in mpc.keys()
+                              if isinstance(mpc[key], h5py.Dataset)}
+            # a batch may store each run's own scenario text on its group
+            run["scenario_text"] = as_text(group.attrs.get("scenario")) or scenario_text
+            check_shapes(path, run)
+            runs.append(run)
+        if not runs:
+            raise BadInput("'%s' holds no run: no group under /runs/" % path)
+        return runs
+
+
+def check_shapes(path, run):
+    n = run["time"].shape[0] if run["time"].ndim == 1 else -1
+    expected = {"com": (n, 3), "cop": (n, 2), "support": (n,)}
+    for key, shape in expected.items():
+        if run[key].shape[:len(shape)] != shape or n < 0:
+            raise BadInput("'%s': /runs/%s/%s has shape %s, expected %s"
+                           % (path, run["name"], key, run[key].shape, shape))
+    footsteps = run["footsteps"]
+    if footsteps.ndim != 2 or footsteps.shape[1] != 4 \
+            or run["footstep_side"].shape != (footsteps.shape[0],):
+        raise BadInput("'%s': /runs/%s footsteps (m x 4) and footstep_side (m) disagree: %s, %s"
+                       % (path, run["name"], footsteps.shape, run["footstep_side"].shape))
+
+
+# --- drawing -----------------------------------------------------------------------------------
+def sole_corners(x, y, yaw, length, width):
+    c, s = math.cos(yaw), math.sin(yaw)
+    corners = []
+    for dx, dy in ((0.5, 0.5), (-0.5, 0.5), (-0.5, -0.5), (0.5, -0.5)):
+        px, py = dx * length, dy * width
+        corners.append((x + c * px - s * py, y + s * px + c * py))
+    return corners
+
+
+def draw_top_view(ax, run, foot_length, foot_width):
+    footsteps, sides = run["footsteps"], run["footstep_side"]
+    for index, ((landing, x, y, yaw), side) in enumerate(zip(footsteps, sides)):
+        colour = LEFT_COLOUR if int(side) == 1 else RIGHT_COLOUR
+        ax.add_patch(Polygon(sole_corners(x, y, yaw, foot_length, foot_width), closed=True,
+                             facecolor=colour, alpha=0.18, edgecolor=colour, linewidth=1.0))
+        # a tick from the ankle towards the toe shows the yaw
+        ax.plot([x, x + 0.35 * foot_length * math.cos(yaw)],
+                [y, y + 0.35 * foot_length * math.sin(yaw)], color=colour, linewidth=1.0)
+    ax.plot(run["cop"][:, 0], run["cop"][:, 1], color=COP_COLOUR, linewidth=0.9, label="CoP")
+    ax.plot(run["com"][:, 0], run["com"][:, 1], color=COM_COLOUR, linewidth=1.6, label="CoM")
+    if len(run["com"]):
+        ax.plot(run["com"][0, 0], run["com"][0, 1], "o", color=COM_COLOUR, markersize=4)
+    ax.set_aspect("equal", adjustable="datalim")
+    ax.autoscale_view()
+    ax.set_xlabel("x [m]")
+    ax.set_ylabel("y [m]")
+    ax.set_title("top view: %d footsteps (%d initial)" % (len(footsteps), min(2, len(footsteps))),
+                 fontsize=10)
+    ax.grid(True, linewidth=0.4, alpha=0.5)
+    handles = [Line2D([], [], color=COM_COLOUR, linewidth=1.6, label="CoM"),
+               Line2D([], [], color=COP_COLOUR, linewidth=0.9, label="CoP"),
+               Patch(facecolor=LEFT_COLOUR, alpha=0.35, edgecolor=LEFT_COLOUR, label="left foot"),
+               Patch(facecolor=RIGHT_COLOUR, alpha=0.35, edgecolor=RIGHT_COLOUR,
+                     label="right foot")]
+    ax.legend(handles=handles, loc="best", fontsize=8, framealpha=0.85)
+
+
+def support_spans(time, support):
+    """[(t0, t1, state)] for the runs of equal support state."""
+    spans = []
+    if len(time) == 0:
+        return spans
+    start = 0
+    for i in range(1, len(time) + 1):
+        if i == len(time) or support[i] != support[start]:
+            end = time[i] if i < len(time) else time[-1]
+            spans.append((time[start], end, int(support[start])))
+            start = i
+    return spans
+
+
+def shade_support(ax, spans):
+    for t0, t1, state in spans:
+        if state in (1, 2):
+            ax.axvspan(t0, t1, color=LEFT_COLOUR if state == 1 else RIGHT_COLOUR, alpha=0.07,
+                       linewidth=0)
+
+
+def first_failure(run):
+    """(time, status name) of the first NMPC iteration that fell back or hit its iteration
+    limit, or None."""
+    mpc = run["mpc"]
+    if mpc is None or "status" not in mpc:
+        return None
+    status = np.asarray(mpc["status"], dtype=int)
+    bad = np.flatnonzero(np.isin(status, (2, 3)))
+    if len(bad) == 0:
+        return None
+    return float(mpc["time"][bad[0]]), STATUS_STYLE[int(status[bad[0]])][0]
+
+
+def scenario_pushes(scenario):
+    """[(t0, t1)] of the pushes of the scenario."""
+    request = scenario.get("request") if isinstance(scenario.get("request"), dict) else scenario
+    pushes = request.get("pushes")
+    spans = []
+    for push in pushes if isinstance(pushes, list) else []:
+        try:
+            t0 = float(push["t"])
+            spans.append((t0, t0 + float(push.get("duration", 0.1))))
+        except (TypeError, KeyError, ValueError):
+            continue
+    return spans
+
+
+def draw_time_panels(axes, run, pushes):
+    time, com, cop = run["time"], run["com"], run["cop"]
+    spans = support_spans(time, run["support"])
+    failure = first_failure(run)
+    for ax in axes:
+        for index, (t0, t1) in enumerate(pushes):
+            ax.axvspan(t0, t1, color=PUSH_COLOUR, alpha=0.45, linewidth=0,
+                       label="push" if index == 0 and ax is not axes[2] else None)
+        if failure is not None:
+            ax.axvline(failure[0], color=STATUS_STYLE[2][1], linestyle="--", linewidth=1.0)
+    if failure is not None:
+        axes[0].set_title("first %s at t = %.2f s" % (failure[1], failure[0]), fontsize=9,
+                          color=STATUS_STYLE[2][1])
+    for ax, column, axis_name in ((axes[0], 0, "x"), (axes[1], 1, "y")):
+        shade_support(ax, spans)
+        ax.plot(time, cop[:, column], color=COP_COLOUR, linewidth=0.9, label="CoP " + axis_name)
+        ax.plot(time, com[:, column], color=COM_COLOUR, linewidth=1.4, label="CoM " + axis_name)
+        ax.set_ylabel(axis_name + " [m]")
+        ax.legend(loc="best", fontsize=8, framealpha=0.85)
+        ax.grid(True, linewidth=0.4, alpha=0.5)
+    ax = axes[2]
+    shade_support(ax, spans)
+    mpc = run["mpc"]
+    if mpc is not None and len(mpc["time"]):
+        mpc_time = mpc["time"]
+        solve_us = 1e6 * np.asarray(mpc["solve_time"], dtype=float)
+        status = np.asarray(mpc.get("status", np.zeros(len(mpc_time))), dtype=int)
+        ax.plot(mpc_time, solve_us, color="0.6", linewidth=0.6)
+        for value, (label, colour, marker) in STATUS_STYLE.items():
+            chosen = status == value
+            if np.any(chosen):
+                ax.plot(mpc_time[chosen], solve_us[chosen], linestyle="none", marker=marker,
+                        markersize=3 if value == 0 else 6, color=colour,
+                        label="%s (%d)" % (label, int(np.count_nonzero(chosen))))
+        unknown = ~np.isin(status, list(STATUS_STYLE))
+        if np.any(unknown):
+            ax.plot(mpc_time[unknown], solve_us[unknown], "k*", markersize=6,
+                    label="other status (%d)" % int(np.count_nonzero(unknown)))
+        ax.set_title("NMPC solve time per iteration: median %.0f µs, max %.0f µs"
+                     % (np.median(solve_us), np.max(solve_us)), fontsize=9)
+        ax.set_ylabel("solve [µs]")
+        # headroom above the data for the legend
+        ax.set_ylim(0, 1.5 * max(float(np.max(solve_us)), 1e-9))
+        ax.legend(loc="upper right", fontsize=7, framealpha=0.85, ncol=3)
+    else:
+        ax.step(time, run["support"], where="post", color="black", linewidth=1.0)
+        ax.set_yticks([0, 1, 2])
+        ax.set_yticklabels(["double", "left", "right"])
+        ax.set_ylabel("support")
+    ax.set_xlabel("time [s]   (shaded: left / right single support)")
+    ax.grid(True, linewidth=0.4, alpha=0.5)
+
+
+def draw(runs, source_path):
+    rows = len(runs)
+    fig = plt.figure(figsize=(15, 6.8 * rows))
+    outer = fig.add_gridspec(rows, 1, hspace=0.35)
+    for row, run in enumerate(runs):
+        scenario = parse_scenario(run["scenario_text"])
+        foot_length = walking_value(scenario, run["scenario_text"], "foot_length",
+                                    DEFAULT_FOOT_LENGTH)
+        foot_width = walking_value(scenario, run["scenario_text"], "foot_width",
+                                   DEFAULT_FOOT_WIDTH)
+        cell = outer[row].subgridspec(3, 2, width_ratios=(1.25, 1.0), hspace=0.45, wspace=0.18)
+        top = fig.add_subplot(cell[:, 0])
+        right = [fig.add_subplot(cell[0, 1])]
+        right.append(fig.add_subplot(cell[1, 1], sharex=right[0]))
+        right.append(fig.add_subplot(cell[2, 1], sharex=right[0]))
+        for ax in right[:2]:
+            ax.tick_params(labelbottom=False)
+        draw_top_view(top, run, foot_length, foot_width)
+        draw_time_panels(right, run, scenario_pushes(scenario))
+        command = describe_command(scenario)
+        title = "run %s" % run["name"] + ("   —   " + command if command else "")
+        top.text(0.0, 1.06, title, transform=top.transAxes, fontsize=12, fontweight="bold",
+                 ha="left", va="bottom")
+    fig.text(0.995, 0.003, os.path.basename(source_path), ha="right", va="bottom", fontsize=7,
+             color="0.4")
+    return fig
+
+
+def save_atomically(fig, output):
+    folder = os.path.dirname(os.path.abspath(output))
+    fd, temporary = tempfile.mkstemp(prefix="." + os.path.basename(output) + ".",
+                                     suffix=".tmp", dir=folder)
+    try:
+        with os.fdopen(fd, "wb") as stream:
+            fig.savefig(stream, format="png", dpi=110, bbox_inches="tight")
+        umask = os.umask(0)
+        os.umask(umask)
+        os.chmod(temporary, 0o666 & ~umask)
+        os.replace(temporary, output)
+    except BaseException:
+        try:
+            os.unlink(temporary)
+        except OSError:
+            pass
+        raise
+
+
+def main():
+    parser = argparse.ArgumentParser(prog=PROG + " plot" if PROG == "wpg" else PROG,
+                                     description=__doc__.split("\n")[0])
+    parser.add_argument("run_file", help="HDF5 dataset written by `wpg run`")
+    parser.add_argument("-o", "--output", help="PNG to write (default: RUN with .png)")
+    parser.add_argument("--run", help="draw only this group of /runs/ (default: all)")
+    args = parser.parse_args()
+    output = args.output or os.path.splitext(args.run_file)[0] + ".png"
+    try:
+        runs = read_runs(args.run_file, args.run)
+    except BadInput as error:
+        fail(error)
+    if not os.path.isdir(os.path.dirname(os.path.abspath(output))):
+        fail("cannot write '%s': no such folder" % output)
+    fig = draw(runs, args.run_file)
+    try:
+        save_atomically(fig, output)
+    except OSError as error:
+        fail("cannot write '%s': %s" % (output, error))
+    finally:
+        plt.close(fig)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,63 @@
+#pragma once
+// Shared pieces of the `wpg` executable that do not need CLI11 (main.cpp is the only
+// translation unit that includes CLI11: it is the slowest header of the project to compile).
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace wpg::cli {
+
+// Exit codes of every subcommand.
+constexpr int kExitSuccess = 0;
+constexpr int kExitRunFailed = 1;  // the walk was generated but some NMPC iteration failed
+constexpr int kExitBadInput = 2;   // bad scenario, option or file: nothing was written
+
+// A user mistake detected by the CLI itself (bad option value, missing file): exit 2.
+class UsageError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// --- where the data lives -----------------------------------------------------------------
+// The folder holding robots/, datasets/scenarios/ and analysis/: $WPG_DATA_DIR when set and
+// non-empty, else the source tree the executable was built from when it still exists, else
+// the installed share/wpg.
+std::string dataDirectory();
+std::string robotsDirectory();
+std::string scenariosDirectory();
+std::string plotScriptPath();
+
+// The name of the default scenario (datasets/scenarios/<name>.yaml).
+constexpr const char* kDefaultScenario = "walk_forward";
+
+// Names of the shipped scenarios (file stems of datasets/scenarios/*.yaml), sorted.
+std::vector<std::string> shippedScenarioNames();
+
+// A SCENARIO argument is an existing file path, or the name of a shipped scenario (with or
+// without ".yaml"). Returns the file path; throws UsageError naming the argument otherwise.
+std::string resolveScenarioPath(const std::string& argument);
+
+// --- subcommands ------------------------------------------------------------------------------
+struct RunOptions {
+  std::string scenario = kDefaultScenario;
+  std::string output;                  // empty: out/<scenario name>.h5
+  std::vector<std::string> overrides;  // "key=value", applied after the file
+  bool plot = true;
+};
+int runCommand(const RunOptions& options);
+
+struct PlotOptions {
+  std::string input;
+  std::string output;  // empty: the input with its extension replaced by .png
+};
+int plotCommand(const PlotOptions& options);
+
+// Runs /usr/bin/python3 <plot script> run_file -o figure_file; returns its exit status
+// (kExitBadInput with a message on stderr when Python or its modules are missing).
+int drawFigure(const std::string& run_file, const std::string& figure_file);
+
+// The one-line error format of every subcommand: "wpg: error: <message>".
+void printError(const std::string& message);
+void printWarning(const std::string& message);
+
+}  // namespace wpg::cli

@@ -1,0 +1,320 @@
+// Writing one run to HDF5 (layout and attribute names: datasets/SCHEMA.md). Written so that
+// h5py reads everything without code of ours: plain numeric datasets, time-major, with
+// `units` / `frame` / `description` attributes and variable-length UTF-8 string attributes.
+#include "wpg/datasets/run_dataset.hpp"
+
+#include <algorithm>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <set>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <H5Cpp.h>
+#include <unistd.h>
+
+#ifndef WPG_VERSION_STRING
+#error "WPG_VERSION_STRING must be defined (libwpg's CMake target gives it)"
+#endif
+
+namespace wpg::datasets {
+
+std::mutex& hdf5Mutex() {
+  static std::mutex mutex;
+  return mutex;
+}
+
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr int kDeflateLevel = 4;
+constexpr hsize_t kChunkBytes = 64 * 1024;  // ~64 KiB per chunk: small files, fast reads
+
+// --- attributes -----------------------------------------------------------------------------
+
+void writeStringAttribute(H5::H5Object& object, const std::string& name,
+                          const std::string& value) {
+  H5::StrType type(H5::PredType::C_S1, H5T_VARIABLE);
+  type.setCset(H5T_CSET_UTF8);
+  H5::Attribute attribute = object.createAttribute(name, type, H5::DataSpace(H5S_SCALAR));
+  attribute.write(type, value);
+}
+
+void writeIntAttribute(H5::H5Object& object, const std::string& name, int value) {
+  H5::Attribute attribute =
+      object.createAttribute(name, H5::PredType::STD_I32LE, H5::DataSpace(H5S_SCALAR));
+  attribute.write(H5::PredType::NATIVE_INT, &value);
+}
+
+// --- datasets -------------------------------------------------------------------------------
+
+struct DatasetInfo {
+  const char* units;        // "s", "m", "m, m, m, rad" (one per column when they differ), "1"
+  const char* frame;        // "world", or nullptr where no frame applies
+  const char* description;  // one sentence
+  const char* columns;      // column names of a 2-D dataset, nullptr for 1-D
+};
+
+void describeDataset(H5::DataSet& dataset, const DatasetInfo& info) {
+  writeStringAttribute(dataset, "units", info.units);
+  if (info.frame) writeStringAttribute(dataset, "frame", info.frame);
+  writeStringAttribute(dataset, "description", info.description);
+  if (info.columns) writeStringAttribute(dataset, "columns", info.columns);
+}
+
+// rows x columns, row-major (time-major); columns == 0 makes a 1-D dataset of `rows`.
+// Chunked and compressed when it has rows; a 0-row dataset is contiguous (a chunk cannot be
+// larger than a fixed-size dataset) and nothing is written into it.
+H5::DataSet writeDataset(H5::Group& group, const std::string& name, const void* data,
+                         hsize_t rows, hsize_t columns, const H5::PredType& memory_type,
+                         const H5::PredType& file_type, const DatasetInfo& info) {
+  const int rank = columns == 0 ? 1 : 2;
+  const hsize_t dimensions[2] = {rows, columns};
+  const H5::DataSpace space(rank, dimensions);
+  H5::DSetCreatPropList properties;
+  if (rows > 0) {
+    const hsize_t row_bytes = std::max<hsize_t>(1, columns) * file_type.getSize();
+    const hsize_t chunk[2] = {std::min(rows, std::max<hsize_t>(1, kChunkBytes / row_bytes)),
+                              columns};
+    properties.setChunk(rank, chunk);
+    properties.setShuffle();
+    properties.setDeflate(kDeflateLevel);
+  }
+  H5::DataSet dataset = group.createDataSet(name, file_type, space, properties);
+  if (rows > 0) dataset.write(data, memory_type);
+  describeDataset(dataset, info);
+  return dataset;
+}
+
+void writeDoubles(H5::Group& group, const std::string& name, const std::vector<double>& values,
+                  hsize_t columns, const DatasetInfo& info) {
+  const hsize_t rows = columns == 0 ? values.size() : values.size() / columns;
+  writeDataset(group, name, values.data(), rows, columns, H5::PredType::NATIVE_DOUBLE,
+               H5::PredType::IEEE_F64LE, info);
+}
+
+void writeInts(H5::Group& group, const std::string& name, const std::vector<int>& values,
+               const DatasetInfo& info) {
+  writeDataset(group, name, values.data(), values.size(), 0, H5::PredType::NATIVE_INT,
+               H5::PredType::STD_I32LE, info);
+}
+
+H5::DataSet writeCodes(H5::Group& group, const std::string& name,
+                       const std::vector<std::uint8_t>& values, const DatasetInfo& info) {
+  return writeDataset(group, name, values.data(), values.size(), 0, H5::PredType::NATIVE_UINT8,
+                      H5::PredType::STD_U8LE, info);
+}
+
+template <int Size>
+std::vector<double> flatten(const std::vector<Eigen::Matrix<double, Size, 1>>& rows) {
+  std::vector<double> values;
+  values.reserve(rows.size() * Size);
+  for (const auto& row : rows) values.insert(values.end(), row.data(), row.data() + Size);
+  return values;
+}
+
+template <typename Row, typename Get>
+std::vector<double> column(const std::vector<Row>& rows, Get get) {
+  std::vector<double> values;
+  values.reserve(rows.size());
+  for (const Row& row : rows) values.push_back(get(row));
+  return values;
+}
+
+// "0=solved, 1=relaxed, ..." for every status libwpg names (iterationStatusName answers
+// "unknown" for codes outside the enum), plus any other code present in the data.
+std::string statusCodes(const std::vector<std::uint8_t>& present) {
+  std::set<int> codes(present.begin(), present.end());
+  for (int code = 0; code <= 255; ++code) {
+    if (std::strcmp(iterationStatusName(static_cast<IterationStatus>(code)), "unknown") != 0) {
+      codes.insert(code);
+    }
+  }
+  std::string text;
+  for (const int code : codes) {
+    text += (text.empty() ? "" : ", ") + std::to_string(code) + "=" +
+            iterationStatusName(static_cast<IterationStatus>(code));
+  }
+  return text;
+}
+
+// --- the file -------------------------------------------------------------------------------
+
+void checkSizes(const WalkTrajectory& trajectory) {
+  const std::size_t n = trajectory.time.size();
+  const auto check = [n](const char* name, std::size_t rows) {
+    if (rows != n) {
+      throw std::invalid_argument("writeRunDataset: trajectory." + std::string(name) + " has " +
+                                  std::to_string(rows) + " rows, expected " + std::to_string(n) +
+                                  " (one per trajectory.time sample)");
+    }
+  };
+  check("com", trajectory.com.size());
+  check("com_vel", trajectory.com_vel.size());
+  check("com_acc", trajectory.com_acc.size());
+  check("cop", trajectory.cop.size());
+  check("left_foot", trajectory.left_foot.size());
+  check("right_foot", trajectory.right_foot.size());
+  check("free_flyer_yaw", trajectory.free_flyer_yaw.size());
+  check("support", trajectory.support.size());
+}
+
+void checkGroupName(const std::string& name) {
+  if (name.empty() || name == "." || name.find('/') != std::string::npos) {
+    throw std::invalid_argument("writeRunDataset: scenario name '" + name +
+                                "' cannot be an HDF5 group name (expected non-empty, no '/')");
+  }
+}
+
+void writeTrajectory(H5::Group& run, const WalkTrajectory& trajectory) {
+  const DatasetInfo time_info{"s", nullptr, "time of each sample, one row per control period",
+                              nullptr};
+  writeDoubles(run, "time", trajectory.time, 0, time_info);
+  writeDoubles(run, "com", flatten(trajectory.com), 3,
+               {"m", "world", "centre of mass position", "x, y, z"});
+  writeDoubles(run, "com_vel", flatten(trajectory.com_vel), 3,
+               {"m/s", "world", "centre of mass velocity", "x, y, z"});
+  writeDoubles(run, "com_acc", flatten(trajectory.com_acc), 3,
+               {"m/s^2", "world", "centre of mass acceleration", "x, y, z"});
+  writeDoubles(run, "cop", flatten(trajectory.cop), 2,
+               {"m", "world",
+                "centre of pressure of the linear inverted pendulum, z = c - h/g c'' (eq. 3), "
+                "on the ground",
+                "x, y"});
+  writeDoubles(run, "left_foot", flatten(trajectory.left_foot), 4,
+               {"m, m, m, rad", "world", "left ankle position and yaw", "x, y, z, yaw"});
+  writeDoubles(run, "right_foot", flatten(trajectory.right_foot), 4,
+               {"m, m, m, rad", "world", "right ankle position and yaw", "x, y, z, yaw"});
+  writeDoubles(run, "free_flyer_yaw", trajectory.free_flyer_yaw, 0,
+               {"rad", "world", "yaw of the free flyer (waist), mean of the two foot yaws",
+                nullptr});
+
+  std::vector<std::uint8_t> support;
+  support.reserve(trajectory.support.size());
+  for (const SupportState state : trajectory.support) {
+    support.push_back(static_cast<std::uint8_t>(state));
+  }
+  H5::DataSet support_set =
+      writeCodes(run, "support", support,
+                 {"1", nullptr,
+                  "support phase: 0 double support, 1 left foot support, 2 right foot support",
+                  nullptr});
+  writeStringAttribute(support_set, "codes", "0=double, 1=left, 2=right");
+
+  const std::vector<Footstep>& steps = trajectory.footsteps;
+  std::vector<double> footsteps;
+  std::vector<std::uint8_t> sides;
+  footsteps.reserve(4 * steps.size());
+  for (const Footstep& step : steps) {
+    footsteps.insert(footsteps.end(),
+                     {step.landing_time, step.pose.x(), step.pose.y(), step.pose.z()});
+    sides.push_back(static_cast<std::uint8_t>(step.side));
+  }
+  writeDoubles(run, "footsteps", footsteps, 4,
+               {"s, m, m, rad", "world",
+                "landed footsteps in landing order, the two initial feet first (landing time 0): "
+                "landing time, ankle x, y, yaw",
+                "landing_time, x, y, yaw"});
+  H5::DataSet side_set = writeCodes(
+      run, "footstep_side", sides,
+      {"1", nullptr, "side of each row of footsteps: 1 left, 2 right", nullptr});
+  writeStringAttribute(side_set, "codes", "1=left, 2=right");
+}
+
+void writeMpcLog(H5::Group& run, const std::vector<MpcIterationLog>& log) {
+  H5::Group mpc = run.createGroup("mpc");
+  writeDoubles(mpc, "time", column(log, [](const MpcIterationLog& r) { return r.time; }), 0,
+               {"s", nullptr, "time of each NMPC iteration (one per sampling period)", nullptr});
+  writeDoubles(mpc, "solve_time",
+               column(log, [](const MpcIterationLog& r) { return r.solve_time; }), 0,
+               {"s", nullptr, "wall time of the iteration: linearization and QP(s)", nullptr});
+  std::vector<int> qp_iterations, sqp_iterations;
+  std::vector<std::uint8_t> status;
+  for (const MpcIterationLog& row : log) {
+    qp_iterations.push_back(row.qp_iterations);
+    sqp_iterations.push_back(row.sqp_iterations);
+    status.push_back(static_cast<std::uint8_t>(row.status));
+  }
+  writeInts(mpc, "qp_iterations", qp_iterations,
+            {"1", nullptr, "active-set iterations, summed over the SQP iterations", nullptr});
+  writeInts(mpc, "sqp_iterations", sqp_iterations,
+            {"1", nullptr, "QPs solved in this iteration (Gauss-Newton SQP iterations)",
+             nullptr});
+  H5::DataSet status_set = writeCodes(
+      mpc, "status", status,
+      {"1", nullptr, "outcome of the iteration, see the codes attribute", nullptr});
+  writeStringAttribute(status_set, "codes", statusCodes(status));
+  writeDoubles(mpc, "cost", column(log, [](const MpcIterationLog& r) { return r.cost; }), 0,
+               {"1", nullptr, "value of the NMPC cost (eq. 5) at the applied solution", nullptr});
+  writeDoubles(mpc, "slack", column(log, [](const MpcIterationLog& r) { return r.slack; }), 0,
+               {"m or rad", nullptr,
+                "largest constraint relaxation when the QP was relaxed (status 1), else 0",
+                nullptr});
+}
+
+void writeFile(const std::string& file_path, const Scenario& scenario, const WalkResult& result) {
+  H5::H5File file(file_path, H5F_ACC_TRUNC);
+  writeIntAttribute(file, "schema_version", kRunDatasetSchemaVersion);
+  writeStringAttribute(file, "wpg_version", WPG_VERSION_STRING);
+  writeStringAttribute(file, "scenario", scenario.resolved_yaml);
+  writeStringAttribute(file, "created_by", "wpg run");
+
+  H5::Group runs = file.createGroup("runs");
+  H5::Group run = runs.createGroup(scenario.name);
+  writeStringAttribute(run, "algorithm",
+                       generatorAlgorithmName(scenario.request.generator.algorithm));
+  writeIntAttribute(run, "success", result.success ? 1 : 0);
+  writeStringAttribute(run, "message", result.message);
+  writeStringAttribute(run, "robot", scenario.robot);
+  writeTrajectory(run, result.trajectory);
+  writeMpcLog(run, result.trajectory.mpc);
+  file.close();  // inside the try of the caller: a failed flush is an error, not a warning
+}
+
+}  // namespace
+
+void writeRunDataset(const std::string& path, const Scenario& scenario,
+                     const wpg::WalkResult& result) {
+  checkSizes(result.trajectory);
+  checkGroupName(scenario.name);
+  const fs::path target(path);
+  if (path.empty() || !target.has_filename()) {
+    throw std::invalid_argument("writeRunDataset: '" + path + "' is not a file path");
+  }
+  const fs::path parent = target.parent_path();
+  if (!parent.empty()) {
+    std::error_code ec;
+    fs::create_directories(parent, ec);
+    if (ec) {
+      throw std::runtime_error(path + ": cannot create the directory '" + parent.string() +
+                               "': " + ec.message());
+    }
+  }
+  // Same directory as the target, so that the rename is atomic (same file system).
+  const std::string temporary = path + ".tmp-" + std::to_string(::getpid());
+
+  std::lock_guard<std::mutex> lock(hdf5Mutex());
+  H5::Exception::dontPrint();  // errors become exceptions with messages, not stderr dumps
+  try {
+    writeFile(temporary, scenario, result);
+  } catch (const H5::Exception& error) {
+    std::remove(temporary.c_str());
+    throw std::runtime_error(path + ": cannot write the HDF5 file (" + error.getFuncName() +
+                             ": " + error.getDetailMsg() + ")");
+  } catch (...) {
+    std::remove(temporary.c_str());
+    throw;
+  }
+  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
+    const int error = errno;
+    std::remove(temporary.c_str());
+    throw std::runtime_error(path + ": cannot move the temporary file " + temporary +
+                             " into place: " + std::strerror(error));
+  }
+}
+
+}  // namespace wpg::datasets

@@ -1,0 +1,121 @@
+#pragma once
+// Dense strictly convex QP solver: the dual active-set method of Goldfarb & Idnani (1983),
+//   minimize 1/2 x'Hx + g'x   subject to   E x = e,   C x <= d,
+// with H symmetric positive definite. Sized once at construction (capacities); solve() does
+// not allocate. The Cholesky factor of H is computed separately (HessianFactor) so callers
+// whose Hessian does not change between solves (the NMPC's Gauss-Newton Hessian is constant
+// for a given walking phase) pay for it once.
+//
+// Warm start: an active-set guess (e.g. the previous solution's active set, shifted in time)
+// is loaded into the factorization before the dual iterations start; guessed constraints that
+// are linearly dependent or get negative multipliers are dropped, then the ordinary dual
+// method continues. A good guess leaves zero or few iterations.
+#include <Eigen/Core>
+
+namespace wpg::qp {
+
+enum class QpStatus {
+  kOptimal = 0,
+  kInfeasible = 1,      // no x satisfies the constraints (detected by the dual method)
+  kIterationLimit = 2,  // iteration limit hit; x holds the last (dual-feasible) iterate
+  kInvalidInput = 3,    // sizes out of capacity, non-finite data
+};
+const char* qpStatusName(QpStatus status);
+
+// J = L^{-T} where H = L L^T. Computed once per Hessian.
+struct HessianFactor {
+  Eigen::MatrixXd inverse_factor_transposed;  // n x n upper triangular, L^{-T}
+  Eigen::VectorXd scratch;                    // n, internal
+  int size = 0;
+  // Returns false (and leaves size = 0) when H is not symmetric positive definite.
+  bool compute(const Eigen::Ref<const Eigen::MatrixXd>& hessian);
+  // Solves H x = b in place using the factor (x := H^{-1} b).
+  void solveInPlace(Eigen::Ref<Eigen::VectorXd> b) const;
+};
+
+struct QpSettings {
+  int max_iterations = 200;
+  double feasibility_tolerance = 1e-10;  // a constraint counts as violated above this [units of C x - d]
+  double dependence_tolerance = 1e-12;   // linear dependence test on new active constraints:
+                                         // dependent when |z|_H^2 <= tol |n|_{H^-1}^2, i.e.
+                                         // sin^2 of its angle to the working set <= tol
+};
+
+class DenseQpSolver {
+ public:
+  DenseQpSolver(int max_variables, int max_equalities, int max_inequalities);
+
+  // Solves the QP. E (me x n), e (me), C (mi x n), d (mi) may have zero rows. On kOptimal
+  // x is the minimizer; otherwise x holds the last iterate (never NaN). Does not allocate.
+  QpStatus solve(const HessianFactor& factor, const Eigen::Ref<const Eigen::VectorXd>& g,
+                 const Eigen::Ref<const Eigen::MatrixXd>& E,
+                 const Eigen::Ref<const Eigen::VectorXd>& e,
+                 const Eigen::Ref<const Eigen::MatrixXd>& C,
+                 const Eigen::Ref<const Eigen::VectorXd>& d, Eigen::Ref<Eigen::VectorXd> x);
+
+  // Indices (into C's rows) to load as the initial active set of the next solve() only.
+  // Indices out of range are ignored. Copies into preallocated storage (no allocation).
+  void setActiveSetGuess(const int* inequality_indices, int count);
+  void clearActiveSetGuess();
+
+  QpSettings& settings() { return settings_; }
+  const QpSettings& settings() const { return settings_; }
+
+  // --- results of the last solve ---
+  int iterations() const { return iterations_; }  // dual-method adds + drops after the guess
+  // Active inequality rows at the solution (indices into C), count = activeInequalityCount().
+  const int* activeInequalities() const { return active_inequalities_.data(); }
+  int activeInequalityCount() const { return active_inequality_count_; }
+  // Lagrange multipliers: H x + g + E'mu + C'lambda = 0, lambda >= 0, lambda_i (C x - d)_i = 0.
+  const Eigen::VectorXd& inequalityMultipliers() const { return lambda_; }  // size mi of last solve
+  const Eigen::VectorXd& equalityMultipliers() const { return mu_; }        // size me of last solve
+  double objective() const { return objective_; }
+  // How many of the guessed inequality rows (setActiveSetGuess) were still in the working set
+  // when the dual iterations started (linearly dependent ones and ones with negative
+  // multipliers are dropped). 0 when no guess was given.
+  int warmStartKept() const { return warm_start_kept_; }
+
+ private:
+  // d_ = J' normal_, then Givens rotations of the free columns J2 (any orthonormal basis of the
+  // free space will do) bring d2 to (h, 0, ..., 0); returns h = |d2| >= 0. Afterwards the
+  // primal direction z = J2 J2' n+ is h times column q of J.
+  double reduceNormal(int n);
+  // Appends the constraint reduced by the last reduceNormal() to the working set.
+  void appendToWorkingSet(int code, double multiplier);
+  // Removes working-set entry `position` (Givens rotations restore R, applied to J too).
+  void dropFromWorkingSet(int n, int position);
+  // Copies multipliers, active set and objective of the current iterate into the results.
+  void storeResults(const HessianFactor& factor, const Eigen::Ref<const Eigen::VectorXd>& g,
+                    const Eigen::Ref<const Eigen::VectorXd>& x, int me, int mi, int pending,
+                    double pending_multiplier);
+
+  int max_n_, max_me_, max_mi_;
+  QpSettings settings_;
+  int iterations_ = 0;
+  double objective_ = 0.0;
+  int warm_start_kept_ = 0;
+  Eigen::VectorXi active_inequalities_;  // max_mi
+  int active_inequality_count_ = 0;
+  Eigen::VectorXi guess_;                // max_mi
+  int guess_count_ = 0;
+  Eigen::VectorXd lambda_, mu_;          // resized only when mi / me change between solves
+  // Workspace (all sized in the constructor from the capacities; see dense_qp_solver.cpp).
+  // The working set is stored in Goldfarb-Idnani form n_j'x >= b_j (n_j = -row, b_j = -rhs).
+  Eigen::MatrixXd J_;             // max_n x max_n: J = L^{-T} Q, [J1 | J2], J2 spans the free space
+  Eigen::MatrixXd R_;             // max_n x max_n: upper triangular R of L^{-1} N = Q [R; 0]
+  Eigen::VectorXd d_;             // max_n: J' n+ of the constraint being added
+  Eigen::VectorXd r_;             // max_n: dual step direction R^{-1} J1' n+
+  Eigen::VectorXd u_;             // max_n: multipliers of the working set
+  Eigen::VectorXd normal_;        // max_n: n+ = -(row of C or E)
+  Eigen::VectorXd work_;          // max_n: temporaries
+  Eigen::VectorXd gradient_;      // max_n: J'g (warm start)
+  Eigen::VectorXd cosines_, sines_;  // max_n: Givens rotations of one update, applied to J at once
+  Eigen::VectorXd slack_;         // max_mi: C x - d (positive = violated)
+  Eigen::VectorXd row_scale_;     // max_mi: 1 / ||C_i|| (1 for zero rows)
+  Eigen::VectorXi active_;        // max_n: working set, equality i -> -1-i, inequality i -> i
+  Eigen::Matrix<unsigned char, Eigen::Dynamic, 1> in_working_set_;  // max_mi
+  int active_count_ = 0;          // q
+  int active_equality_count_ = 0; // equalities in the working set (always the first ones)
+};
+
+}  // namespace wpg::qp

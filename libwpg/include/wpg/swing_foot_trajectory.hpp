@@ -1,0 +1,39 @@
+#pragma once
+// Swing foot interpolation at the control period (paper Sec. III-A: "polynomials of fifth
+// order to retrieve 3D trajectories for the feet"). Horizontal position and yaw: a quintic
+// re-planned at every NMPC sample from the foot's current position, velocity and
+// acceleration to the latest planned landing, arriving with zero velocity and acceleration.
+// Height: a fixed profile of the swing time, h * 64 s^3 (1 - s)^3, which reaches the step
+// height at mid-swing and leaves and touches the ground with zero velocity and acceleration.
+#include <Eigen/Core>
+
+namespace wpg {
+
+// p(t) on [0, duration] with p, p', p'' given at 0 and p(duration) = target, zero p', p''.
+class QuinticToRest {
+ public:
+  void plan(double position, double velocity, double acceleration, double target, double duration);
+  // Value, first and second derivative at time t in [0, duration] (clamped).
+  Eigen::Vector3d evaluate(double t) const;
+
+ private:
+  double c_[6] = {0, 0, 0, 0, 0, 0};
+  double duration_ = 0.0;
+};
+
+class SwingFootTrajectory {
+ public:
+  // Foot on the ground at `pose` (x, y, yaw), at rest.
+  void start(const Eigen::Vector3d& pose, double lift_off_time, double landing_time,
+             double step_height);
+  // Re-plans from the state at time t towards `target` (landing at the landing time).
+  void replan(double t, const Eigen::Vector3d& target);
+  // x, y, z (sole height above the ground), yaw at time t.
+  Eigen::Vector4d poseAt(double t) const;
+
+ private:
+  QuinticToRest axes_[3];  // x, y, yaw
+  double plan_time_ = 0.0, lift_off_time_ = 0.0, landing_time_ = 0.0, step_height_ = 0.0;
+};
+
+}  // namespace wpg

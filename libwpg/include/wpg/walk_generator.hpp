@@ -1,0 +1,24 @@
+#pragma once
+// One whole walk, offline: the NMPC (or the LMPC baseline) every sampling period, the
+// interpolation at the control period, perturbations applied to the CoM. This is what
+// `wpg run` calls.
+#include <string>
+
+#include "wpg/walk_request.hpp"
+#include "wpg/walk_trajectory.hpp"
+#include "wpg/walking_parameters.hpp"
+
+namespace wpg {
+
+struct WalkResult {
+  WalkTrajectory trajectory;
+  // false when some NMPC iteration ended in kFallback or kIterationLimit (the walk is still
+  // complete and recorded; `wpg run` then exits 1).
+  bool success = true;
+  std::string message;  // one line: what went wrong first, empty on success
+};
+
+// Throws std::invalid_argument on invalid parameters or request (validate()).
+WalkResult generateWalk(const WalkingParameters& parameters, const WalkRequest& request);
+
+}  // namespace wpg

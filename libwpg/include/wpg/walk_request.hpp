@@ -1,0 +1,60 @@
+#pragma once
+// What a walk is asked to do: a piecewise-constant velocity command, perturbations, and how
+// the pattern generator solves its problem. Plain data; datasets/ fills it from a scenario.
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace wpg {
+
+enum class GeneratorAlgorithm {
+  kNmpc,  // Naveau et al. 2017: positions and yaws in one nonlinear problem (Gauss-Newton SQP)
+  kLmpc,  // Herdt et al. 2010 baseline: orientation QP, then position QP with those yaws
+};
+
+// Parses "nmpc" / "lmpc"; returns false on anything else.
+bool parseGeneratorAlgorithm(const std::string& name, GeneratorAlgorithm* out);
+const char* generatorAlgorithmName(GeneratorAlgorithm algorithm);
+
+struct GeneratorSettings {
+  GeneratorAlgorithm algorithm = GeneratorAlgorithm::kNmpc;
+  // Gauss-Newton iterations per NMPC sample: 1 = real-time iteration (the paper, Sec. III-E);
+  // k > 1 = k iterations; 0 = iterate to convergence (bounded by max_sqp_iterations).
+  int sqp_iterations = 1;
+  int max_sqp_iterations = 50;
+  double sqp_tolerance = 1e-8;      // convergence: max |dU| (in U's units) below this
+  int max_qp_iterations = 200;      // active-set iterations per QP
+  double slack_weight = 1e6;        // penalty of the slack that relaxes an infeasible QP
+};
+
+// Command in the robot (free-flyer) frame, held from time t until the next entry.
+struct VelocityCommand {
+  double t = 0.0;                                     // [s]
+  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();  // [vx m/s, vy m/s, omega rad/s]
+};
+
+// A horizontal force on the CoM during [t, t + duration): added to the CoM acceleration as
+// force / mass (paper Sec. V-B), in the world frame.
+struct Push {
+  double t = 0.0;                                  // [s]
+  Eigen::Vector2d force = Eigen::Vector2d::Zero();  // [N]
+  double duration = 0.1;                           // [s]
+};
+
+struct WalkRequest {
+  double duration = 10.0;              // [s] of walking to generate
+  std::vector<VelocityCommand> reference;  // sorted by t; empty = stand still
+  std::vector<Push> pushes;
+  double robot_mass = 56.037;          // [kg], converts push forces to accelerations (HRP-2, fact sheet 3.1)
+  GeneratorSettings generator;
+
+  // The command in force at time t (the last entry with entry.t <= t), zero before the first.
+  Eigen::Vector3d commandAt(double t) const;
+  // Sum of push accelerations [m/s^2] acting at time t.
+  Eigen::Vector2d pushAccelerationAt(double t) const;
+  // Throws std::invalid_argument naming the bad field and what was expected.
+  void validate() const;
+};
+
+}  // namespace wpg

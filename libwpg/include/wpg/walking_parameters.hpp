@@ -1,0 +1,72 @@
+#pragma once
+// Constant description of a walking robot for the pattern generator: timings, template-model
+// constants, foot geometry, step feasibility, cost weights. Defaults are HRP-2's, from the
+// paper (Naveau et al., RA-L 2017, Sec. V) and ../shared/DESIGN.md; robots/<name>/walking.yaml
+// restates them and scenarios may override any field (datasets/SCENARIOS.md).
+#include <array>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "wpg/walk_trajectory.hpp"
+
+namespace wpg {
+
+struct WalkingParameters {
+  // --- template model (Sec. II) -------------------------------------------------------------
+  double com_height = 0.814;           // h [m], CoM height above the ground, eq. (3)
+  double gravity = 9.81;               // g [m/s^2]
+  // --- MPC timing (Sec. V-A) ----------------------------------------------------------------
+  double sampling_period = 0.1;        // T [s], NMPC sample; also the double-support duration
+  int horizon_length = 16;             // N samples (1.6 s = two steps)
+  int single_support_samples = 7;      // 0.7 s single support per step
+  int double_support_samples = 1;      // 0.1 s double support per step
+  int previewed_steps = 2;             // nf, free footsteps in the horizon
+  // Double support before the first lift-off when starting from standing: the CoP may use
+  // both feet while the CoM moves over the first support foot (at most one step's samples).
+  int start_double_support_samples = 8;
+  double control_period = 0.005;       // [s], interpolation (robot control) period
+  // --- feet (Fig. 4) ------------------------------------------------------------------------
+  double foot_length = 0.2172;         // sole length along the foot x axis [m], ankle centred
+  double foot_width = 0.138;           // sole width [m]
+  double ankle_height = 0.105;         // ankle above the sole [m]
+  double cop_margin_x = 0.09;          // security margin removed from each end of the sole [m]
+  double cop_margin_y = 0.05;          // security margin removed from each side of the sole [m]
+  double initial_foot_separation = 0.19;  // ankle-to-ankle distance when standing [m]
+  double stop_foot_separation = 0.20;     // lateral distance of the final side-by-side step [m]
+  // --- step feasibility polygon for a LEFT step, in the right (support) foot frame (Fig. 5);
+  //     a right step uses the mirror image (y -> -y). Counter-clockwise order not required.
+  std::array<double, 5> feasibility_x{-0.28, -0.2, 0.0, 0.2, 0.28};  // [m]
+  std::array<double, 5> feasibility_y{0.2, 0.3, 0.4, 0.3, 0.2};      // [m]
+  // --- orientation, eq. (16): |yaw(step) - yaw(previous step)| <= bound. Paper: 0.05 rad;
+  //     the authors' code uses 0.17 rad (needed for the paper's own 0.2 rad/s turns).
+  double max_step_yaw_change = 0.05;   // [rad]
+  // --- cost weights, eq. (5) and Sec. V-D ----------------------------------------------------
+  double weight_velocity = 2.5;        // alpha: linear velocity tracking (J1)
+  // Weight of the angular tracking J2. The paper uses alpha for both (Sec. III-B: "a different
+  // weight ... was not necessary"); with it the optimum of (5) yaws every other foot to the
+  // yaw bound on straight walks to bring the feet closer than the feasibility polygon allows.
+  double weight_yaw = 2.5;
+  double weight_cop = 1e3;             // beta: CoP close to the support ankle (J3)
+  double weight_jerk = 1e-5;           // gamma: jerk regularization (J4)
+  // --- swing foot -------------------------------------------------------------------------
+  double step_height = 0.05;           // apex height of the swing foot sole [m]
+  // --- reference clamp (authors' code), applied to the command before the NMPC -------------
+  double max_forward_velocity = 0.4;   // |vx| [m/s]
+  double max_lateral_velocity = 0.3;   // |vy| [m/s]
+  double max_angular_velocity = 0.2;   // |omega| [rad/s]
+
+  int stepSamples() const { return single_support_samples + double_support_samples; }
+  double stepDuration() const { return stepSamples() * sampling_period; }
+  double copHalfLength() const { return 0.5 * foot_length - cop_margin_x; }
+  double copHalfWidth() const { return 0.5 * foot_width - cop_margin_y; }
+
+  // Feasibility polygon vertices for a step of `side`, in the previous (support) foot frame.
+  std::vector<Eigen::Vector2d> feasibilityVertices(FootSide side) const;
+
+  // Throws std::invalid_argument naming the first bad field and what was expected.
+  void validate() const;
+};
+
+}  // namespace wpg

@@ -1,0 +1,84 @@
+#include "wpg/convex_polygon.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace wpg {
+namespace {
+
+double cross(const Eigen::Vector2d& o, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  return (a.x() - o.x()) * (b.y() - o.y()) - (a.y() - o.y()) * (b.x() - o.x());
+}
+
+}  // namespace
+
+bool ConvexPolygon::setVertices(const std::vector<Eigen::Vector2d>& vertices, std::string* why) {
+  auto fail = [why](const std::string& reason) {
+    if (why) *why = reason;
+    return false;
+  };
+  const int n = static_cast<int>(vertices.size());
+  if (n < 3) return fail("made of fewer than 3 vertices");
+  for (const auto& v : vertices)
+    if (!v.allFinite()) return fail("not finite");
+  double area2 = 0.0;
+  for (int i = 0; i < n; ++i) {
+    const auto& a = vertices[i];
+    const auto& b = vertices[(i + 1) % n];
+    if ((b - a).norm() < 1e-12) return fail("degenerate (two consecutive vertices coincide)");
+    area2 += a.x() * b.y() - b.x() * a.y();
+  }
+  if (std::abs(area2) < 1e-12) return fail("degenerate (zero area)");
+  std::vector<Eigen::Vector2d> ccw = vertices;
+  if (area2 < 0.0) std::reverse(ccw.begin(), ccw.end());
+  for (int i = 0; i < n; ++i) {
+    if (cross(ccw[i], ccw[(i + 1) % n], ccw[(i + 2) % n]) <= 1e-12)
+      return fail("not strictly convex (or has collinear vertices)");
+  }
+  vertices_ = ccw;
+  normals_.resize(n, 2);
+  offsets_.resize(n);
+  for (int i = 0; i < n; ++i) {
+    const Eigen::Vector2d edge = ccw[(i + 1) % n] - ccw[i];
+    const Eigen::Vector2d normal = Eigen::Vector2d(edge.y(), -edge.x()).normalized();
+    normals_.row(i) = normal.transpose();
+    offsets_(i) = normal.dot(ccw[i]);
+  }
+  return true;
+}
+
+ConvexPolygon ConvexPolygon::rectangle(double half_length, double half_width) {
+  ConvexPolygon polygon;
+  polygon.setVertices({{-half_length, -half_width},
+                       {half_length, -half_width},
+                       {half_length, half_width},
+                       {-half_length, half_width}});
+  return polygon;
+}
+
+double ConvexPolygon::violation(const Eigen::Vector2d& p) const {
+  return (normals_ * p - offsets_).maxCoeff();
+}
+
+std::vector<Eigen::Vector2d> convexHull(std::vector<Eigen::Vector2d> points) {
+  // Andrew's monotone chain.
+  std::sort(points.begin(), points.end(), [](const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+    return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
+  });
+  const int n = static_cast<int>(points.size());
+  if (n < 3) return points;
+  std::vector<Eigen::Vector2d> hull(2 * n);
+  int k = 0;
+  for (int i = 0; i < n; ++i) {
+    while (k >= 2 && cross(hull[k - 2], hull[k - 1], points[i]) <= 0.0) --k;
+    hull[k++] = points[i];
+  }
+  for (int i = n - 2, lower = k + 1; i >= 0; --i) {
+    while (k >= lower && cross(hull[k - 2], hull[k - 1], points[i]) <= 0.0) --k;
+    hull[k++] = points[i];
+  }
+  hull.resize(k - 1);
+  return hull;
+}
+
+}  // namespace wpg

@@ -1,0 +1,98 @@
+#include "wpg/walking_parameters.hpp"
+
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+#include "wpg/convex_polygon.hpp"
+
+namespace wpg {
+namespace {
+
+void require(bool ok, const char* field, const std::string& expected, double got) {
+  if (ok) return;
+  std::ostringstream os;
+  os << "walking parameter '" << field << "': expected " << expected << ", got " << got;
+  throw std::invalid_argument(os.str());
+}
+
+void requirePositive(double value, const char* field) {
+  require(std::isfinite(value) && value > 0.0, field, "a positive finite number", value);
+}
+
+void requireNonNegative(double value, const char* field) {
+  require(std::isfinite(value) && value >= 0.0, field, "a finite number >= 0", value);
+}
+
+}  // namespace
+
+void WalkingParameters::validate() const {
+  requirePositive(com_height, "com_height");
+  requirePositive(gravity, "gravity");
+  requirePositive(sampling_period, "sampling_period");
+  require(horizon_length >= 2 && horizon_length <= 200, "horizon_length", "an integer in [2, 200]",
+          horizon_length);
+  require(single_support_samples >= 1, "single_support_samples", "an integer >= 1",
+          single_support_samples);
+  // The phase bookkeeping follows the paper (Sec. III-C1): NMPC samples never fall inside a
+  // double support phase, which lasts exactly one sampling period.
+  require(double_support_samples == 1, "double_support_samples",
+          "1 (double support lasts one sampling period, paper Sec. III-C1)",
+          double_support_samples);
+  require(previewed_steps >= 1 && previewed_steps <= 10, "previewed_steps", "an integer in [1, 10]",
+          previewed_steps);
+  // Every previewed step must own at least one CoP sample and no sample may fall beyond the
+  // last previewed step: N = nf * (samples per step), as the paper's N = 16, nf = 2.
+  require(horizon_length == previewed_steps * stepSamples(), "horizon_length",
+          "previewed_steps * (single_support_samples + double_support_samples) = " +
+              std::to_string(previewed_steps * stepSamples()),
+          horizon_length);
+  require(start_double_support_samples >= 1 && start_double_support_samples <= stepSamples(),
+          "start_double_support_samples",
+          "an integer in [1, single_support_samples + double_support_samples]",
+          start_double_support_samples);
+  requirePositive(control_period, "control_period");
+  const double ratio = sampling_period / control_period;
+  require(std::abs(ratio - std::round(ratio)) < 1e-9 && ratio >= 1.0, "control_period",
+          "a divisor of sampling_period", control_period);
+  requirePositive(foot_length, "foot_length");
+  requirePositive(foot_width, "foot_width");
+  requireNonNegative(ankle_height, "ankle_height");
+  requireNonNegative(cop_margin_x, "cop_margin_x");
+  requireNonNegative(cop_margin_y, "cop_margin_y");
+  require(copHalfLength() > 0.0, "cop_margin_x", "less than half the foot length", cop_margin_x);
+  require(copHalfWidth() > 0.0, "cop_margin_y", "less than half the foot width", cop_margin_y);
+  requirePositive(initial_foot_separation, "initial_foot_separation");
+  requirePositive(stop_foot_separation, "stop_foot_separation");
+  for (int i = 0; i < 5; ++i) {
+    require(std::isfinite(feasibility_x[i]), "feasibility_x", "finite numbers", feasibility_x[i]);
+    require(std::isfinite(feasibility_y[i]), "feasibility_y", "finite numbers", feasibility_y[i]);
+  }
+  ConvexPolygon polygon;
+  std::string why;
+  if (!polygon.setVertices(feasibilityVertices(FootSide::kLeft), &why)) {
+    throw std::invalid_argument("walking parameter 'feasibility_x/feasibility_y': expected a convex "
+                                "polygon, got one that is " + why);
+  }
+  const Eigen::Vector2d stop_step(0.0, stop_foot_separation);
+  require(polygon.contains(stop_step, 1e-12), "stop_foot_separation",
+          "a side-by-side step inside the feasibility polygon", stop_foot_separation);
+  requirePositive(max_step_yaw_change, "max_step_yaw_change");
+  requirePositive(weight_velocity, "weight_velocity");
+  requirePositive(weight_yaw, "weight_yaw");
+  requirePositive(weight_cop, "weight_cop");
+  requirePositive(weight_jerk, "weight_jerk");
+  requireNonNegative(step_height, "step_height");
+  requireNonNegative(max_forward_velocity, "max_forward_velocity");
+  requireNonNegative(max_lateral_velocity, "max_lateral_velocity");
+  requireNonNegative(max_angular_velocity, "max_angular_velocity");
+}
+
+std::vector<Eigen::Vector2d> WalkingParameters::feasibilityVertices(FootSide side) const {
+  std::vector<Eigen::Vector2d> vertices;
+  const double sign = side == FootSide::kLeft ? 1.0 : -1.0;
+  for (int i = 0; i < 5; ++i) vertices.emplace_back(feasibility_x[i], sign * feasibility_y[i]);
+  return vertices;
+}
+
+}  // namespace wpg

@@ -1,0 +1,57 @@
+#!/usr/bin/env bash
+# Installs the missing Debian packages, then configures (Release) and builds wpg in build/
+# (or in $WPG_BUILD_DIR). Idempotent: quiet when everything is already installed and built.
+# Works from any folder.
+set -euo pipefail
+
+repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+build="$(realpath -m -- "${WPG_BUILD_DIR:-$repo/build}")"
+
+packages=(build-essential cmake libeigen3-dev libhdf5-dev libcli11-dev libgtest-dev
+          libbenchmark-dev libyaml-cpp-dev python3-h5py python3-matplotlib)
+
+missing=()
+for package in "${packages[@]}"; do
+  status="$(dpkg-query -W -f='${db:Status-Status}' "$package" 2>/dev/null || true)"
+  [[ "$status" == installed ]] || missing+=("$package")
+done
+if ((${#missing[@]})); then
+  echo "setup: installing Debian packages: ${missing[*]}"
+  sudo=()
+  if [[ "$(id -u)" != 0 ]]; then
+    command -v sudo >/dev/null || { echo "setup: error: not root and no sudo; install: ${missing[*]}" >&2; exit 1; }
+    sudo=(sudo)
+  fi
+  log="$(mktemp)"
+  if ! { "${sudo[@]}" apt-get update && "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive \
+           apt-get install -y --no-install-recommends "${missing[@]}"; } >"$log" 2>&1; then
+    cat "$log" >&2
+    rm -f "$log"
+    echo "setup: error: apt-get failed (output above)" >&2
+    exit 1
+  fi
+  rm -f "$log"
+fi
+
+jobs="$(nproc)"
+log="$build/setup-build.log"
+mkdir -p "$build"
+: >"$log"
+if [[ ! -f "$build/CMakeCache.txt" ]]; then
+  echo "setup: configuring and building wpg in $build (Release, -j$jobs; log: $log)"
+  if ! cmake -S "$repo" -B "$build" -DCMAKE_BUILD_TYPE=Release >>"$log" 2>&1; then
+    cat "$log" >&2
+    echo "setup: error: cmake configure failed (output above)" >&2
+    exit 1
+  fi
+fi
+if ! cmake --build "$build" -j"$jobs" >>"$log" 2>&1; then
+  cat "$log" >&2
+  echo "setup: error: build failed (output above; log: $log)" >&2
+  exit 1
+fi
+# One progress line when something was (re)built, nothing when the build was up to date.
+rebuilt="$(grep -c 'Building CXX object' "$log" || true)"
+if ((rebuilt > 0)); then
+  echo "setup: built wpg in $build ($rebuilt files compiled)"
+fi

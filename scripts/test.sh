@@ -1,0 +1,7 @@
+#!/usr/bin/env bash
+# Sets up and builds wpg, then runs every test (unit, CLI regression, package test).
+set -euo pipefail
+repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+build="$(realpath -m -- "${WPG_BUILD_DIR:-$repo/build}")"
+"$repo/scripts/setup.sh"
+exec ctest --test-dir "$build" --output-on-failure -j2

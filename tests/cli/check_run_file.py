@@ -1,0 +1,82 @@
+"""check_run_file.py RUN.h5 [--duration SECONDS]: the file follows datasets/SCHEMA.md.
+
+Every group under /runs/ has the per-sample datasets (n rows), the footsteps (m rows) and
+the per-iteration mpc/ datasets, all finite; the root has the schema attributes.
+"""
+import argparse
+import sys
+
+import h5py
+import numpy as np
+
+SAMPLES = {"time": (), "com": (3,), "com_vel": (3,), "com_acc": (3,), "cop": (2,),
+           "left_foot": (4,), "right_foot": (4,), "free_flyer_yaw": (), "support": ()}
+STEPS = {"footsteps": (4,), "footstep_side": ()}
+MPC = ("time", "solve_time", "qp_iterations", "sqp_iterations", "status", "cost", "slack")
+ROOT_ATTRS = ("schema_version", "wpg_version", "scenario")
+
+errors = []
+
+
+def check(condition, message):
+    if not condition:
+        errors.append(message)
+    return condition
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("run_file")
+    parser.add_argument("--duration", type=float)
+    args = parser.parse_args()
+    with h5py.File(args.run_file, "r") as f:
+        for attr in ROOT_ATTRS:
+            check(attr in f.attrs, "root attribute %s missing" % attr)
+        runs = f.get("runs")
+        if not check(isinstance(runs, h5py.Group) and len(runs) > 0, "no group under /runs/"):
+            return
+        for name, run in runs.items():
+            where = "/runs/%s" % name
+            n = run["time"].shape[0] if "time" in run else None
+            check(n is not None and n > 1, where + "/time missing or too short")
+            for key, tail in SAMPLES.items():
+                if check(key in run, "%s/%s missing" % (where, key)):
+                    data = run[key][()]
+                    check(data.shape == (n,) + tail, "%s/%s shape %s, expected %s"
+                          % (where, key, data.shape, (n,) + tail))
+                    check(np.all(np.isfinite(data)), "%s/%s not finite" % (where, key))
+            m = run["footsteps"].shape[0] if "footsteps" in run else None
+            check(m is not None and m >= 2, where + "/footsteps missing or without the two initial feet")
+            for key, tail in STEPS.items():
+                if check(key in run, "%s/%s missing" % (where, key)):
+                    data = run[key][()]
+                    check(data.shape == (m,) + tail, "%s/%s shape %s, expected %s"
+                          % (where, key, data.shape, (m,) + tail))
+                    check(np.all(np.isfinite(data)), "%s/%s not finite" % (where, key))
+            if n:
+                time = run["time"][()]
+                check(np.all(np.diff(time) > 0), where + "/time not increasing")
+                check(set(np.unique(run["support"][()])) <= {0, 1, 2}, where + "/support not in {0,1,2}")
+                if args.duration is not None:
+                    check(abs(time[-1] - time[0] - args.duration) <= 0.11,
+                          "%s/time spans %.3f s, expected %.3f s" % (where, time[-1] - time[0], args.duration))
+            if m:
+                check(set(np.unique(run["footstep_side"][()])) <= {1, 2}, where + "/footstep_side not in {1,2}")
+            mpc = run.get("mpc")
+            if check(isinstance(mpc, h5py.Group), where + "/mpc missing"):
+                k = mpc["time"].shape[0] if "time" in mpc else None
+                check(k is not None and k > 0, where + "/mpc/time missing or empty")
+                for key in MPC:
+                    if check(key in mpc, "%s/mpc/%s missing" % (where, key)):
+                        check(mpc[key].shape == (k,), "%s/mpc/%s shape %s, expected %s"
+                              % (where, key, mpc[key].shape, (k,)))
+
+
+if __name__ == "__main__":
+    try:
+        main()
+    except (OSError, KeyError) as error:
+        errors.append(str(error))
+    for error in errors:
+        print("check_run_file: %s" % error, file=sys.stderr)
+    sys.exit(1 if errors else 0)

@@ -1,0 +1,22 @@
+# shellcheck shell=bash
+# Helpers sourced by the CLI test drivers (bash, set -euo pipefail).
+PYTHON="${WPG_PYTHON:-/usr/bin/python3}"
+HERE="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+
+fail() { echo "FAIL: $*" >&2; exit 1; }
+
+# A fresh temporary folder, removed on exit when the test passed (kept for a look otherwise).
+make_workdir() {
+  WORKDIR="$(mktemp -d "${TMPDIR:-/tmp}/wpg-cli-test.XXXXXX")"
+  # shellcheck disable=SC2154  # _rc is assigned inside the trap
+  trap '_rc=$?; if [[ $_rc == 0 || $_rc == 77 ]]; then rm -rf "$WORKDIR"; else echo "(kept $WORKDIR)" >&2; fi' EXIT
+}
+
+# check_run_file FILE.h5: the schema's datasets are there, with consistent shapes.
+check_run_file() { "$PYTHON" "$HERE/check_run_file.py" "$1" || fail "bad dataset $1"; }
+
+# check_png FILE.png: exists and starts with the PNG signature.
+check_png() {
+  [[ -s "$1" ]] || fail "no figure $1"
+  [[ "$(head -c 8 "$1" | od -An -tx1 | tr -d ' \n')" == 89504e470d0a1a0a ]] || fail "$1 is not a PNG"
+}

@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# help.sh WPG: --help, run --help and plot --help exit 0 and show the defaults; --version.
+set -euo pipefail
+# shellcheck source=common.sh
+source "$(dirname "$0")/common.sh"
+wpg="$1"
+make_workdir
+"$wpg" --help >"$WORKDIR/help" || fail "--help: exit status $?"
+grep -q walk_forward "$WORKDIR/help" || fail "--help does not show the default scenario"
+grep -q '\brun\b' "$WORKDIR/help" || fail "--help lacks the run subcommand"
+grep -q '\bplot\b' "$WORKDIR/help" || fail "--help lacks the plot subcommand"
+env -u WPG_DATA_DIR "$wpg" run --help >"$WORKDIR/run_help" || fail "run --help: exit status $?"
+cat "$WORKDIR/run_help"
+grep -q walk_forward "$WORKDIR/run_help" || fail "run --help does not show the default scenario"
+grep -q 'out/<scenario name>.h5' "$WORKDIR/run_help" || fail "run --help does not show the default output"
+"$wpg" plot --help >"$WORKDIR/plot_help" || fail "plot --help: exit status $?"
+grep -q 'RUN.png' "$WORKDIR/plot_help" || fail "plot --help does not show the default figure"
+"$wpg" --version | grep -Eq '^wpg [0-9]+\.[0-9]+\.[0-9]+' || fail "--version"
+status=0; "$wpg" 2>/dev/null >/dev/null || status=$?
+[[ $status == 2 ]] || fail "no subcommand: exit status $status, expected 2"
+status=0; "$wpg" run --no-such-option 2>/dev/null >/dev/null || status=$?
+[[ $status == 2 ]] || fail "unknown option: exit status $status, expected 2"
+echo "ok"

@@ -1,0 +1,30 @@
+#!/usr/bin/env bash
+# package_test.sh CMAKE BUILD_DIR DOWNSTREAM_SOURCE: installs the existing build tree into a
+# temporary prefix (no rebuild), then configures, builds and runs a downstream project that
+# uses find_package(wpg); finally checks that the installed wpg finds its installed data.
+set -euo pipefail
+# shellcheck source=common.sh
+source "$(dirname "$0")/common.sh"
+cmake="$1"; build_dir="$2"; downstream="$3"
+make_workdir
+prefix="$WORKDIR/prefix"
+"$cmake" --install "$build_dir" --prefix "$prefix" >"$WORKDIR/install.log" 2>&1 \
+  || { cat "$WORKDIR/install.log"; fail "cmake --install"; }
+[[ -f "$prefix/lib/cmake/wpg/wpgConfig.cmake" || -n "$(find "$prefix" -name wpgConfig.cmake)" ]] \
+  || fail "no wpgConfig.cmake installed"
+"$cmake" -S "$downstream" -B "$WORKDIR/build" -DCMAKE_BUILD_TYPE=Release \
+  -DCMAKE_PREFIX_PATH="$prefix" >"$WORKDIR/configure.log" 2>&1 \
+  || { cat "$WORKDIR/configure.log"; fail "configuring the downstream project"; }
+"$cmake" --build "$WORKDIR/build" -j2 >"$WORKDIR/build.log" 2>&1 \
+  || { cat "$WORKDIR/build.log"; fail "building the downstream project"; }
+"$WORKDIR/build/wpg_downstream" || fail "the downstream executable failed"
+
+# The installed executable with the installed data (robots, scenarios, plot script).
+data="$(dirname "$(find "$prefix" -path '*/wpg/robots' -type d | head -n1)")"
+[[ -d "$data/robots" && -d "$data/datasets/scenarios" && -f "$data/analysis/plot_run.py" ]] \
+  || fail "installed data incomplete under $prefix/share/wpg"
+WPG_DATA_DIR="$data" "$prefix/bin/wpg" run walk_forward --set duration=2 \
+  -o "$WORKDIR/installed.h5" || fail "installed wpg run: exit status $?"
+check_run_file "$WORKDIR/installed.h5"
+check_png "$WORKDIR/installed.png"
+echo "ok"

@@ -1,0 +1,373 @@
+// Run datasets: a hand-made WalkResult written to HDF5 reads back identical with the HDF5 C++
+// API (no code of ours in the reader), with the contract's names, units and attributes; the
+// write is atomic and cleans up after itself.
+#include <atomic>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <H5Cpp.h>
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include "wpg/datasets/run_dataset.hpp"
+
+namespace fs = std::filesystem;
+using wpg::datasets::Scenario;
+using wpg::datasets::writeRunDataset;
+
+namespace {
+
+// --- a hand-made run (no generateWalk: libwpg's NMPC is not needed here) ---------------------
+
+Scenario handMadeScenario() {
+  Scenario scenario;
+  scenario.name = "hand_made";
+  scenario.robot = "hrp2";
+  scenario.source_path = "nowhere.yaml";
+  scenario.request.generator.algorithm = wpg::GeneratorAlgorithm::kNmpc;
+  scenario.resolved_yaml = "name: hand_made\nrobot: hrp2\nduration: 1.0\n# é ünïcode\n";
+  return scenario;
+}
+
+// Distinct values everywhere, so that a swapped column or a transposition shows.
+wpg::WalkResult handMadeResult(std::size_t samples, std::size_t steps, std::size_t iterations,
+                               double offset = 0.0) {
+  wpg::WalkResult result;
+  wpg::WalkTrajectory& t = result.trajectory;
+  for (std::size_t i = 0; i < samples; ++i) {
+    const double k = static_cast<double>(i) + offset;
+    t.time.push_back(0.005 * static_cast<double>(i));
+    t.com.emplace_back(k + 0.1, k + 0.2, 0.814 + k * 1e-3);
+    t.com_vel.emplace_back(k + 1.1, k + 1.2, k + 1.3);
+    t.com_acc.emplace_back(k + 2.1, k + 2.2, k + 2.3);
+    t.cop.emplace_back(k + 3.1, k + 3.2);
+    t.left_foot.emplace_back(k + 4.1, k + 4.2, k + 4.3, k + 4.4);
+    t.right_foot.emplace_back(k + 5.1, k + 5.2, k + 5.3, k + 5.4);
+    t.free_flyer_yaw.push_back(k + 6.1);
+    t.support.push_back(static_cast<wpg::SupportState>(i % 3));
+  }
+  for (std::size_t j = 0; j < steps; ++j) {
+    wpg::Footstep step;
+    step.landing_time = 0.8 * static_cast<double>(j) + offset;
+    step.pose = Eigen::Vector3d(0.1 * j, j % 2 ? -0.095 : 0.095, 0.01 * j);
+    step.side = j % 2 ? wpg::FootSide::kRight : wpg::FootSide::kLeft;
+    t.footsteps.push_back(step);
+  }
+  for (std::size_t m = 0; m < iterations; ++m) {
+    wpg::MpcIterationLog log;
+    log.time = 0.1 * static_cast<double>(m);
+    log.solve_time = 1e-3 * (1.0 + m) + offset;
+    log.qp_iterations = static_cast<int>(3 + m);
+    log.sqp_iterations = static_cast<int>(1 + m % 2);
+    log.status = static_cast<wpg::IterationStatus>(m % 4);
+    log.cost = 10.0 + m;
+    log.slack = m % 4 == 1 ? 0.01 : 0.0;
+    t.mpc.push_back(log);
+  }
+  result.success = true;
+  result.message = "";
+  return result;
+}
+
+// --- reading with the plain HDF5 C++ API -----------------------------------------------------
+
+std::vector<hsize_t> dimensions(const H5::DataSet& dataset) {
+  const H5::DataSpace space = dataset.getSpace();
+  std::vector<hsize_t> dims(static_cast<std::size_t>(space.getSimpleExtentNdims()));
+  space.getSimpleExtentDims(dims.data());
+  return dims;
+}
+
+template <typename T>
+std::vector<T> readAll(const H5::Group& group, const std::string& name,
+                       const H5::PredType& memory_type, std::vector<hsize_t>* dims) {
+  const H5::DataSet dataset = group.openDataSet(name);
+  *dims = dimensions(dataset);
+  hsize_t count = 1;
+  for (const hsize_t d : *dims) count *= d;
+  std::vector<T> values(count);
+  if (count > 0) dataset.read(values.data(), memory_type);
+  return values;
+}
+
+std::vector<double> readDoubles(const H5::Group& group, const std::string& name,
+                                std::vector<hsize_t>* dims) {
+  return readAll<double>(group, name, H5::PredType::NATIVE_DOUBLE, dims);
+}
+
+std::string stringAttribute(const H5::H5Object& object, const std::string& name) {
+  const H5::Attribute attribute = object.openAttribute(name);
+  std::string value;
+  attribute.read(attribute.getStrType(), value);
+  return value;
+}
+
+int intAttribute(const H5::H5Object& object, const std::string& name) {
+  const H5::Attribute attribute = object.openAttribute(name);
+  int value = 0;
+  attribute.read(H5::PredType::NATIVE_INT, &value);
+  return value;
+}
+
+class RunDatasetFiles : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    static std::atomic<int> counter{0};
+    directory_ = fs::temp_directory_path() /
+                 ("wpg_test_run_dataset_" + std::to_string(::getpid()) + "_" +
+                  std::to_string(counter++));
+    fs::create_directories(directory_);
+  }
+  void TearDown() override {
+    std::error_code ec;
+    fs::remove_all(directory_, ec);
+  }
+
+  // Files whose name holds ".tmp-" anywhere below the test directory.
+  std::vector<std::string> temporaryFiles() const {
+    std::vector<std::string> found;
+    for (const auto& item : fs::recursive_directory_iterator(directory_)) {
+      if (item.path().filename().string().find(".tmp-") != std::string::npos) {
+        found.push_back(item.path().string());
+      }
+    }
+    return found;
+  }
+
+  fs::path directory_;
+};
+
+// Compares a Vector-of-Eigen column block with what was read.
+template <typename Rows>
+void expectRows(const Rows& rows, const std::vector<double>& read, std::size_t columns) {
+  ASSERT_EQ(read.size(), rows.size() * columns);
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    for (std::size_t j = 0; j < columns; ++j) {
+      EXPECT_EQ(read[i * columns + j], rows[i][static_cast<Eigen::Index>(j)])
+          << "row " << i << " column " << j;
+    }
+  }
+}
+
+TEST_F(RunDatasetFiles, WritesTheSchemaAndReadsBackTheSameNumbers) {
+  const Scenario scenario = handMadeScenario();
+  wpg::WalkResult result = handMadeResult(250, 7, 11);
+  result.success = false;
+  result.message = "iteration 3: fallback";
+  const std::string path = (directory_ / "new" / "sub" / "run.h5").string();  // parent missing
+  writeRunDataset(path, scenario, result);
+  ASSERT_TRUE(fs::is_regular_file(path));
+  EXPECT_TRUE(temporaryFiles().empty());
+
+  const H5::H5File file(path, H5F_ACC_RDONLY);
+  EXPECT_EQ(intAttribute(file, "schema_version"), 1);
+  EXPECT_EQ(stringAttribute(file, "wpg_version"), WPG_VERSION_STRING);
+  EXPECT_EQ(stringAttribute(file, "scenario"), scenario.resolved_yaml);
+  EXPECT_EQ(stringAttribute(file, "created_by"), "wpg run");
+
+  const H5::Group run = file.openGroup("/runs/hand_made");
+  EXPECT_EQ(stringAttribute(run, "algorithm"),
+            wpg::generatorAlgorithmName(wpg::GeneratorAlgorithm::kNmpc));
+  EXPECT_EQ(intAttribute(run, "success"), 0);
+  EXPECT_EQ(stringAttribute(run, "message"), "iteration 3: fallback");
+
+  const wpg::WalkTrajectory& t = result.trajectory;
+  std::vector<hsize_t> dims;
+  EXPECT_EQ(readDoubles(run, "time", &dims), t.time);
+  EXPECT_EQ(dims, std::vector<hsize_t>({250}));
+  expectRows(t.com, readDoubles(run, "com", &dims), 3);
+  EXPECT_EQ(dims, std::vector<hsize_t>({250, 3}));
+  expectRows(t.com_vel, readDoubles(run, "com_vel", &dims), 3);
+  expectRows(t.com_acc, readDoubles(run, "com_acc", &dims), 3);
+  expectRows(t.cop, readDoubles(run, "cop", &dims), 2);
+  EXPECT_EQ(dims, std::vector<hsize_t>({250, 2}));
+  expectRows(t.left_foot, readDoubles(run, "left_foot", &dims), 4);
+  EXPECT_EQ(dims, std::vector<hsize_t>({250, 4}));
+  expectRows(t.right_foot, readDoubles(run, "right_foot", &dims), 4);
+  EXPECT_EQ(readDoubles(run, "free_flyer_yaw", &dims), t.free_flyer_yaw);
+
+  const std::vector<std::uint8_t> support =
+      readAll<std::uint8_t>(run, "support", H5::PredType::NATIVE_UINT8, &dims);
+  ASSERT_EQ(support.size(), 250u);
+  for (std::size_t i = 0; i < support.size(); ++i) {
+    EXPECT_EQ(support[i], static_cast<std::uint8_t>(t.support[i]));
+  }
+  EXPECT_EQ(run.openDataSet("support").getDataType(), H5::PredType::STD_U8LE);
+
+  const std::vector<double> footsteps = readDoubles(run, "footsteps", &dims);
+  EXPECT_EQ(dims, std::vector<hsize_t>({7, 4}));
+  const std::vector<std::uint8_t> sides =
+      readAll<std::uint8_t>(run, "footstep_side", H5::PredType::NATIVE_UINT8, &dims);
+  ASSERT_EQ(sides.size(), 7u);
+  for (std::size_t j = 0; j < 7; ++j) {
+    EXPECT_EQ(footsteps[4 * j + 0], t.footsteps[j].landing_time);
+    EXPECT_EQ(footsteps[4 * j + 1], t.footsteps[j].pose.x());
+    EXPECT_EQ(footsteps[4 * j + 2], t.footsteps[j].pose.y());
+    EXPECT_EQ(footsteps[4 * j + 3], t.footsteps[j].pose.z());
+    EXPECT_EQ(sides[j], static_cast<std::uint8_t>(t.footsteps[j].side));
+  }
+
+  const H5::Group mpc = run.openGroup("mpc");
+  const std::vector<double> mpc_time = readDoubles(mpc, "time", &dims);
+  const std::vector<double> solve_time = readDoubles(mpc, "solve_time", &dims);
+  const std::vector<double> cost = readDoubles(mpc, "cost", &dims);
+  const std::vector<double> slack = readDoubles(mpc, "slack", &dims);
+  const std::vector<int> qp =
+      readAll<int>(mpc, "qp_iterations", H5::PredType::NATIVE_INT, &dims);
+  const std::vector<int> sqp =
+      readAll<int>(mpc, "sqp_iterations", H5::PredType::NATIVE_INT, &dims);
+  const std::vector<std::uint8_t> status =
+      readAll<std::uint8_t>(mpc, "status", H5::PredType::NATIVE_UINT8, &dims);
+  ASSERT_EQ(mpc_time.size(), 11u);
+  ASSERT_EQ(status.size(), 11u);
+  for (std::size_t m = 0; m < 11; ++m) {
+    EXPECT_EQ(mpc_time[m], t.mpc[m].time);
+    EXPECT_EQ(solve_time[m], t.mpc[m].solve_time);
+    EXPECT_EQ(cost[m], t.mpc[m].cost);
+    EXPECT_EQ(slack[m], t.mpc[m].slack);
+    EXPECT_EQ(qp[m], t.mpc[m].qp_iterations);
+    EXPECT_EQ(sqp[m], t.mpc[m].sqp_iterations);
+    EXPECT_EQ(status[m], static_cast<std::uint8_t>(t.mpc[m].status));
+  }
+  // The code -> name mapping is there (its text belongs to libwpg).
+  EXPECT_FALSE(stringAttribute(mpc.openDataSet("status"), "codes").empty());
+  EXPECT_FALSE(stringAttribute(run.openDataSet("support"), "codes").empty());
+}
+
+TEST_F(RunDatasetFiles, EveryDatasetHasUnitsFrameAndDescription) {
+  const std::string path = (directory_ / "run.h5").string();
+  writeRunDataset(path, handMadeScenario(), handMadeResult(30, 3, 4));
+  const H5::H5File file(path, H5F_ACC_RDONLY);
+  const H5::Group run = file.openGroup("/runs/hand_made");
+  struct Expected {
+    const char* name;
+    const char* units;
+    bool world;
+  };
+  const Expected run_sets[] = {
+      {"time", "s", false},
+      {"com", "m", true},
+      {"com_vel", "m/s", true},
+      {"com_acc", "m/s^2", true},
+      {"cop", "m", true},
+      {"left_foot", "m, m, m, rad", true},
+      {"right_foot", "m, m, m, rad", true},
+      {"free_flyer_yaw", "rad", true},
+      {"support", "1", false},
+      {"footsteps", "s, m, m, rad", true},
+      {"footstep_side", "1", false},
+  };
+  for (const Expected& e : run_sets) {
+    SCOPED_TRACE(e.name);
+    const H5::DataSet dataset = run.openDataSet(e.name);
+    EXPECT_EQ(stringAttribute(dataset, "units"), e.units);
+    EXPECT_FALSE(stringAttribute(dataset, "description").empty());
+    EXPECT_EQ(dataset.attrExists("frame"), e.world);
+    if (e.world) {
+      EXPECT_EQ(stringAttribute(dataset, "frame"), "world");
+    }
+    // Chunked and gzip-compressed (rows >= 1).
+    const H5::DSetCreatPropList properties = dataset.getCreatePlist();
+    EXPECT_EQ(properties.getLayout(), H5D_CHUNKED);
+    EXPECT_TRUE(properties.allFiltersAvail());
+    bool deflate = false;
+    for (int f = 0; f < properties.getNfilters(); ++f) {
+      unsigned int flags = 0;
+      std::size_t count = 1;
+      unsigned int level = 0;
+      unsigned int config = 0;
+      char filter_name[64];
+      if (properties.getFilter(f, flags, count, &level, sizeof(filter_name), filter_name,
+                               config) == H5Z_FILTER_DEFLATE) {
+        deflate = true;
+        EXPECT_EQ(level, 4u);
+      }
+    }
+    EXPECT_TRUE(deflate);
+  }
+  const H5::Group mpc = run.openGroup("mpc");
+  const std::pair<const char*, const char*> mpc_sets[] = {
+      {"time", "s"}, {"solve_time", "s"}, {"qp_iterations", "1"}, {"sqp_iterations", "1"},
+      {"status", "1"}, {"cost", "1"}, {"slack", "m or rad"}};
+  for (const auto& [name, units] : mpc_sets) {
+    SCOPED_TRACE(name);
+    const H5::DataSet dataset = mpc.openDataSet(name);
+    EXPECT_EQ(stringAttribute(dataset, "units"), units);
+    EXPECT_FALSE(stringAttribute(dataset, "description").empty());
+  }
+}
+
+TEST_F(RunDatasetFiles, EmptyRunHasZeroRowDatasets) {
+  const std::string path = (directory_ / "empty.h5").string();
+  writeRunDataset(path, handMadeScenario(), handMadeResult(0, 0, 0));
+  const H5::H5File file(path, H5F_ACC_RDONLY);
+  const H5::Group run = file.openGroup("/runs/hand_made");
+  std::vector<hsize_t> dims;
+  EXPECT_TRUE(readDoubles(run, "time", &dims).empty());
+  EXPECT_EQ(dims, std::vector<hsize_t>({0}));
+  EXPECT_TRUE(readDoubles(run, "com", &dims).empty());
+  EXPECT_EQ(dims, std::vector<hsize_t>({0, 3}));
+  EXPECT_TRUE(readDoubles(run, "footsteps", &dims).empty());
+  EXPECT_EQ(dims, std::vector<hsize_t>({0, 4}));
+  EXPECT_TRUE(readDoubles(run.openGroup("mpc"), "cost", &dims).empty());
+  EXPECT_EQ(dims, std::vector<hsize_t>({0}));
+  EXPECT_EQ(stringAttribute(run.openDataSet("com"), "units"), "m");
+}
+
+TEST_F(RunDatasetFiles, MismatchedSizesAreRejectedBeforeWriting) {
+  wpg::WalkResult result = handMadeResult(10, 2, 1);
+  result.trajectory.cop.pop_back();
+  const std::string path = (directory_ / "bad.h5").string();
+  EXPECT_THROW(writeRunDataset(path, handMadeScenario(), result), std::invalid_argument);
+  EXPECT_FALSE(fs::exists(path));
+  EXPECT_TRUE(temporaryFiles().empty());
+  Scenario bad_name = handMadeScenario();
+  bad_name.name = "a/b";
+  EXPECT_THROW(writeRunDataset(path, bad_name, handMadeResult(1, 0, 0)), std::invalid_argument);
+}
+
+TEST_F(RunDatasetFiles, UnwritablePathThrowsAndLeavesNoTemporaryFile) {
+  // The parent "directory" is a regular file: it can be neither created nor written into.
+  const fs::path blocker = directory_ / "blocker";
+  std::ofstream(blocker) << "not a directory";
+  const std::string path = (blocker / "run.h5").string();
+  EXPECT_THROW(writeRunDataset(path, handMadeScenario(), handMadeResult(5, 2, 1)),
+               std::runtime_error);
+  EXPECT_TRUE(temporaryFiles().empty());
+
+  // The target is an existing directory: the HDF5 file is written, the rename fails, the
+  // temporary file is removed and the directory is untouched.
+  const fs::path occupied = directory_ / "occupied.h5";
+  fs::create_directories(occupied / "inside");
+  EXPECT_THROW(writeRunDataset(occupied.string(), handMadeScenario(), handMadeResult(5, 2, 1)),
+               std::runtime_error);
+  EXPECT_TRUE(temporaryFiles().empty());
+  EXPECT_TRUE(fs::is_directory(occupied / "inside"));
+}
+
+TEST_F(RunDatasetFiles, ExistingFileIsReplacedWhole) {
+  const std::string path = (directory_ / "run.h5").string();
+  writeRunDataset(path, handMadeScenario(), handMadeResult(100, 4, 3, /*offset=*/0.0));
+  writeRunDataset(path, handMadeScenario(), handMadeResult(40, 2, 1, /*offset=*/1000.0));
+  EXPECT_TRUE(temporaryFiles().empty());
+  {
+    const H5::H5File file(path, H5F_ACC_RDONLY);
+    std::vector<hsize_t> dims;
+    const std::vector<double> com = readDoubles(file.openGroup("/runs/hand_made"), "com", &dims);
+    EXPECT_EQ(dims, std::vector<hsize_t>({40, 3}));
+    EXPECT_EQ(com[0], 1000.1);
+  }
+  // A failed write leaves the previous file as it was.
+  wpg::WalkResult bad = handMadeResult(10, 1, 1);
+  bad.trajectory.support.clear();
+  EXPECT_THROW(writeRunDataset(path, handMadeScenario(), bad), std::invalid_argument);
+  const H5::H5File file(path, H5F_ACC_RDONLY);
+  std::vector<hsize_t> dims;
+  readDoubles(file.openGroup("/runs/hand_made"), "time", &dims);
+  EXPECT_EQ(dims, std::vector<hsize_t>({40}));
+}
+
+}  // namespace

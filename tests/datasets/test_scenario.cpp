@@ -1,0 +1,509 @@
+// Scenario files: the shipped ones load with the expected values, every malformed input is
+// an InputError naming the file and the key, --set overrides work, the resolved YAML
+// reproduces the scenario.
+#include <atomic>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <initializer_list>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include "wpg/datasets/scenario.hpp"
+
+namespace fs = std::filesystem;
+using wpg::datasets::InputError;
+using wpg::datasets::loadScenario;
+using wpg::datasets::Scenario;
+
+namespace {
+
+const std::string kSourceDir = WPG_SOURCE_DIR;
+const std::string kRobotsDir = kSourceDir + "/robots";
+const std::string kScenariosDir = kSourceDir + "/datasets/scenarios";
+
+std::string shipped(const std::string& name) { return kScenariosDir + "/" + name + ".yaml"; }
+
+Scenario loadShipped(const std::string& name, const std::vector<std::string>& overrides = {}) {
+  return loadScenario(shipped(name), overrides, kRobotsDir);
+}
+
+// A valid scenario; tests replace one line to make it malformed.
+const char* const kValidScenario =
+    "name: test_case\n"
+    "robot: hrp2\n"
+    "duration: 5.0\n"
+    "generator: {algorithm: nmpc, sqp_iterations: 1}\n"
+    "reference:\n"
+    "  - {t: 0.0, v: [0.0, 0.0, 0.0]}\n"
+    "  - {t: 1.0, v: [0.2, 0.0, 0.0]}\n"
+    "pushes:\n"
+    "  - {t: 2.0, force: [0.0, 90.0], duration: 0.1}\n"
+    "walking: {max_step_yaw_change: 0.17}\n";
+
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  const std::size_t at = text.find(from);
+  if (at == std::string::npos) throw std::logic_error("test bug: '" + from + "' not found");
+  return text.replace(at, from.size(), to);
+}
+
+class ScenarioFiles : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    static std::atomic<int> counter{0};
+    directory_ = fs::temp_directory_path() /
+                 ("wpg_test_scenario_" + std::to_string(::getpid()) + "_" +
+                  std::to_string(counter++));
+    fs::create_directories(directory_);
+  }
+  void TearDown() override {
+    std::error_code ec;
+    fs::remove_all(directory_, ec);
+  }
+
+  std::string write(const std::string& file_name, const std::string& text) {
+    const fs::path path = directory_ / file_name;
+    fs::create_directories(path.parent_path());
+    std::ofstream(path) << text;
+    return path.string();
+  }
+
+  // Loading `text` (written as `file_name`) must throw one InputError line holding the file
+  // name and every one of `parts`.
+  void expectError(const std::string& file_name, const std::string& text,
+                   std::initializer_list<std::string> parts,
+                   const std::vector<std::string>& overrides = {}) {
+    const std::string path = write(file_name, text);
+    expectErrorAt(path, parts, overrides, kRobotsDir);
+  }
+
+  static void expectErrorAt(const std::string& path, std::initializer_list<std::string> parts,
+                            const std::vector<std::string>& overrides,
+                            const std::string& robots_dir) {
+    try {
+      loadScenario(path, overrides, robots_dir);
+      ADD_FAILURE() << "no InputError for " << path;
+    } catch (const InputError& error) {
+      const std::string message = error.what();
+      EXPECT_NE(message.find(path), std::string::npos) << "file missing in: " << message;
+      for (const std::string& part : parts) {
+        EXPECT_NE(message.find(part), std::string::npos)
+            << "'" << part << "' missing in: " << message;
+      }
+      EXPECT_EQ(message.find('\n'), std::string::npos) << "not one line: " << message;
+    }
+  }
+
+  fs::path directory_;
+};
+
+// ---------------------------------------------------------------------------------------------
+// Shipped scenarios
+// ---------------------------------------------------------------------------------------------
+
+TEST(ShippedScenarios, EveryFileLoads) {
+  int count = 0;
+  for (const auto& item : fs::directory_iterator(kScenariosDir)) {
+    if (item.path().extension() != ".yaml") continue;
+    ++count;
+    SCOPED_TRACE(item.path().string());
+    Scenario scenario;
+    ASSERT_NO_THROW(scenario = loadScenario(item.path().string(), {}, kRobotsDir));
+    EXPECT_EQ(scenario.name, item.path().stem().string()) << "name: should match the file name";
+    EXPECT_EQ(scenario.robot, "hrp2");
+    EXPECT_EQ(scenario.source_path, item.path().string());
+    EXPECT_FALSE(scenario.resolved_yaml.empty());
+    EXPECT_DOUBLE_EQ(scenario.request.robot_mass, 56.037);
+    EXPECT_EQ(scenario.request.generator.algorithm, wpg::GeneratorAlgorithm::kNmpc);
+    EXPECT_EQ(scenario.request.generator.sqp_iterations, 1);
+  }
+  EXPECT_GE(count, 6);
+}
+
+TEST(ShippedScenarios, RobotFileRestatesTheStructDefaults) {
+  const wpg::WalkingParameters defaults;
+  const wpg::WalkingParameters loaded = loadShipped("walk_forward").walking;
+  EXPECT_EQ(loaded.com_height, defaults.com_height);
+  EXPECT_EQ(loaded.gravity, defaults.gravity);
+  EXPECT_EQ(loaded.sampling_period, defaults.sampling_period);
+  EXPECT_EQ(loaded.horizon_length, defaults.horizon_length);
+  EXPECT_EQ(loaded.single_support_samples, defaults.single_support_samples);
+  EXPECT_EQ(loaded.double_support_samples, defaults.double_support_samples);
+  EXPECT_EQ(loaded.previewed_steps, defaults.previewed_steps);
+  EXPECT_EQ(loaded.control_period, defaults.control_period);
+  EXPECT_EQ(loaded.foot_length, defaults.foot_length);
+  EXPECT_EQ(loaded.foot_width, defaults.foot_width);
+  EXPECT_EQ(loaded.ankle_height, defaults.ankle_height);
+  EXPECT_EQ(loaded.cop_margin_x, defaults.cop_margin_x);
+  EXPECT_EQ(loaded.cop_margin_y, defaults.cop_margin_y);
+  EXPECT_EQ(loaded.initial_foot_separation, defaults.initial_foot_separation);
+  EXPECT_EQ(loaded.stop_foot_separation, defaults.stop_foot_separation);
+  EXPECT_EQ(loaded.feasibility_x, defaults.feasibility_x);
+  EXPECT_EQ(loaded.feasibility_y, defaults.feasibility_y);
+  EXPECT_EQ(loaded.max_step_yaw_change, defaults.max_step_yaw_change);
+  EXPECT_EQ(loaded.weight_velocity, defaults.weight_velocity);
+  EXPECT_EQ(loaded.weight_yaw, defaults.weight_yaw);
+  EXPECT_EQ(loaded.start_double_support_samples, defaults.start_double_support_samples);
+  EXPECT_EQ(loaded.weight_cop, defaults.weight_cop);
+  EXPECT_EQ(loaded.weight_jerk, defaults.weight_jerk);
+  EXPECT_EQ(loaded.step_height, defaults.step_height);
+  EXPECT_EQ(loaded.max_forward_velocity, defaults.max_forward_velocity);
+  EXPECT_EQ(loaded.max_lateral_velocity, defaults.max_lateral_velocity);
+  EXPECT_EQ(loaded.max_angular_velocity, defaults.max_angular_velocity);
+}
+
+TEST(ShippedScenarios, WalkForward) {
+  const Scenario s = loadShipped("walk_forward");
+  EXPECT_EQ(s.name, "walk_forward");
+  EXPECT_DOUBLE_EQ(s.request.duration, 10.0);
+  ASSERT_EQ(s.request.reference.size(), 2u);
+  EXPECT_DOUBLE_EQ(s.request.reference[0].t, 0.0);
+  EXPECT_EQ(s.request.reference[0].velocity, Eigen::Vector3d::Zero());
+  EXPECT_DOUBLE_EQ(s.request.reference[1].t, 1.0);
+  EXPECT_EQ(s.request.reference[1].velocity, Eigen::Vector3d(0.2, 0.0, 0.0));
+  EXPECT_TRUE(s.request.pushes.empty());
+  EXPECT_DOUBLE_EQ(s.walking.max_step_yaw_change, 0.05);  // the paper's bound
+}
+
+TEST(ShippedScenarios, WalkSideways) {
+  const Scenario s = loadShipped("walk_sideways");
+  ASSERT_EQ(s.request.reference.size(), 2u);
+  EXPECT_EQ(s.request.reference[1].velocity, Eigen::Vector3d(0.0, 0.15, 0.0));
+  EXPECT_DOUBLE_EQ(s.request.duration, 10.0);
+}
+
+TEST(ShippedScenarios, TurnOnTheSpot) {
+  const Scenario s = loadShipped("turn_on_the_spot");
+  ASSERT_EQ(s.request.reference.size(), 2u);
+  EXPECT_EQ(s.request.reference[1].velocity, Eigen::Vector3d(0.0, 0.0, 0.2));
+  EXPECT_DOUBLE_EQ(s.walking.max_step_yaw_change, 0.17);
+}
+
+TEST(ShippedScenarios, Curve) {
+  const Scenario s = loadShipped("curve");
+  ASSERT_EQ(s.request.reference.size(), 2u);
+  EXPECT_EQ(s.request.reference[1].velocity, Eigen::Vector3d(0.2, 0.0, 0.2));
+  EXPECT_DOUBLE_EQ(s.walking.max_step_yaw_change, 0.17);
+  EXPECT_DOUBLE_EQ(s.request.duration, 15.0);
+}
+
+TEST(ShippedScenarios, StartWalkStop) {
+  const Scenario s = loadShipped("start_walk_stop");
+  ASSERT_EQ(s.request.reference.size(), 3u);
+  EXPECT_DOUBLE_EQ(s.request.reference[1].t, 1.0);
+  EXPECT_EQ(s.request.reference[1].velocity, Eigen::Vector3d(0.2, 0.0, 0.0));
+  EXPECT_DOUBLE_EQ(s.request.reference[2].t, 6.0);
+  EXPECT_EQ(s.request.reference[2].velocity, Eigen::Vector3d::Zero());
+  EXPECT_DOUBLE_EQ(s.request.duration, 10.0);
+}
+
+TEST(ShippedScenarios, Push) {
+  const Scenario s = loadShipped("push");
+  ASSERT_EQ(s.request.pushes.size(), 1u);
+  EXPECT_DOUBLE_EQ(s.request.pushes[0].t, 4.0);
+  EXPECT_EQ(s.request.pushes[0].force, Eigen::Vector2d(0.0, 90.0));
+  EXPECT_DOUBLE_EQ(s.request.pushes[0].duration, 0.1);
+  ASSERT_FALSE(s.request.reference.empty());
+  EXPECT_EQ(s.request.reference.back().velocity, Eigen::Vector3d(0.2, 0.0, 0.0));
+}
+
+// The resolved YAML is itself a scenario that gives the same Scenario back.
+TEST(ShippedScenarios, ResolvedYamlRoundTrips) {
+  const std::string path = (fs::temp_directory_path() /
+                            ("wpg_test_resolved_" + std::to_string(::getpid()) + ".yaml"))
+                               .string();
+  for (const char* name : {"walk_forward", "walk_sideways", "turn_on_the_spot", "curve",
+                           "start_walk_stop", "push"}) {
+    SCOPED_TRACE(name);
+    const Scenario first = loadShipped(name, {"generator.sqp_tolerance=1e-9"});
+    std::ofstream(path) << first.resolved_yaml;
+    const Scenario second = loadScenario(path, {}, kRobotsDir);
+    EXPECT_EQ(second.resolved_yaml, first.resolved_yaml);
+    EXPECT_EQ(second.name, first.name);
+    EXPECT_EQ(second.walking.max_step_yaw_change, first.walking.max_step_yaw_change);
+    EXPECT_EQ(second.walking.feasibility_y, first.walking.feasibility_y);
+    EXPECT_EQ(second.walking.weight_jerk, first.walking.weight_jerk);
+    EXPECT_EQ(second.request.duration, first.request.duration);
+    EXPECT_EQ(second.request.robot_mass, first.request.robot_mass);
+    EXPECT_EQ(second.request.generator.sqp_tolerance, 1e-9);
+    ASSERT_EQ(second.request.reference.size(), first.request.reference.size());
+    for (std::size_t i = 0; i < first.request.reference.size(); ++i) {
+      EXPECT_EQ(second.request.reference[i].t, first.request.reference[i].t);
+      EXPECT_EQ(second.request.reference[i].velocity, first.request.reference[i].velocity);
+    }
+    ASSERT_EQ(second.request.pushes.size(), first.request.pushes.size());
+    for (std::size_t i = 0; i < first.request.pushes.size(); ++i) {
+      EXPECT_EQ(second.request.pushes[i].force, first.request.pushes[i].force);
+      EXPECT_EQ(second.request.pushes[i].duration, first.request.pushes[i].duration);
+    }
+  }
+  fs::remove(path);
+}
+
+TEST(ShippedScenarios, ResolvedYamlListsEveryKey) {
+  const std::string yaml = loadShipped("turn_on_the_spot").resolved_yaml;
+  for (const char* key :
+       {"name: turn_on_the_spot", "robot: hrp2", "duration: 10.0", "robot_mass: 56.037",
+        "algorithm: nmpc", "sqp_iterations: 1", "max_sqp_iterations:", "sqp_tolerance:",
+        "max_qp_iterations:", "slack_weight:", "reference:", "pushes: []", "walking:",
+        "com_height: 0.814", "horizon_length: 16", "max_step_yaw_change: 0.17",
+        "feasibility_x: [-0.28, -0.2, 0.0, 0.2, 0.28]", "weight_jerk: 1.0e-05"}) {
+    EXPECT_NE(yaml.find(key), std::string::npos) << "'" << key << "' missing in:\n" << yaml;
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Malformed input: one InputError line naming the file and the key
+// ---------------------------------------------------------------------------------------------
+
+TEST_F(ScenarioFiles, ValidBaseLoads) {
+  const Scenario s = loadScenario(write("valid.yaml", kValidScenario), {}, kRobotsDir);
+  EXPECT_EQ(s.name, "test_case");
+  EXPECT_DOUBLE_EQ(s.walking.max_step_yaw_change, 0.17);
+  ASSERT_EQ(s.request.pushes.size(), 1u);
+}
+
+TEST_F(ScenarioFiles, MissingKeys) {
+  expectError("no_duration.yaml", replaced(kValidScenario, "duration: 5.0\n", ""),
+              {"'duration'", "missing"});
+  expectError("no_name.yaml", replaced(kValidScenario, "name: test_case\n", ""),
+              {"'name'", "missing"});
+  expectError("no_robot.yaml", replaced(kValidScenario, "robot: hrp2\n", ""),
+              {"'robot'", "missing"});
+  expectError("no_reference.yaml",
+              replaced(kValidScenario,
+                       "reference:\n  - {t: 0.0, v: [0.0, 0.0, 0.0]}\n  - {t: 1.0, v: [0.2, "
+                       "0.0, 0.0]}\n",
+                       ""),
+              {"'reference'", "missing"});
+  expectError("no_v.yaml", replaced(kValidScenario, ", v: [0.2, 0.0, 0.0]}", "}"),
+              {"'reference[1].v'", "missing"});
+  expectError("no_force.yaml", replaced(kValidScenario, " force: [0.0, 90.0],", ""),
+              {"'pushes[0].force'", "missing"});
+}
+
+TEST_F(ScenarioFiles, WrongTypes) {
+  expectError("duration_text.yaml", replaced(kValidScenario, "duration: 5.0", "duration: ten"),
+              {"'duration'", "expected a positive number of seconds", "got ten"});
+  expectError("duration_quoted.yaml",
+              replaced(kValidScenario, "duration: 5.0", "duration: \"5.0\""),
+              {"'duration'", "string"});
+  expectError("duration_list.yaml", replaced(kValidScenario, "duration: 5.0", "duration: [5]"),
+              {"'duration'", "list"});
+  expectError("reference_map.yaml",
+              "name: a\nrobot: hrp2\nduration: 1.0\nreference: {t: 0, v: [0, 0, 0]}\n",
+              {"'reference'", "expected a list"});
+  expectError("sqp_float.yaml",
+              replaced(kValidScenario, "sqp_iterations: 1", "sqp_iterations: 1.5"),
+              {"'generator.sqp_iterations'", "integer"});
+  expectError("sqp_negative.yaml",
+              replaced(kValidScenario, "sqp_iterations: 1", "sqp_iterations: -1"),
+              {"'generator.sqp_iterations'", "got -1"});
+  expectError("algorithm.yaml",
+              replaced(kValidScenario, "algorithm: nmpc", "algorithm: ilqr"),
+              {"'generator.algorithm'", "nmpc or lmpc", "got ilqr"});
+  expectError("walking_int.yaml",
+              replaced(kValidScenario, "max_step_yaw_change: 0.17", "horizon_length: 16.5"),
+              {"'walking.horizon_length'", "integer"});
+  expectError("name_slash.yaml", replaced(kValidScenario, "name: test_case", "name: a/b"),
+              {"'name'", "got a/b"});
+  expectError("not_a_map.yaml", "- just\n- a list\n", {"expected a map"});
+  expectError("empty.yaml", "", {"empty"});
+}
+
+TEST_F(ScenarioFiles, BadDurations) {
+  expectError("negative.yaml", replaced(kValidScenario, "duration: 5.0", "duration: -1"),
+              {"key 'duration': expected a positive number of seconds, got -1"});
+  expectError("zero.yaml", replaced(kValidScenario, "duration: 5.0", "duration: 0"),
+              {"'duration'", "got 0"});
+  expectError("inf.yaml", replaced(kValidScenario, "duration: 5.0", "duration: .inf"),
+              {"'duration'", "finite", ".inf"});
+}
+
+TEST_F(ScenarioFiles, NonFiniteNumbers) {
+  expectError("nan_command.yaml",
+              replaced(kValidScenario, "v: [0.2, 0.0, 0.0]", "v: [.nan, 0.0, 0.0]"),
+              {"'reference[1].v[0]'", "finite", ".nan"});
+  expectError("nan_force.yaml", replaced(kValidScenario, "[0.0, 90.0]", "[0.0, .NaN]"),
+              {"'pushes[0].force[1]'", "finite"});
+  expectError("inf_time.yaml", replaced(kValidScenario, "t: 1.0", "t: -.inf"),
+              {"'reference[1].t'", "finite"});
+  expectError("nan_walking.yaml",
+              replaced(kValidScenario, "max_step_yaw_change: 0.17", "com_height: .nan"),
+              {"'walking.com_height'", "finite"});
+}
+
+TEST_F(ScenarioFiles, WrongVectorLengths) {
+  expectError("v2.yaml", replaced(kValidScenario, "v: [0.2, 0.0, 0.0]", "v: [0.2, 0.0]"),
+              {"'reference[1].v'", "3 numbers", "a list of 2 entries"});
+  expectError("force3.yaml", replaced(kValidScenario, "[0.0, 90.0]", "[0.0, 90.0, 1.0]"),
+              {"'pushes[0].force'", "2 numbers"});
+  expectError("polygon.yaml",
+              replaced(kValidScenario, "max_step_yaw_change: 0.17", "feasibility_x: [1, 2]"),
+              {"'walking.feasibility_x'", "5 numbers"});
+}
+
+TEST_F(ScenarioFiles, TimesMustAscend) {
+  expectError("descending.yaml", replaced(kValidScenario, "t: 1.0", "t: 0.0"),
+              {"'reference[1].t'", "ascending"});
+  expectError("negative_time.yaml", replaced(kValidScenario, "{t: 0.0, v: [0.0, 0.0, 0.0]}",
+                                             "{t: -1.0, v: [0.0, 0.0, 0.0]}"),
+              {"'reference[0].t'", ">= 0"});
+  expectError("push_duration.yaml", replaced(kValidScenario, "duration: 0.1}", "duration: 0}"),
+              {"'pushes[0].duration'", "positive"});
+}
+
+TEST_F(ScenarioFiles, UnknownRobot) {
+  expectError("nao.yaml", replaced(kValidScenario, "robot: hrp2", "robot: nao"),
+              {"key 'robot'", "hrp2", "got nao"});
+  expectError("traversal.yaml", replaced(kValidScenario, "robot: hrp2", "robot: ../robots/hrp2"),
+              {"key 'robot'"});
+}
+
+TEST_F(ScenarioFiles, UnreadableFile) {
+  const std::string missing = (directory_ / "does_not_exist.yaml").string();
+  try {
+    loadScenario(missing, {}, kRobotsDir);
+    ADD_FAILURE() << "no InputError";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find(missing), std::string::npos) << error.what();
+  }
+  try {
+    loadScenario(directory_.string(), {}, kRobotsDir);
+    ADD_FAILURE() << "no InputError for a directory";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("directory"), std::string::npos) << error.what();
+  }
+}
+
+TEST_F(ScenarioFiles, YamlSyntaxErrorGivesTheLine) {
+  expectError("syntax.yaml", "name: a\nrobot: hrp2\nduration: [1.0, 2.0\nreference: []\n",
+              {"syntax error", "line "});
+  expectError("syntax2.yaml", "name: a\n  robot: hrp2\n", {"syntax error", "line 2"});
+}
+
+TEST_F(ScenarioFiles, UnknownKeysAreErrors) {
+  expectError("typo.yaml", replaced(kValidScenario, "duration: 5.0", "duration: 5.0\ndurration: 6"),
+              {"key 'durration'", "unknown key", "known keys", "duration"});
+  expectError("walking_typo.yaml",
+              replaced(kValidScenario, "max_step_yaw_change: 0.17", "max_step_yaw: 0.17"),
+              {"key 'walking.max_step_yaw'", "unknown key", "max_step_yaw_change"});
+  expectError("generator_typo.yaml",
+              replaced(kValidScenario, "sqp_iterations: 1", "sqp_iteration: 1"),
+              {"key 'generator.sqp_iteration'", "unknown key"});
+  expectError("reference_typo.yaml", replaced(kValidScenario, "{t: 1.0, v:", "{t: 1.0, vel:"),
+              {"key 'reference[1].vel'", "unknown key"});
+  expectError("push_typo.yaml", replaced(kValidScenario, "force: [0.0, 90.0]", "f: [0.0, 90.0]"),
+              {"key 'pushes[0].f'", "unknown key"});
+  expectError("robot_typo.yaml", replaced(kValidScenario, "robot: hrp2", "robto: hrp2"),
+              {"key 'robto'", "unknown key"});
+  expectError("duplicate.yaml", replaced(kValidScenario, "duration: 5.0", "duration: 5.0\nduration: 6.0"),
+              {"key 'duration'", "twice"});
+}
+
+TEST_F(ScenarioFiles, WalkingParametersAreValidated) {
+  // Values of the right type but physically wrong: rejected by WalkingParameters::validate().
+  expectError("negative_height.yaml",
+              replaced(kValidScenario, "max_step_yaw_change: 0.17", "com_height: -0.8"),
+              {"com_height"});
+}
+
+TEST_F(ScenarioFiles, BadRobotFiles) {
+  const std::string robots = (directory_ / "robots").string();
+  write("robots/partial/walking.yaml", "com_height: 0.8\nmass: 30\n");
+  const std::string scenario_path =
+      write("partial.yaml", replaced(kValidScenario, "robot: hrp2", "robot: partial"));
+  const std::string robot_file = robots + "/partial/walking.yaml";
+  try {
+    loadScenario(scenario_path, {}, robots);
+    ADD_FAILURE() << "no InputError";
+  } catch (const InputError& error) {
+    const std::string message = error.what();
+    EXPECT_NE(message.find(robot_file), std::string::npos) << message;
+    EXPECT_NE(message.find("'gravity'"), std::string::npos) << message;
+  }
+  std::ifstream hrp2(kRobotsDir + "/hrp2/walking.yaml");
+  std::string text((std::istreambuf_iterator<char>(hrp2)), std::istreambuf_iterator<char>());
+  write("robots/partial/walking.yaml", text + "\nknee_count: 2\n");
+  try {
+    loadScenario(scenario_path, {}, robots);
+    ADD_FAILURE() << "no InputError";
+  } catch (const InputError& error) {
+    const std::string message = error.what();
+    EXPECT_NE(message.find(robot_file), std::string::npos) << message;
+    EXPECT_NE(message.find("'knee_count'"), std::string::npos) << message;
+  }
+  // A complete copy of hrp2 is a valid robot.
+  write("robots/partial/walking.yaml", text);
+  EXPECT_EQ(loadScenario(scenario_path, {}, robots).robot, "partial");
+}
+
+// ---------------------------------------------------------------------------------------------
+// --set overrides
+// ---------------------------------------------------------------------------------------------
+
+TEST(Overrides, ScalarsNestedKeysAndListIndices) {
+  const Scenario s =
+      loadShipped("walk_forward", {"duration=20", "generator.sqp_iterations=3",
+                                   "generator.algorithm=lmpc",
+                                   "walking.max_step_yaw_change=0.17",
+                                   "reference[1].v=[0.3,0,0]", "walking.feasibility_y[2]=0.35"});
+  EXPECT_DOUBLE_EQ(s.request.duration, 20.0);
+  EXPECT_EQ(s.request.generator.sqp_iterations, 3);
+  EXPECT_EQ(s.request.generator.algorithm, wpg::GeneratorAlgorithm::kLmpc);
+  EXPECT_DOUBLE_EQ(s.walking.max_step_yaw_change, 0.17);
+  EXPECT_EQ(s.request.reference[1].velocity, Eigen::Vector3d(0.3, 0.0, 0.0));
+  EXPECT_DOUBLE_EQ(s.walking.feasibility_y[2], 0.35);
+  EXPECT_DOUBLE_EQ(s.walking.feasibility_y[1], 0.3);  // the rest of the robot's list stays
+  EXPECT_NE(s.resolved_yaml.find("duration: 20.0"), std::string::npos) << s.resolved_yaml;
+  EXPECT_NE(s.resolved_yaml.find("algorithm: lmpc"), std::string::npos) << s.resolved_yaml;
+  EXPECT_NE(s.resolved_yaml.find("{t: 1.0, v: [0.3, 0.0, 0.0]}"), std::string::npos)
+      << s.resolved_yaml;
+}
+
+TEST(Overrides, AppendAndCreate) {
+  const Scenario s = loadShipped(
+      "walk_forward", {"reference[2]={t: 5, v: [0, 0, 0]}", "pushes[0]={t: 2, force: [10, 0]}",
+                       "pushes[0].duration=0.2", "robot_mass=60"});
+  ASSERT_EQ(s.request.reference.size(), 3u);
+  EXPECT_DOUBLE_EQ(s.request.reference[2].t, 5.0);
+  ASSERT_EQ(s.request.pushes.size(), 1u);
+  EXPECT_EQ(s.request.pushes[0].force, Eigen::Vector2d(10.0, 0.0));
+  EXPECT_DOUBLE_EQ(s.request.pushes[0].duration, 0.2);
+  EXPECT_DOUBLE_EQ(s.request.robot_mass, 60.0);
+}
+
+TEST(Overrides, LaterOverridesWinAndScenarioBeatsRobot) {
+  // turn_on_the_spot sets 0.17 over the robot's 0.05; --set goes last.
+  EXPECT_DOUBLE_EQ(loadShipped("turn_on_the_spot").walking.max_step_yaw_change, 0.17);
+  const Scenario s = loadShipped("turn_on_the_spot", {"walking.max_step_yaw_change=0.1",
+                                                      "walking.max_step_yaw_change=0.12"});
+  EXPECT_DOUBLE_EQ(s.walking.max_step_yaw_change, 0.12);
+}
+
+TEST_F(ScenarioFiles, BadOverrides) {
+  const std::string text = kValidScenario;
+  expectError("o1.yaml", text, {"--set 'duration'", "key=value"}, {"duration"});
+  expectError("o2.yaml", text, {"'reference[9]'", "out of range"}, {"reference[9].v=[0,0,0]"});
+  expectError("o3.yaml", text, {"reference[x].v", "index"}, {"reference[x].v=1"});
+  expectError("o4.yaml", text, {"'name.first'", "not a map"}, {"name.first=1"});
+  expectError("o5.yaml", text, {"'duration'", "syntax error"}, {"duration=[1"});
+  expectError("o6.yaml", text, {"key 'durration'", "unknown key", "--set 'durration=3'"},
+              {"durration=3"});
+  expectError("o7.yaml", text, {"key 'duration'", "got abc", "--set 'duration=abc'"},
+              {"duration=abc"});
+  expectError("o8.yaml", text, {"'reference[1].v'", "3 numbers", "--set"},
+              {"reference[1].v=[1,2]"});
+  expectError("o9.yaml", text, {"'walking.bogus'", "unknown key"}, {"walking.bogus=1"});
+  expectError("o10.yaml", text, {"--set '=3'"}, {"=3"});
+  expectError("o11.yaml", text, {"key 'robot'", "got nao", "--set 'robot=nao'"}, {"robot=nao"});
+  expectError("o12.yaml", text, {"'walking.feasibility_x'", "5 numbers", "--set"},
+              {"walking.feasibility_x[5]=1"});
+  expectError("o13.yaml", text, {"'walking.feasibility_x[6]'", "out of range"},
+              {"walking.feasibility_x[6]=1"});
+}
+
+}  // namespace
