@@ -581,7 +581,8 @@ GeneratorSettings readGenerator(const YAML::Node& node, const Source& source) {
   if (!node.IsDefined()) return settings;
   const Entries entries = readMap(node, "generator",
                                   {"algorithm", "sqp_iterations", "max_sqp_iterations",
-                                   "sqp_tolerance", "max_qp_iterations", "slack_weight"},
+                                   "sqp_tolerance", "max_qp_iterations", "slack_weight",
+                                   "fall_capture_distance"},
                                   "a map of generator settings", source, /*null_is_empty=*/true);
   if (present(entries, "algorithm")) {
     const YAML::Node algorithm = entry(entries, "algorithm");
@@ -612,6 +613,11 @@ GeneratorSettings readGenerator(const YAML::Node& node, const Source& source) {
   if (present(entries, "slack_weight")) {
     settings.slack_weight = readPositive(entry(entries, "slack_weight"), "generator.slack_weight",
                                          "a positive number", source);
+  }
+  if (present(entries, "fall_capture_distance")) {
+    settings.fall_capture_distance =
+        readPositive(entry(entries, "fall_capture_distance"), "generator.fall_capture_distance",
+                     "a positive distance in m", source);
   }
   return settings;
 }
@@ -692,6 +698,8 @@ std::string emitResolved(const Scenario& scenario) {
   out << YAML::Key << "sqp_tolerance" << YAML::Value << formatNumber(generator.sqp_tolerance);
   out << YAML::Key << "max_qp_iterations" << YAML::Value << generator.max_qp_iterations;
   out << YAML::Key << "slack_weight" << YAML::Value << formatNumber(generator.slack_weight);
+  out << YAML::Key << "fall_capture_distance" << YAML::Value
+      << formatNumber(generator.fall_capture_distance);
   out << YAML::EndMap;
 
   out << YAML::Key << "reference" << YAML::Value;

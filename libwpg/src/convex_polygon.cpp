@@ -2,9 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace wpg {
 namespace {
+
+// Twice the area below which three vertices count as collinear [m^2]; the same threshold in
+// setVertices() and convexHull() so that a computed hull is always accepted.
+constexpr double kCollinear = 1e-12;
 
 double cross(const Eigen::Vector2d& o, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
   return (a.x() - o.x()) * (b.y() - o.y()) - (a.y() - o.y()) * (b.x() - o.x());
@@ -32,7 +37,7 @@ bool ConvexPolygon::setVertices(const std::vector<Eigen::Vector2d>& vertices, st
   std::vector<Eigen::Vector2d> ccw = vertices;
   if (area2 < 0.0) std::reverse(ccw.begin(), ccw.end());
   for (int i = 0; i < n; ++i) {
-    if (cross(ccw[i], ccw[(i + 1) % n], ccw[(i + 2) % n]) <= 1e-12)
+    if (cross(ccw[i], ccw[(i + 1) % n], ccw[(i + 2) % n]) <= kCollinear)
       return fail("not strictly convex (or has collinear vertices)");
   }
   vertices_ = ccw;
@@ -57,6 +62,7 @@ ConvexPolygon ConvexPolygon::rectangle(double half_length, double half_width) {
 }
 
 double ConvexPolygon::violation(const Eigen::Vector2d& p) const {
+  if (offsets_.size() == 0) return std::numeric_limits<double>::infinity();  // empty polygon
   return (normals_ * p - offsets_).maxCoeff();
 }
 
@@ -78,6 +84,19 @@ std::vector<Eigen::Vector2d> convexHull(std::vector<Eigen::Vector2d> points) {
     hull[k++] = points[i];
   }
   hull.resize(k - 1);
+  // The exact chain keeps vertices that are collinear up to rounding (feet side by side):
+  // drop them so that setVertices() accepts the hull.
+  for (bool changed = true; changed && hull.size() > 3;) {
+    changed = false;
+    const std::size_t m = hull.size();
+    for (std::size_t i = 0; i < m; ++i) {
+      if (cross(hull[(i + m - 1) % m], hull[i], hull[(i + 1) % m]) <= kCollinear) {
+        hull.erase(hull.begin() + static_cast<std::ptrdiff_t>(i));
+        changed = true;
+        break;
+      }
+    }
+  }
   return hull;
 }
 

@@ -50,8 +50,26 @@ WalkResult generateWalk(const WalkingParameters& parameters, const WalkRequest& 
     out.support.push_back(plan ? plan->support : SupportState::kDouble);
   };
 
-  for (int k = 0; k < iterations; ++k) {
+  const double omega0 = std::sqrt(parameters.gravity / parameters.com_height);
+  int k = 0;
+  for (; k < iterations; ++k) {
     const double t = k * T;
+    // Fall: the capture point (where the CoM comes to rest over a fixed CoP) out of reach.
+    const Eigen::Vector2d capture(com_x(0) + com_x(1) / omega0, com_y(0) + com_y(1) / omega0);
+    const double reach = std::min(
+        (capture - generator.footPose(FootSide::kLeft).head<2>()).norm(),
+        (capture - generator.footPose(FootSide::kRight).head<2>()).norm());
+    if (!(reach <= request.generator.fall_capture_distance)) {
+      MpcIterationLog fallen;
+      fallen.time = t;
+      fallen.status = IterationStatus::kFallen;
+      out.mpc.push_back(fallen);
+      result.success = false;
+      result.message = "the robot fell at t = " + std::to_string(t) + " s: capture point " +
+                       std::to_string(reach) + " m from the nearest foot (limit " +
+                       std::to_string(request.generator.fall_capture_distance) + " m)";
+      break;
+    }
     const MpcIterationLog& log = generator.update(t, request.commandAt(t));
     out.mpc.push_back(log);
     if (result.success && (log.status == IterationStatus::kFallback ||
@@ -80,8 +98,8 @@ WalkResult generateWalk(const WalkingParameters& parameters, const WalkRequest& 
     }
     if (generator.advance(com_x, com_y)) out.footsteps.push_back(generator.lastLanding());
   }
-  push = request.pushAccelerationAt(iterations * T);
-  record(iterations * T, nullptr);
+  push = request.pushAccelerationAt(k * T);
+  record(k * T, nullptr);
   return result;
 }
 

@@ -81,6 +81,8 @@ void WalkRequest::validate() const {
     fail("generator.sqp_tolerance", "a positive number", str(g.sqp_tolerance));
   if (g.max_qp_iterations < 1)
     fail("generator.max_qp_iterations", "an integer >= 1", str(g.max_qp_iterations));
+  if (!(g.fall_capture_distance > 0.0) || !std::isfinite(g.fall_capture_distance))
+    fail("generator.fall_capture_distance", "a positive distance in m", str(g.fall_capture_distance));
   if (!(g.slack_weight > 0.0) || !std::isfinite(g.slack_weight))
     fail("generator.slack_weight", "a positive number", str(g.slack_weight));
 }

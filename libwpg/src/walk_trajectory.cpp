@@ -8,6 +8,7 @@ const char* iterationStatusName(IterationStatus status) {
     case IterationStatus::kRelaxed: return "relaxed";
     case IterationStatus::kFallback: return "fallback";
     case IterationStatus::kIterationLimit: return "iteration_limit";
+    case IterationStatus::kFallen: return "fallen";
   }
   return "unknown";
 }

@@ -203,7 +203,7 @@ TEST(ShippedScenarios, StartWalkStop) {
 TEST(ShippedScenarios, Push) {
   const Scenario s = loadShipped("push");
   ASSERT_EQ(s.request.pushes.size(), 1u);
-  EXPECT_DOUBLE_EQ(s.request.pushes[0].t, 4.0);
+  EXPECT_DOUBLE_EQ(s.request.pushes[0].t, 3.8);
   EXPECT_EQ(s.request.pushes[0].force, Eigen::Vector2d(0.0, 90.0));
   EXPECT_DOUBLE_EQ(s.request.pushes[0].duration, 0.1);
   ASSERT_FALSE(s.request.reference.empty());

@@ -80,18 +80,29 @@ void appendRow(MatrixXd& m, VectorXd& rhs, const VectorXd& row, double value) {
   rhs(k) = value;
 }
 
+// Degenerate test problems have many rows tight at a known point x0 (d = C x0). Data on a
+// dyadic grid (x0 in multiples of 1/16, rows in multiples of 1/64, scale factors powers of
+// two) make C x0 exact in floating point, so that the problems are exactly feasible even when
+// more than n rows are tight at x0 (otherwise the rounding of d alone can make such a vertex
+// infeasible by ~1e-9 when the tight rows are ill-conditioned).
+VectorXd onGrid(const VectorXd& v, double step) { return (v / step).array().round().matrix() * step; }
+constexpr double kPointStep = 1.0 / 16.0;
+constexpr double kRowStep = 1.0 / 64.0;
+
+double powerOfTwo(Rng& rng, int lo, int hi) { return std::ldexp(1.0, rng.integer(lo, hi)); }
+
 // Random feasible QP built around a feasible point x0, with optional degeneracies.
 Qp randomFeasibleQp(Rng& rng, int n, int me, int mi, bool degenerate) {
   Qp qp;
   qp.H = randomSpd(rng, n);
-  const VectorXd x0 = rng.normalVector(n);
+  const VectorXd x0 = onGrid(rng.normalVector(n), kPointStep);
   qp.E.resize(0, n);
   qp.e.resize(0);
   for (int i = 0; i < me; ++i) {
-    VectorXd row = rng.normalVector(n);
+    VectorXd row = onGrid(rng.normalVector(n), kRowStep);
     if (degenerate && i >= 2 && rng.chance(0.3)) {
       // duplicated or linearly dependent (but consistent) equality
-      row = qp.E.row(rng.integer(0, i - 1)).transpose() * rng.uniform(0.5, 2.0);
+      row = qp.E.row(rng.integer(0, i - 1)).transpose() * powerOfTwo(rng, -1, 1);
       if (rng.chance(0.5)) row += qp.E.row(rng.integer(0, i - 1)).transpose();
     }
     appendRow(qp.E, qp.e, row, row.dot(x0));
@@ -105,14 +116,15 @@ Qp randomFeasibleQp(Rng& rng, int n, int me, int mi, bool degenerate) {
       appendRow(qp.C, qp.d, qp.C.row(j).transpose(), qp.d(j));
     } else if (degenerate && i > 0 && kind < 0.20) {  // parallel row, same or weaker bound
       const int j = rng.integer(0, i - 1);
-      const double beta = rng.uniform(0.1, 10.0);
+      const double beta = powerOfTwo(rng, -3, 3);
       const double extra = rng.chance(0.5) ? 0.0 : rng.uniform(0.0, 1.0);
       appendRow(qp.C, qp.d, beta * qp.C.row(j).transpose(), beta * qp.d(j) + extra);
     } else if (degenerate && kind < 0.24) {  // zero row, d >= 0
       appendRow(qp.C, qp.d, VectorXd::Zero(n), rng.chance(0.5) ? 0.0 : rng.uniform(0.0, 1.0));
     } else {
-      const VectorXd row = rng.normalVector(n) * std::pow(10.0, rng.uniform(-1.0, 1.0));
-      // many rows tight at x0 in degenerate problems (more than n: a degenerate vertex)
+      // rows of different scales; many rows tight at x0 in degenerate problems (more than n:
+      // a degenerate vertex)
+      const VectorXd row = onGrid(rng.normalVector(n) * powerOfTwo(rng, -3, 3), kRowStep);
       const double slack = (degenerate && rng.chance(0.5)) ? 0.0 : rng.uniform(0.0, 2.0);
       appendRow(qp.C, qp.d, row, row.dot(x0) + slack);
     }
@@ -126,10 +138,11 @@ Qp randomFeasibleQp(Rng& rng, int n, int me, int mi, bool degenerate) {
 Qp vertexQp(Rng& rng, int n, int mi) {
   Qp qp;
   qp.H = randomSpd(rng, n);
-  const VectorXd x0 = rng.normalVector(n);
+  const VectorXd x0 = onGrid(rng.normalVector(n), kPointStep);
   qp.E.resize(0, n);
   qp.e.resize(0);
   qp.C = rng.normalMatrix(mi, n);
+  for (int i = 0; i < mi; ++i) qp.C.row(i) = onGrid(qp.C.row(i).transpose(), kRowStep).transpose();
   qp.d = qp.C * x0;
   VectorXd lambda = VectorXd::Zero(mi);
   for (int i = 0; i < mi; ++i) {
@@ -423,7 +436,8 @@ TEST(DenseQpSolver, MatchesBruteForceOnTinyProblems) {
     ASSERT_EQ(status, QpStatus::kOptimal) << "trial " << trial;
     EXPECT_NEAR(solver.objective(), reference.value, 1e-9 * (1.0 + std::abs(reference.value)))
         << "trial " << trial;
-    EXPECT_LE((x - reference.x).cwiseAbs().maxCoeff(), 1e-7) << "trial " << trial;
+    EXPECT_LE((x - reference.x).cwiseAbs().maxCoeff(), 1e-7 * (1.0 + reference.x.cwiseAbs().maxCoeff()))
+        << "trial " << trial;
   }
   std::printf("[ brute    ] %d feasible, %d infeasible tiny problems\n", feasible, infeasible);
   EXPECT_GT(feasible, 1000);

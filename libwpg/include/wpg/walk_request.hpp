@@ -26,6 +26,11 @@ struct GeneratorSettings {
   double sqp_tolerance = 1e-8;      // convergence: max |dU| (in U's units) below this
   int max_qp_iterations = 200;      // active-set iterations per QP
   double slack_weight = 1e6;        // penalty of the slack that relaxes an infeasible QP
+  // The walk is declared fallen (status kFallen, the run stops) when the capture point
+  // c + c'/omega0 is farther than this from both feet [m]. The CoP constraints alone do not
+  // make the LIPM capturable: after a large push the NMPC keeps finding feasible plans whose
+  // CoM diverges; beyond one maximal step (0.4 m for HRP-2) no step can catch it.
+  double fall_capture_distance = 0.6;
 };
 
 // Command in the robot (free-flyer) frame, held from time t until the next entry.

@@ -17,6 +17,7 @@ enum class IterationStatus : std::uint8_t {
   kRelaxed = 1,            // the QP was infeasible; solved with penalized slacks
   kFallback = 2,           // relaxation failed too: the time-shifted previous plan was kept
   kIterationLimit = 3,     // the QP hit its iteration limit; its last iterate was used
+  kFallen = 4,             // the capture point left the reach of the feet: the walk ends here
 };
 const char* iterationStatusName(IterationStatus status);
 

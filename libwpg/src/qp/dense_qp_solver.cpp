@@ -32,6 +32,9 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 // noise on an entry that is zero in exact arithmetic would otherwise trigger spurious
 // zero-length steps that drop degenerate constraints and add them back).
 constexpr double kDualDirectionRelativeZero = 1e-14;
+// in_working_set_ values: 0 free, 1 in the working set, kSetAside skipped by the scans (a row
+// implied by the working set and violated only by rounding; see the dual iterations).
+constexpr unsigned char kSetAside = 2;
 
 // The Givens rotations of one update form a chain over neighbouring column pairs; applying
 // them row block by row block keeps the running column in registers, so each entry of J is
@@ -342,13 +345,15 @@ QpStatus DenseQpSolver::solve(const HessianFactor& factor,
     normal_.head(n) = -E.row(i).transpose();
     const double violation = normal_.head(n).dot(x) + e(i);  // s = n'x - b with b = -e_i
     const double h = reduceNormal(n);
+    const int q = active_count_;
+    compute_dual_direction();
     if (is_dependent(h)) {
-      if (std::abs(violation) <= feasibility_tol) continue;  // redundant and consistent
+      // n+ = N r: consistent (hence redundant) when the violation is within what the
+      // residuals of the equalities already in the working set can explain.
+      if (std::abs(violation) <= feasibility_tol * (1.0 + r_.head(q).cwiseAbs().sum())) continue;
       storeResults(factor, g, x, me, mi, -1, 0.0);
       return QpStatus::kInfeasible;  // inconsistent equalities
     }
-    const int q = active_count_;
-    compute_dual_direction();
     const double t = -violation / (h * h);
     x += (t * h) * J.col(q);  // z = h J_q
     u_.head(q) -= t * r_.head(q);
@@ -407,6 +412,14 @@ QpStatus DenseQpSolver::solve(const HessianFactor& factor,
   }
 
   // ---- dual iterations ----
+  bool any_set_aside = false;
+  auto release_set_aside = [&]() {
+    if (!any_set_aside) return;
+    for (int i = 0; i < mi; ++i) {
+      if (in_working_set_(i) == kSetAside) in_working_set_(i) = 0;
+    }
+    any_set_aside = false;
+  };
   for (;;) {
     // Step 1: pick the most violated constraint (violation scaled by the row norm). One product
     // C x per added constraint; choosing the most violated row keeps the iteration count low
@@ -462,10 +475,26 @@ QpStatus DenseQpSolver::solve(const HessianFactor& factor,
       // (c)
       if (dependent) {
         // n+ = N r: no primal direction. If no multiplier limits the dual ray, the dual is
-        // unbounded: the constraints are inconsistent.
+        // unbounded: the constraints are inconsistent, b+ > sum_j r_j b_j (Farkas) ...
         if (k < 0) {
-          storeResults(factor, g, x, me, mi, p, u_plus);
-          return QpStatus::kInfeasible;
+          // ... unless the violation is within what the working-set residuals (each counted
+          // up to the feasibility tolerance) can explain: n+'x - b+ = sum_j r_j (n_j'x - b_j)
+          // + (sum_j r_j b_j - b+). That happens at degenerate vertices, where more than n
+          // constraints are tight and rounding makes one of them look violated. Such a row is
+          // implied by the working set (n+'x <= sum_j r_j b_j ~ b+ on it), so it is set aside
+          // until the working set loses a constraint.
+          const double explainable = feasibility_tol * (1.0 + r_.head(q).cwiseAbs().sum());
+          if (-violation > explainable) {
+            storeResults(factor, g, x, me, mi, p, u_plus);
+            return QpStatus::kInfeasible;
+          }
+          // H x + g = N u + u+ n+ = N (u + u+ r): fold the multiplier of p into the working set
+          // (u+ is 0 unless pure dual steps were taken for p, which rounding alone can cause).
+          u_.head(q) += u_plus * r_.head(q);
+          for (int j = qe; j < q; ++j) u_(j) = std::max(u_(j), 0.0);
+          in_working_set_(p) = kSetAside;
+          any_set_aside = true;
+          break;
         }
         // Pure dual step, then drop k; n+ can then enter the space freed by k.
         u_.head(q) -= t1 * r_.head(q);
@@ -473,6 +502,7 @@ QpStatus DenseQpSolver::solve(const HessianFactor& factor,
         u_plus += t1;
         in_working_set_(active_(k)) = 0;
         dropFromWorkingSet(n, k);
+        release_set_aside();
         ++iterations_;
         continue;
       }
@@ -493,6 +523,7 @@ QpStatus DenseQpSolver::solve(const HessianFactor& factor,
       }
       in_working_set_(active_(k)) = 0;
       dropFromWorkingSet(n, k);
+      release_set_aside();
     }
   }
 

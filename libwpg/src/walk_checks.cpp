@@ -1,0 +1,110 @@
+#include "wpg/walk_checks.hpp"
+
+#include <cmath>
+#include <vector>
+
+#include "wpg/convex_polygon.hpp"
+
+namespace wpg {
+namespace {
+
+// Corners of a foot rectangle centred on the ankle, in the world frame.
+void footCorners(const Eigen::Vector4d& foot, double half_length, double half_width,
+                 std::vector<Eigen::Vector2d>* out) {
+  const double c = std::cos(foot(3)), s = std::sin(foot(3));
+  for (int i = 0; i < 4; ++i) {
+    const double lx = (i == 0 || i == 3) ? half_length : -half_length;
+    const double ly = (i < 2) ? half_width : -half_width;
+    out->emplace_back(foot(0) + c * lx - s * ly, foot(1) + s * lx + c * ly);
+  }
+}
+
+// Distance outside the support polygon (<= 0 inside).
+double supportViolation(const Eigen::Vector2d& p, SupportState support, const Eigen::Vector4d& left,
+                        const Eigen::Vector4d& right, double half_length, double half_width) {
+  std::vector<Eigen::Vector2d> corners;
+  if (support != SupportState::kRight) footCorners(left, half_length, half_width, &corners);
+  if (support != SupportState::kLeft) footCorners(right, half_length, half_width, &corners);
+  ConvexPolygon polygon;
+  polygon.setVertices(support == SupportState::kDouble ? convexHull(corners) : corners);
+  return polygon.violation(p);
+}
+
+}  // namespace
+
+WalkCheckReport checkWalk(const WalkingParameters& w, const WalkTrajectory& tr) {
+  WalkCheckReport report;
+  report.cop_sample_violation = -1.0;
+  report.cop_control_violation = -1.0;
+  report.cop_margin_excursion = -1.0;
+  report.feasibility_violation = -1.0;
+  const std::size_t n = tr.size();
+  const int per_sample = static_cast<int>(std::lround(w.sampling_period / w.control_period));
+  for (std::size_t i = 0; i < n; ++i) {
+    const double sole = supportViolation(tr.cop[i], tr.support[i], tr.left_foot[i],
+                                         tr.right_foot[i], 0.5 * w.foot_length, 0.5 * w.foot_width);
+    if (sole > report.cop_control_violation) {
+      report.cop_control_violation = sole;
+      report.cop_control_violation_time = tr.time[i];
+    }
+    report.cop_margin_excursion = std::max(
+        report.cop_margin_excursion,
+        supportViolation(tr.cop[i], tr.support[i], tr.left_foot[i], tr.right_foot[i],
+                         w.copHalfLength(), w.copHalfWidth()));
+    if (i % per_sample != 0) continue;
+    // At an NMPC sample the CoP belongs to the single support that ends there, else to the
+    // one that starts there, else (standing, starting) to the double support.
+    SupportState support = SupportState::kDouble;
+    if (i > 0 && tr.support[i - 1] != SupportState::kDouble) {
+      support = tr.support[i - 1];
+    } else if (i + 1 < n && tr.support[i] != SupportState::kDouble) {
+      support = tr.support[i];
+    }
+    const double margin = supportViolation(tr.cop[i], support, tr.left_foot[i], tr.right_foot[i],
+                                           w.copHalfLength(), w.copHalfWidth());
+    if (margin > report.cop_sample_violation) {
+      report.cop_sample_violation = margin;
+      report.cop_sample_violation_time = tr.time[i];
+    }
+  }
+
+  // Each landed step against the last footstep of the other side (the support it left from).
+  ConvexPolygon feasibility[2];
+  feasibility[0].setVertices(w.feasibilityVertices(FootSide::kLeft));
+  feasibility[1].setVertices(w.feasibilityVertices(FootSide::kRight));
+  int second_landing = -1;
+  for (std::size_t k = 0; k < tr.footsteps.size(); ++k) {
+    const Footstep& step = tr.footsteps[k];
+    if (step.landing_time <= 0.0) continue;  // initial feet
+    ++report.landed_steps;
+    if (report.landed_steps == 2) second_landing = static_cast<int>(k);
+    const Footstep* previous = nullptr;
+    for (std::size_t j = k; j-- > 0;) {
+      if (tr.footsteps[j].side != step.side) {
+        previous = &tr.footsteps[j];
+        break;
+      }
+    }
+    if (!previous) continue;
+    const double c = std::cos(previous->pose.z()), s = std::sin(previous->pose.z());
+    const Eigen::Vector2d d = (step.pose - previous->pose).head<2>();
+    const Eigen::Vector2d local(c * d.x() + s * d.y(), -s * d.x() + c * d.y());  // eq. (14)
+    const ConvexPolygon& polygon = feasibility[step.side == FootSide::kLeft ? 0 : 1];
+    report.feasibility_violation = std::max(report.feasibility_violation, polygon.violation(local));
+    report.max_step_yaw_change =
+        std::max(report.max_step_yaw_change, std::abs(step.pose.z() - previous->pose.z()));
+  }
+  if (second_landing >= 0 && n > 0) {
+    const double t0 = tr.footsteps[second_landing].landing_time;
+    std::size_t i0 = 0;
+    while (i0 + 1 < n && tr.time[i0] < t0) ++i0;
+    const double heading = tr.free_flyer_yaw[i0];
+    const Eigen::Vector3d d = tr.com[n - 1] - tr.com[i0];
+    const double elapsed = tr.time[n - 1] - tr.time[i0];
+    if (elapsed > 0.0)
+      report.speed_after_two_steps = (std::cos(heading) * d.x() + std::sin(heading) * d.y()) / elapsed;
+  }
+  return report;
+}
+
+}  // namespace wpg
