@@ -14,6 +14,8 @@
 #include <vector>
 
 #include <H5Cpp.h>
+
+#include "wpg/walk_checks.hpp"
 #include <unistd.h>
 
 #ifndef WPG_VERSION_STRING
@@ -256,6 +258,31 @@ void writeMpcLog(H5::Group& run, const std::vector<MpcIterationLog>& log) {
                 nullptr});
 }
 
+void writeDoubleAttribute(H5::H5Object& object, const std::string& name, double value) {
+  H5::Attribute attribute =
+      object.createAttribute(name, H5::PredType::IEEE_F64LE, H5::DataSpace(H5S_SCALAR));
+  attribute.write(H5::PredType::NATIVE_DOUBLE, &value);
+}
+
+// Physical invariants of the walk (libwpg/walk_checks.hpp), so that a dataset says whether
+// it is sound without any code of ours.
+void writeChecks(H5::Group& run, const Scenario& scenario, const WalkTrajectory& trajectory) {
+  const WalkCheckReport report = checkWalk(scenario.walking, trajectory);
+  H5::Group checks = run.createGroup("checks");
+  writeStringAttribute(checks, "description",
+                       "invariants of the walk; distances in m (<= 0: inside), yaw in rad, "
+                       "speed in m/s");
+  writeDoubleAttribute(checks, "cop_sample_violation", report.cop_sample_violation);
+  writeDoubleAttribute(checks, "cop_sample_violation_time", report.cop_sample_violation_time);
+  writeDoubleAttribute(checks, "cop_control_violation", report.cop_control_violation);
+  writeDoubleAttribute(checks, "cop_control_violation_time", report.cop_control_violation_time);
+  writeDoubleAttribute(checks, "cop_margin_excursion", report.cop_margin_excursion);
+  writeDoubleAttribute(checks, "feasibility_violation", report.feasibility_violation);
+  writeDoubleAttribute(checks, "max_step_yaw_change", report.max_step_yaw_change);
+  writeIntAttribute(checks, "landed_steps", report.landed_steps);
+  writeDoubleAttribute(checks, "speed_after_two_steps", report.speed_after_two_steps);
+}
+
 void writeFile(const std::string& file_path, const Scenario& scenario, const WalkResult& result) {
   H5::H5File file(file_path, H5F_ACC_TRUNC);
   writeIntAttribute(file, "schema_version", kRunDatasetSchemaVersion);
@@ -272,6 +299,7 @@ void writeFile(const std::string& file_path, const Scenario& scenario, const Wal
   writeStringAttribute(run, "robot", scenario.robot);
   writeTrajectory(run, result.trajectory);
   writeMpcLog(run, result.trajectory.mpc);
+  writeChecks(run, scenario, result.trajectory);
   file.close();  // inside the try of the caller: a failed flush is an error, not a warning
 }
 

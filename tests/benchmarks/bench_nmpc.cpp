@@ -1,0 +1,104 @@
+// NMPC speed (issue acceptance 5): one real-time iteration (build the problem, linearize,
+// one QP) of HRP-2's NMPC, N = 16, nf = 2, in steady walking; and a whole 20 s walk
+// (generation + 5 ms interpolation + HDF5 write). Per-iteration times are also reported as
+// median / p99 counters (manual timing of each update()).
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include <unistd.h>
+
+#include "wpg/datasets/run_dataset.hpp"
+#include "wpg/datasets/scenario.hpp"
+#include "wpg/lipm_prediction.hpp"
+#include "wpg/pattern_generator.hpp"
+#include "wpg/walk_generator.hpp"
+
+namespace {
+
+void reportPercentiles(benchmark::State& state, std::vector<double>& samples) {
+  if (samples.empty()) return;
+  std::sort(samples.begin(), samples.end());
+  auto at = [&](double q) { return samples[static_cast<std::size_t>(q * (samples.size() - 1))]; };
+  state.counters["median_us"] = at(0.5) * 1e6;
+  state.counters["p99_us"] = at(0.99) * 1e6;
+  state.counters["max_us"] = samples.back() * 1e6;
+}
+
+void runIterations(benchmark::State& state, const Eigen::Vector3d& command,
+                   wpg::GeneratorAlgorithm algorithm, int sqp_iterations) {
+  wpg::WalkingParameters parameters;
+  parameters.max_step_yaw_change = 0.17;  // turning at 0.2 rad/s needs it (robots/hrp2/README.md)
+  wpg::GeneratorSettings settings;
+  settings.algorithm = algorithm;
+  settings.sqp_iterations = sqp_iterations;
+  wpg::PatternGenerator generator(parameters, settings);
+  const double T = parameters.sampling_period, dt = parameters.control_period;
+  Eigen::Vector3d com_x = generator.comX(), com_y = generator.comY();
+  double t = 0.0;
+  auto advance = [&]() {
+    for (int i = 0; i < 20; ++i) {
+      wpg::integrateJerk(com_x, generator.plan().jerk_x, dt);
+      wpg::integrateJerk(com_y, generator.plan().jerk_y, dt);
+    }
+    generator.advance(com_x, com_y);
+    t += T;
+  };
+  for (int k = 0; k < 40; ++k) {  // start and reach steady walking
+    generator.update(t, command);
+    advance();
+  }
+  std::vector<double> samples;
+  samples.reserve(1 << 20);
+  for (auto _ : state) {
+    const auto start = std::chrono::steady_clock::now();
+    benchmark::DoNotOptimize(generator.update(t, command));
+    const double elapsed =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    state.SetIterationTime(elapsed);
+    if (samples.size() < samples.capacity()) samples.push_back(elapsed);
+    advance();
+    if (generator.lastSolve().status != wpg::IterationStatus::kSolved)
+      state.SkipWithError("an NMPC iteration was not solved");
+  }
+  reportPercentiles(state, samples);
+}
+
+void BM_NmpcIterationForward(benchmark::State& state) {
+  runIterations(state, {0.2, 0.0, 0.0}, wpg::GeneratorAlgorithm::kNmpc, 1);
+}
+void BM_NmpcIterationCurve(benchmark::State& state) {
+  runIterations(state, {0.2, 0.0, 0.2}, wpg::GeneratorAlgorithm::kNmpc, 1);
+}
+void BM_NmpcConvergedSqpForward(benchmark::State& state) {
+  runIterations(state, {0.2, 0.0, 0.0}, wpg::GeneratorAlgorithm::kNmpc, 0);
+}
+void BM_LmpcIterationCurve(benchmark::State& state) {
+  runIterations(state, {0.2, 0.0, 0.2}, wpg::GeneratorAlgorithm::kLmpc, 1);
+}
+BENCHMARK(BM_NmpcIterationForward)->UseManualTime()->Unit(benchmark::kMicrosecond)->MinTime(1.0);
+BENCHMARK(BM_NmpcIterationCurve)->UseManualTime()->Unit(benchmark::kMicrosecond)->MinTime(1.0);
+BENCHMARK(BM_NmpcConvergedSqpForward)->UseManualTime()->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_LmpcIterationCurve)->UseManualTime()->Unit(benchmark::kMicrosecond);
+
+// A 20 s walk as `wpg run` does it, in one process: generation, interpolation at 5 ms and
+// the HDF5 dataset (written to a temporary file, then renamed).
+void BM_Walk20sWithDataset(benchmark::State& state) {
+  const std::string source = WPG_SOURCE_DIR;
+  const wpg::datasets::Scenario scenario = wpg::datasets::loadScenario(
+      source + "/datasets/scenarios/walk_forward.yaml", {"duration=20"}, source + "/robots");
+  const std::string path = "/tmp/wpg_bench_walk20_" + std::to_string(::getpid()) + ".h5";
+  for (auto _ : state) {
+    const wpg::WalkResult result = wpg::generateWalk(scenario.walking, scenario.request);
+    wpg::datasets::writeRunDataset(path, scenario, result);
+    benchmark::DoNotOptimize(result.trajectory.size());
+  }
+  std::remove(path.c_str());
+}
+BENCHMARK(BM_Walk20sWithDataset)->Unit(benchmark::kMillisecond);
+
+}  // namespace
