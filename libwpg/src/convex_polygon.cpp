@@ -36,10 +36,19 @@ bool ConvexPolygon::setVertices(const std::vector<Eigen::Vector2d>& vertices, st
   if (std::abs(area2) < 1e-12) return fail("degenerate (zero area)");
   std::vector<Eigen::Vector2d> ccw = vertices;
   if (area2 < 0.0) std::reverse(ccw.begin(), ccw.end());
+  double turning = 0.0;
   for (int i = 0; i < n; ++i) {
-    if (cross(ccw[i], ccw[(i + 1) % n], ccw[(i + 2) % n]) <= kCollinear)
+    const Eigen::Vector2d& a = ccw[i];
+    const Eigen::Vector2d& b = ccw[(i + 1) % n];
+    const Eigen::Vector2d& c = ccw[(i + 2) % n];
+    if (cross(a, b, c) <= kCollinear)
       return fail("not strictly convex (or has collinear vertices)");
+    const Eigen::Vector2d u = b - a, v = c - b;
+    turning += std::atan2(u.x() * v.y() - u.y() * v.x(), u.dot(v));
   }
+  // Left turns everywhere are not enough: a pentagram turns left at every vertex but winds
+  // twice. A simple convex polygon turns by exactly 2 pi.
+  if (std::abs(turning - 2.0 * M_PI) > 1e-6) return fail("not convex (self-intersecting)");
   vertices_ = ccw;
   normals_.resize(n, 2);
   offsets_.resize(n);

@@ -53,7 +53,9 @@ bool hasRows(const PhaseStructure& phase, int step) {
 
 // ------------------------------------------------------------------------------- model --
 
-NmpcModel::NmpcModel(const WalkingParameters& parameters) : parameters_(parameters) {
+NmpcModel::NmpcModel(const WalkingParameters& parameters, int obstacle_slots)
+    : parameters_(parameters) {
+  if (obstacle_slots < 0) throw std::invalid_argument("obstacle slots: expected >= 0");
   parameters_.validate();
   const int N = parameters_.horizon_length;
   const int nf = parameters_.previewed_steps;
@@ -65,6 +67,7 @@ NmpcModel::NmpcModel(const WalkingParameters& parameters) : parameters_(paramete
   layout_.horizon = N;
   layout_.steps = nf;
   layout_.feasibility_edges = feasibility_left_.edgeCount();
+  layout_.obstacle_slots = obstacle_slots;
   prediction_ = LipmPrediction(N, parameters_.sampling_period, parameters_.com_height,
                                parameters_.gravity);
 
@@ -130,6 +133,7 @@ NmpcProblem NmpcModel::makeProblem() const {
   problem.velocity_x = Eigen::VectorXd::Zero(layout_.horizon);
   problem.velocity_y = Eigen::VectorXd::Zero(layout_.horizon);
   problem.yaw_reference = Eigen::VectorXd::Zero(layout_.steps);
+  problem.obstacle_slot = Eigen::VectorXi::Constant(layout_.obstacle_slots, -1);
   return problem;
 }
 
@@ -212,6 +216,10 @@ double evaluateCost(const NmpcModel& model, const NmpcProblem& problem,
 }
 
 // -------------------------------------------------------------------------- constraints --
+
+void evaluateObstacleConstraints(const NmpcModel& model, const NmpcProblem& problem,
+                                 const Eigen::Ref<const Eigen::VectorXd>& U,
+                                 Eigen::Ref<Eigen::VectorXd> g, Eigen::MatrixXd* jacobian);
 
 void evaluateConstraints(const NmpcModel& model, const NmpcProblem& problem,
                          const Eigen::Ref<const Eigen::VectorXd>& U,
@@ -299,6 +307,43 @@ void evaluateConstraints(const NmpcModel& model, const NmpcProblem& problem,
       }
     }
   }
+  if (L.obstacle_slots > 0) evaluateObstacleConstraints(model, problem, U, g, jacobian);
+}
+
+// Obstacle rows (18)-(19), one per previewed step and obstacle slot.
+void evaluateObstacleConstraints(const NmpcModel& model, const NmpcProblem& problem,
+                                 const Eigen::Ref<const Eigen::VectorXd>& U,
+                                 Eigen::Ref<Eigen::VectorXd> g, Eigen::MatrixXd* jacobian) {
+  const NmpcLayout& L = model.layout();
+  for (int i = 0; i < L.steps; ++i) {
+    for (int k = 0; k < L.obstacle_slots; ++k) {
+      const int row = L.obstacleRow(i, k);
+      const int index = problem.obstacle_slot(k);
+      if (index < 0 || problem.phase.step_fixed(i)) {
+        g(row) = -1.0;  // empty slot, or a step that can no longer move
+        continue;
+      }
+      const Obstacle& obstacle = (*problem.obstacles)[index];
+      const Eigen::Vector2d F(U(L.stepX() + i), U(L.stepY() + i));
+      Eigen::Vector2d dg;
+      if (obstacle.type == ObstacleType::kCircle) {
+        // eq. (18): (F - c)^2 >= (R + m)^2  <=>  g = (R + m)^2 - |F - c|^2 <= 0
+        const Eigen::Vector2d d = F - obstacle.center;
+        const double r = obstacle.radius + obstacle.margin;
+        g(row) = r * r - d.squaredNorm();
+        dg = -2.0 * d;
+      } else {
+        // d(F) >= m  <=>  g = m - d(F) <= 0, with d the signed distance to the convex shape
+        Eigen::Vector2d gradient;
+        g(row) = obstacle.margin - problem.distance->signedDistance(index, F, &gradient);
+        dg = -gradient;
+      }
+      if (jacobian) {
+        (*jacobian)(row, L.stepX() + i) = dg.x();
+        (*jacobian)(row, L.stepY() + i) = dg.y();
+      }
+    }
+  }
 }
 
 int buildStepEqualities(const NmpcModel& model, const NmpcProblem& problem,
@@ -359,6 +404,7 @@ NmpcWorkspace::NmpcWorkspace(const NmpcModel& model)
 void NmpcWorkspace::shiftActiveSet(const NmpcLayout& L, bool step_completed) {
   const int cop_rows = NmpcLayout::kCopEdges * L.horizon;
   const int feasibility_rows = L.feasibility_edges * L.steps;
+  const int obstacle_start = L.firstObstacleRow();
   int kept = 0;
   for (int k = 0; k < active_count; ++k) {
     int row = active_set(k);
@@ -367,9 +413,12 @@ void NmpcWorkspace::shiftActiveSet(const NmpcLayout& L, bool step_completed) {
     } else if (step_completed && row < cop_rows + feasibility_rows) {
       row -= L.feasibility_edges;    // step i becomes step i - 1
       if (row < cop_rows) row = -1;
-    } else if (step_completed) {
+    } else if (step_completed && row < obstacle_start) {
       row -= 2;
       if (row < cop_rows + feasibility_rows) row = -1;
+    } else if (step_completed) {
+      row -= L.obstacle_slots;
+      if (row < obstacle_start) row = -1;
     }
     if (row >= 0) active_set(kept++) = row;
   }
@@ -387,10 +436,10 @@ void rememberActiveSet(const qp::DenseQpSolver& solver, int inequality_rows, Nmp
   }
 }
 
-// One slack s >= 0 on every inequality row, cost rho s + rho/2 s^2: the relaxed QP is always
-// feasible, and s = 0 whenever the original QP is.
-qp::QpStatus solveRelaxed(const qp::HessianFactor& factor, int me, double rho, NmpcWorkspace& ws,
-                          double* slack) {
+// One slack s >= 0 on the soft rows (from first_soft_row on), cost rho s + rho/2 s^2. With
+// every row soft the relaxed QP is always feasible; s = 0 whenever the original QP is.
+qp::QpStatus solveRelaxed(const qp::HessianFactor& factor, int me, double rho, int first_soft_row,
+                          NmpcWorkspace& ws, double* slack) {
   const int n = static_cast<int>(ws.gradient.size());
   const int mi = static_cast<int>(ws.upper.size());
   auto& J = ws.relaxed_factor.inverse_factor_transposed;
@@ -399,7 +448,8 @@ qp::QpStatus solveRelaxed(const qp::HessianFactor& factor, int me, double rho, N
   ws.relaxed_gradient.head(n) = ws.gradient;
   ws.relaxed_gradient(n) = rho;
   ws.relaxed_jacobian.topLeftCorner(mi, n) = ws.jacobian;
-  ws.relaxed_jacobian.col(n).head(mi).setConstant(-1.0);
+  ws.relaxed_jacobian.col(n).head(first_soft_row).setZero();
+  ws.relaxed_jacobian.col(n).segment(first_soft_row, mi - first_soft_row).setConstant(-1.0);
   ws.relaxed_jacobian(mi, n) = -1.0;
   ws.relaxed_upper.head(mi) = ws.upper;
   ws.relaxed_upper(mi) = 0.0;
@@ -456,9 +506,20 @@ NmpcSolveResult runSqp(const NmpcModel& model, const NmpcProblem& problem,
     if (status == qp::QpStatus::kOptimal) {
       rememberActiveSet(ws.solver, mi, ws);
     } else if (status == qp::QpStatus::kInfeasible) {
+      // Relax the obstacle rows first (paper: the robot may get blocked, never unbalanced),
+      // then every row.
       double slack = 0.0;
-      status = solveRelaxed(factor, me, settings.slack_weight, ws, &slack);
-      result.qp_iterations += ws.relaxed_solver.iterations();
+      status = qp::QpStatus::kInfeasible;
+      if (L.obstacle_slots > 0) {
+        status = solveRelaxed(factor, me, settings.slack_weight, L.firstObstacleRow(), ws, &slack);
+        result.qp_iterations += ws.relaxed_solver.iterations();
+        result.relaxed_obstacles_only = status == qp::QpStatus::kOptimal;
+      }
+      if (status != qp::QpStatus::kOptimal) {
+        status = solveRelaxed(factor, me, settings.slack_weight, 0, ws, &slack);
+        result.qp_iterations += ws.relaxed_solver.iterations();
+        result.relaxed_obstacles_only = false;
+      }
       if (status != qp::QpStatus::kOptimal || !ws.relaxed_solution.allFinite()) {
         result.status = IterationStatus::kFallback;  // keep the time-shifted previous plan
         result.cost = evaluateCost(model, problem, ws.U);

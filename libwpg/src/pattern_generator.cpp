@@ -1,6 +1,7 @@
 #include "wpg/pattern_generator.hpp"
 
 #include <algorithm>
+#include <utility>
 #include <cmath>
 
 namespace wpg {
@@ -18,8 +19,52 @@ bool isZeroCommand(const Eigen::Vector3d& command) { return command.cwiseAbs().m
 
 PatternGenerator::PatternGenerator(const WalkingParameters& parameters,
                                    const GeneratorSettings& settings)
-    : model_(parameters), settings_(settings), workspace_(model_), problem_(model_.makeProblem()) {
+    : model_(parameters, settings.max_obstacles_in_qp),
+      settings_(settings),
+      workspace_(model_),
+      problem_(model_.makeProblem()) {
   reset();
+}
+
+void PatternGenerator::setObstacles(const std::vector<Obstacle>* obstacles,
+                                    const ObstacleDistanceOracle* distance) {
+  obstacles_ = obstacles;
+  obstacle_bounds_.clear();
+  analytic_distance_.reset();
+  if (obstacles_ && !distance) {
+    analytic_distance_ = std::make_unique<AnalyticObstacleDistance>(*obstacles_);
+    distance = analytic_distance_.get();
+  }
+  problem_.obstacles = obstacles_;
+  problem_.distance = distance;
+  if (obstacles_) {
+    for (const Obstacle& obstacle : *obstacles_) {
+      Eigen::Vector2d center;
+      double radius = 0.0;
+      boundingCircle(obstacle, &center, &radius);
+      obstacle_bounds_.emplace_back(center.x(), center.y(), radius + obstacle.margin);
+    }
+  }
+  obstacle_order_.assign(obstacle_bounds_.size(), {0.0, 0});
+  problem_.obstacle_slot.setConstant(-1);
+}
+
+// The obstacles that may constrain the previewed steps: the nearest ones (bounding circle
+// grown by the margin) within obstacle_reach of the support foot, at most one per slot.
+void PatternGenerator::selectObstacles() {
+  const int slots = model_.layout().obstacle_slots;
+  problem_.obstacle_slot.setConstant(-1);
+  if (slots == 0 || obstacle_bounds_.empty() || standing_) return;
+  const Eigen::Vector2d support = problem_.phase.support_pose.head<2>();
+  int candidates = 0;
+  for (std::size_t i = 0; i < obstacle_bounds_.size(); ++i) {
+    const double gap = (obstacle_bounds_[i].head<2>() - support).norm() - obstacle_bounds_[i].z();
+    if (gap < settings_.obstacle_reach) obstacle_order_[candidates++] = {gap, static_cast<int>(i)};
+  }
+  const int kept = std::min(candidates, slots);
+  std::partial_sort(obstacle_order_.begin(), obstacle_order_.begin() + kept,
+                    obstacle_order_.begin() + candidates);
+  for (int k = 0; k < kept; ++k) problem_.obstacle_slot(k) = obstacle_order_[k].second;
 }
 
 void PatternGenerator::reset(const Eigen::Vector3d& pose) {
@@ -151,6 +196,7 @@ void PatternGenerator::buildProblem(const Eigen::Vector3d& command) {
   }
   problem_.com_x = com_x_;
   problem_.com_y = com_y_;
+  selectObstacles();
 }
 
 const MpcIterationLog& PatternGenerator::update(double time, const Eigen::Vector3d& raw_command) {

@@ -8,10 +8,12 @@
 
 namespace wpg {
 
-WalkResult generateWalk(const WalkingParameters& parameters, const WalkRequest& request) {
+WalkResult generateWalk(const WalkingParameters& parameters, const WalkRequest& request,
+                        const ObstacleDistanceOracle* world) {
   parameters.validate();
   request.validate();
   PatternGenerator generator(parameters, request.generator);
+  if (!request.obstacles.empty()) generator.setObstacles(&request.obstacles, world);
   const double T = parameters.sampling_period;
   const double dt = parameters.control_period;
   const int sub_samples = static_cast<int>(std::lround(T / dt));

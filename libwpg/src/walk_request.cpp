@@ -73,7 +73,13 @@ void WalkRequest::validate() const {
       fail(key + ".duration", "a positive duration in s", str(pushes[i].duration));
     if (!pushes[i].force.allFinite()) fail(key + ".force", "two finite numbers [N]", "a non-finite value");
   }
+  for (std::size_t i = 0; i < obstacles.size(); ++i)
+    obstacles[i].validate("obstacles[" + std::to_string(i) + "]");
   const GeneratorSettings& g = generator;
+  if (g.max_obstacles_in_qp < 0 || g.max_obstacles_in_qp > 32)
+    fail("generator.max_obstacles_in_qp", "an integer in [0, 32]", str(g.max_obstacles_in_qp));
+  if (!(g.obstacle_reach > 0.0) || !std::isfinite(g.obstacle_reach))
+    fail("generator.obstacle_reach", "a positive distance in m", str(g.obstacle_reach));
   if (g.sqp_iterations < 0) fail("generator.sqp_iterations", "an integer >= 0", str(g.sqp_iterations));
   if (g.max_sqp_iterations < 1)
     fail("generator.max_sqp_iterations", "an integer >= 1", str(g.max_sqp_iterations));

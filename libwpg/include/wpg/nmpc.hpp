@@ -9,6 +9,7 @@
 //   CoP in the rotated support polygon          (9)-(13)   4 rows per sample
 //   step inside the previous step's polygon     (14)-(15)  5 rows per step
 //   yaw change between consecutive steps        (16)-(17)  2 rows per step
+//   obstacle avoidance                          (18)-(19)  1 row per step and obstacle slot
 // all written g(U) <= 0 and linearized at the previous iterate as in (21b).
 #include <vector>
 
@@ -16,6 +17,7 @@
 
 #include "wpg/convex_polygon.hpp"
 #include "wpg/lipm_prediction.hpp"
+#include "wpg/obstacles.hpp"
 #include "wpg/qp/dense_qp_solver.hpp"
 #include "wpg/walk_request.hpp"
 #include "wpg/walk_trajectory.hpp"
@@ -28,6 +30,7 @@ struct NmpcLayout {
   int horizon = 0;         // N
   int steps = 0;           // nf
   int feasibility_edges = 0;
+  int obstacle_slots = 0;  // obstacles that may enter the QP at once
 
   int jerkX() const { return 0; }
   int stepX() const { return horizon; }
@@ -44,9 +47,11 @@ struct NmpcLayout {
   int yawRow(int step, bool upper) const {
     return kCopEdges * horizon + feasibility_edges * steps + 2 * step + (upper ? 0 : 1);
   }
-  int inequalityCount() const {
-    return kCopEdges * horizon + feasibility_edges * steps + 2 * steps;
+  int obstacleRow(int step, int slot) const {
+    return kCopEdges * horizon + feasibility_edges * steps + 2 * steps + obstacle_slots * step + slot;
   }
+  int firstObstacleRow() const { return obstacleRow(0, 0); }
+  int inequalityCount() const { return obstacleRow(steps, 0); }
   int maxEqualityCount() const { return 3 * steps; }
 };
 
@@ -75,6 +80,12 @@ struct PhaseStructure {
 // Everything that changes from one sample to the next.
 struct NmpcProblem {
   PhaseStructure phase;
+  // Obstacles (eq. 18-19): slot k holds the index of an obstacle in *obstacles, or -1.
+  // Circles use the paper's form (F - c)^2 >= (R + m)^2; other shapes d(F) >= m with d and
+  // its gradient from *distance (planning/'s FCL world, or AnalyticObstacleDistance).
+  const std::vector<Obstacle>* obstacles = nullptr;
+  const ObstacleDistanceOracle* distance = nullptr;
+  Eigen::VectorXi obstacle_slot;
   Eigen::Vector3d com_x = Eigen::Vector3d::Zero();  // [c, c', c''] along world x
   Eigen::Vector3d com_y = Eigen::Vector3d::Zero();
   Eigen::VectorXd velocity_x, velocity_y;  // N: world reference velocity per sample (J1)
@@ -83,7 +94,7 @@ struct NmpcProblem {
 
 class NmpcModel {
  public:
-  explicit NmpcModel(const WalkingParameters& parameters);
+  explicit NmpcModel(const WalkingParameters& parameters, int obstacle_slots = 0);
 
   const WalkingParameters& parameters() const { return parameters_; }
   const NmpcLayout& layout() const { return layout_; }
@@ -135,6 +146,7 @@ struct NmpcSolveResult {
   int qp_iterations = 0;
   int sqp_iterations = 0;
   double slack = 0.0;
+  bool relaxed_obstacles_only = false;  // kRelaxed with only the obstacle rows relaxed
   double cost = 0.0;
   double last_step_norm = 0.0;  // max |U_{i+1} - U_i| of the last SQP iteration
 };
@@ -154,7 +166,7 @@ class NmpcWorkspace {
   Eigen::VectorXd equality_vector;
   Eigen::VectorXd qp_solution;
   qp::DenseQpSolver solver;
-  // relaxed problem: [U; s] with one slack on every inequality row
+  // relaxed problem: [U; s] with one slack on the obstacle rows, else on every row
   qp::DenseQpSolver relaxed_solver;
   qp::HessianFactor relaxed_factor;
   Eigen::MatrixXd relaxed_jacobian, relaxed_equality_matrix;

@@ -14,6 +14,9 @@
 //    which needs the CoP on the other side of it), then the first lift-off. A zero command is
 //    followed by one free step to slow down, then a side-by-side step, then standing again.
 #include <chrono>
+#include <memory>
+#include <utility>
+#include <vector>
 
 #include <Eigen/Core>
 
@@ -24,6 +27,12 @@ namespace wpg {
 class PatternGenerator {
  public:
   PatternGenerator(const WalkingParameters& parameters, const GeneratorSettings& settings);
+
+  // Obstacles to avoid (eq. 18-19), kept by pointer (they must outlive the generator). Shapes
+  // other than circles get their distance from `distance`, or from an internal
+  // AnalyticObstacleDistance when it is null. Allocates (call it before walking).
+  void setObstacles(const std::vector<Obstacle>* obstacles,
+                    const ObstacleDistanceOracle* distance = nullptr);
 
   // Standing with the ankles side by side (initial_foot_separation) about `pose` = (x, y, yaw)
   // of the point between them; CoM at rest above it at com_height.
@@ -72,6 +81,7 @@ class PatternGenerator {
   void setStepPose(int step, const Eigen::Vector3d& pose);
   void buildProblem(const Eigen::Vector3d& command);
   void setDoubleSupport(PhaseStructure& phase) const;
+  void selectObstacles();
 
   NmpcModel model_;
   GeneratorSettings settings_;
@@ -81,6 +91,10 @@ class PatternGenerator {
   MpcIterationLog log_;
   NmpcSolveResult last_solve_;
   Footstep last_landing_;
+  const std::vector<Obstacle>* obstacles_ = nullptr;
+  std::unique_ptr<AnalyticObstacleDistance> analytic_distance_;
+  std::vector<Eigen::Vector3d> obstacle_bounds_;  // bounding circle: x, y, radius + margin
+  std::vector<std::pair<double, int>> obstacle_order_;  // scratch, sized once
 
   Eigen::Vector3d com_x_ = Eigen::Vector3d::Zero(), com_y_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d left_ = Eigen::Vector3d::Zero(), right_ = Eigen::Vector3d::Zero();

@@ -4,6 +4,7 @@
 // `wpg run` calls.
 #include <string>
 
+#include "wpg/obstacles.hpp"
 #include "wpg/walk_request.hpp"
 #include "wpg/walk_trajectory.hpp"
 #include "wpg/walking_parameters.hpp"
@@ -18,7 +19,10 @@ struct WalkResult {
   std::string message;  // one line: what went wrong first, empty on success
 };
 
-// Throws std::invalid_argument on invalid parameters or request (validate()).
-WalkResult generateWalk(const WalkingParameters& parameters, const WalkRequest& request);
+// Throws std::invalid_argument on invalid parameters or request (validate()). Obstacles
+// other than circles get their signed distance from `world` (planning/'s FCL world); without
+// one, from libwpg's exact 2-D AnalyticObstacleDistance.
+WalkResult generateWalk(const WalkingParameters& parameters, const WalkRequest& request,
+                        const ObstacleDistanceOracle* world = nullptr);
 
 }  // namespace wpg

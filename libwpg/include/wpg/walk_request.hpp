@@ -6,6 +6,8 @@
 
 #include <Eigen/Core>
 
+#include "wpg/obstacles.hpp"
+
 namespace wpg {
 
 enum class GeneratorAlgorithm {
@@ -31,6 +33,10 @@ struct GeneratorSettings {
   // make the LIPM capturable: after a large push the NMPC keeps finding feasible plans whose
   // CoM diverges; beyond one maximal step (0.4 m for HRP-2) no step can catch it.
   double fall_capture_distance = 0.6;
+  // Obstacle avoidance (eq. 18-19): at most this many obstacles enter the QP at each sample,
+  // the nearest ones whose bounding circle is within obstacle_reach of the support foot [m].
+  int max_obstacles_in_qp = 4;
+  double obstacle_reach = 1.5;
 };
 
 // Command in the robot (free-flyer) frame, held from time t until the next entry.
@@ -51,6 +57,7 @@ struct WalkRequest {
   double duration = 10.0;              // [s] of walking to generate
   std::vector<VelocityCommand> reference;  // sorted by t; empty = stand still
   std::vector<Push> pushes;
+  std::vector<Obstacle> obstacles;     // convex obstacles to keep the steps away from
   double robot_mass = 56.037;          // [kg], converts push forces to accelerations (HRP-2, fact sheet 3.1)
   GeneratorSettings generator;
 

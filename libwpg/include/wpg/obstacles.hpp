@@ -1,0 +1,65 @@
+#pragma once
+// Convex obstacles on the ground for the NMPC's avoidance constraint (paper Sec. III-D,
+// eq. 18-19). libwpg only holds their description; the signed distance of general shapes
+// comes through ObstacleDistanceOracle, which planning/ implements with FCL (one world model
+// for the WPG and the route planner). Circles also have the paper's analytic form.
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace wpg {
+
+enum class ObstacleType { kCircle, kBox, kPolygon };
+const char* obstacleTypeName(ObstacleType type);
+
+struct Obstacle {
+  ObstacleType type = ObstacleType::kCircle;
+  Eigen::Vector2d center = Eigen::Vector2d::Zero();  // circle, box [m]
+  double radius = 0.0;                               // circle [m]
+  Eigen::Vector2d size = Eigen::Vector2d::Zero();    // box: full length along its x, width [m]
+  double yaw = 0.0;                                  // box [rad]
+  std::vector<Eigen::Vector2d> vertices;             // polygon, convex [m]
+  // Security margin: no step centre closer than this to the obstacle (swept volume of the
+  // robot, paper Fig. 8's outer circle) [m].
+  double margin = 0.0;
+
+  // Throws std::invalid_argument naming `key` and what was expected (non-positive radius or
+  // size, negative margin, non-convex or degenerate polygon, non-finite values).
+  void validate(const std::string& key) const;
+  // Vertices of a box or polygon in the world frame (counter-clockwise); empty for a circle.
+  std::vector<Eigen::Vector2d> worldVertices() const;
+};
+
+// Signed distance from a ground point to one obstacle: positive outside, negative inside,
+// with its gradient with respect to the point (a unit vector away from the obstacle).
+class ObstacleDistanceOracle {
+ public:
+  virtual ~ObstacleDistanceOracle() = default;
+  virtual int obstacleCount() const = 0;
+  virtual double signedDistance(int obstacle, const Eigen::Vector2d& point,
+                                Eigen::Vector2d* gradient) const = 0;
+};
+
+}  // namespace wpg
+
+namespace wpg {
+
+// Exact 2-D signed distance to circles and convex polygons, computed in libwpg: used when no
+// world model is given (embedded use) and as an independent check of the FCL world in tests.
+class AnalyticObstacleDistance : public ObstacleDistanceOracle {
+ public:
+  explicit AnalyticObstacleDistance(const std::vector<Obstacle>& obstacles);
+  int obstacleCount() const override { return static_cast<int>(obstacles_.size()); }
+  double signedDistance(int obstacle, const Eigen::Vector2d& point,
+                        Eigen::Vector2d* gradient) const override;
+
+ private:
+  std::vector<Obstacle> obstacles_;
+  std::vector<std::vector<Eigen::Vector2d>> vertices_;  // world, counter-clockwise
+};
+
+// Centre and radius of a circle enclosing the obstacle (cheap reach test).
+void boundingCircle(const Obstacle& obstacle, Eigen::Vector2d* center, double* radius);
+
+}  // namespace wpg
