@@ -220,7 +220,7 @@ TEST(ConvexHull, DropsInteriorCollinearAndDuplicatePoints) {
   ConvexPolygon polygon;
   std::string why;
   ASSERT_TRUE(polygon.setVertices(hull, &why)) << why;
-  for (const Vector2d corner : {Vector2d(0, 0), Vector2d(2, 0), Vector2d(2, 2), Vector2d(0, 2)})
+  for (const Vector2d& corner : {Vector2d(0, 0), Vector2d(2, 0), Vector2d(2, 2), Vector2d(0, 2)})
     EXPECT_TRUE(std::find(hull.begin(), hull.end(), corner) != hull.end());
   // Two feet side by side (the double-support polygon of the standing robot).
   const ConvexPolygon left = ConvexPolygon::rectangle(0.0186, 0.019);

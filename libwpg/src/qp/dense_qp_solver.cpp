@@ -12,9 +12,16 @@
 // about to be added (d = J' n+ = [d1; d2]):
 //   z = J2 d2           primal step direction (change of x per unit of the new multiplier),
 //   r = R^{-1} d1       dual step direction (minus the change of the working-set multipliers).
-// Adding n+ rotates d2 onto its first entry with Givens rotations applied to the columns of
-// J2; R gains the column [d1; |d2|]. Dropping column k of R leaves an upper Hessenberg block
-// that Givens rotations on rows k.. restore; the same rotations act on columns k.. of J.
+// Any orthonormal basis of the free space serves as J2, so each candidate n+ is reduced at
+// once: Givens rotations of the columns of J2 bring d2 onto its first entry, h = |d2|. Then
+// z = h J_q (no product needed), and adding n+ only appends the column [d1; h] to R.
+// Dropping column k of R leaves an upper Hessenberg block that Givens rotations on rows k..
+// restore; the same rotations act on columns k.. of J.
+//
+// Beyond the paper: the most violated row is chosen after scaling by the row norm, dependent
+// rows use a relative test (see QpSettings::dependence_tolerance), and a dependent row whose
+// violation is within rounding of the working set is set aside instead of reported as proof of
+// infeasibility (degenerate vertices).
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -292,15 +299,15 @@ QpStatus DenseQpSolver::solve(const HessianFactor& factor,
     if (x.size() == n && n <= max_n_) x.setZero();
     return QpStatus::kInvalidInput;
   }
-  // lambda_/mu_ are returned as VectorXd of the problem size: resized (allocation) only when
-  // the size differs from the previous solve.
-  if (lambda_.size() != mi) lambda_.resize(mi);
-  if (mu_.size() != me) mu_.resize(me);
+  // lambda_/mu_ keep their capacity; the accessors return the first mi / me entries, so
+  // changing problem sizes never allocate.
+  last_mi_ = mi;
+  last_me_ = me;
   lambda_.setZero();
   mu_.setZero();
 
   // Row norms of C (for scale-invariant selection of the most violated constraint); the same
-  // pass catches non-finite entries of C.
+  // pass catches non-finite entries of C (and rows whose squared norm overflows, > ~1e154).
   row_scale_.head(mi).setZero();
   for (int col = 0; col < n; ++col) row_scale_.head(mi) += C.col(col).cwiseAbs2();
   if (!g.allFinite() || !e.allFinite() || !d.allFinite() || !row_scale_.head(mi).allFinite() ||

@@ -27,7 +27,8 @@ struct HessianFactor {
   Eigen::MatrixXd inverse_factor_transposed;  // n x n upper triangular, L^{-T}
   Eigen::VectorXd scratch;                    // n, internal
   int size = 0;
-  // Returns false (and leaves size = 0) when H is not symmetric positive definite.
+  // Returns false (and leaves size = 0) when H is not symmetric positive definite (numerically:
+  // a Cholesky pivot below the rounding level). Reads the lower triangle of H only.
   bool compute(const Eigen::Ref<const Eigen::MatrixXd>& hessian);
   // Solves H x = b in place using the factor (x := H^{-1} b).
   void solveInPlace(Eigen::Ref<Eigen::VectorXd> b) const;
@@ -46,7 +47,8 @@ class DenseQpSolver {
   DenseQpSolver(int max_variables, int max_equalities, int max_inequalities);
 
   // Solves the QP. E (me x n), e (me), C (mi x n), d (mi) may have zero rows. On kOptimal
-  // x is the minimizer; otherwise x holds the last iterate (never NaN). Does not allocate.
+  // x is the minimizer; otherwise x holds the last iterate (never NaN). Does not allocate
+  // (except that the multiplier vectors are resized when mi or me differ from the last solve).
   QpStatus solve(const HessianFactor& factor, const Eigen::Ref<const Eigen::VectorXd>& g,
                  const Eigen::Ref<const Eigen::MatrixXd>& E,
                  const Eigen::Ref<const Eigen::VectorXd>& e,
@@ -67,8 +69,13 @@ class DenseQpSolver {
   const int* activeInequalities() const { return active_inequalities_.data(); }
   int activeInequalityCount() const { return active_inequality_count_; }
   // Lagrange multipliers: H x + g + E'mu + C'lambda = 0, lambda >= 0, lambda_i (C x - d)_i = 0.
-  const Eigen::VectorXd& inequalityMultipliers() const { return lambda_; }  // size mi of last solve
-  const Eigen::VectorXd& equalityMultipliers() const { return mu_; }        // size me of last solve
+  // Views of size mi / me of the last solve (storage sized by the capacities: no allocation).
+  Eigen::VectorBlock<const Eigen::VectorXd> inequalityMultipliers() const {
+    return lambda_.head(last_mi_);
+  }
+  Eigen::VectorBlock<const Eigen::VectorXd> equalityMultipliers() const {
+    return mu_.head(last_me_);
+  }
   double objective() const { return objective_; }
   // How many of the guessed inequality rows (setActiveSetGuess) were still in the working set
   // when the dual iterations started (linearly dependent ones and ones with negative
@@ -98,7 +105,8 @@ class DenseQpSolver {
   int active_inequality_count_ = 0;
   Eigen::VectorXi guess_;                // max_mi
   int guess_count_ = 0;
-  Eigen::VectorXd lambda_, mu_;          // resized only when mi / me change between solves
+  Eigen::VectorXd lambda_, mu_;          // capacity-sized; the last solve used the heads
+  int last_mi_ = 0, last_me_ = 0;
   // Workspace (all sized in the constructor from the capacities; see dense_qp_solver.cpp).
   // The working set is stored in Goldfarb-Idnani form n_j'x >= b_j (n_j = -row, b_j = -rhs).
   Eigen::MatrixXd J_;             // max_n x max_n: J = L^{-T} Q, [J1 | J2], J2 spans the free space

@@ -1,0 +1,291 @@
+// The NMPC hot loop does not allocate: a warmed-up PatternGenerator::update() + advance()
+// cycle is run with (a) Eigen's runtime malloc guard when wpg_core is built with
+// EIGEN_RUNTIME_NO_MALLOC and (b) a process-wide count of malloc / calloc / realloc calls.
+//
+// The counter interposes the C allocator of the executable with definitions forwarding to
+// glibc's __libc_* entry points (malloc to __libc_memalign with malloc's own alignment) (operator new of libstdc++ and Eigen's aligned_malloc go
+// through malloc). The definitions are weak because another test TU of the same executable
+// may define its own malloc (test_dense_qp_solver.cpp does: a strong malloc forwarding to
+// __libc_malloc), which then wins at link time. To still see every malloc in that case, this
+// file also defines (weak) __libc_malloc, which such a forwarding malloc calls: it counts
+// and forwards to glibc's __libc_memalign with the default alignment, the same allocator
+// path (libc's internal calls never go through these symbols). CounterSeesAllocations checks
+// that the counter sees a plain malloc and an Eigen allocation whichever malloc is linked.
+//
+// To find the caller of an unexpected allocation:
+//   gdb -batch -ex 'break wpg_test_allocation_seen' -ex run -ex bt
+//       --args build-ut/tests/wpg_libwpg_tests --gtest_filter='NmpcAllocation.*'
+// (one command line).
+#include <gtest/gtest.h>
+
+#include <Eigen/Core>
+#include <cstddef>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include "wpg/lipm_prediction.hpp"
+#include "wpg/pattern_generator.hpp"
+
+// Not with sanitizers, which replace the allocator themselves.
+#if defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(memory_sanitizer)
+#define WPG_ALLOCATION_TEST_SANITIZED 1
+#endif
+#endif
+#if defined(__SANITIZE_ADDRESS__)
+#define WPG_ALLOCATION_TEST_SANITIZED 1
+#endif
+#if defined(__GLIBC__) && !defined(WPG_ALLOCATION_TEST_SANITIZED)
+#define WPG_ALLOCATION_COUNTER 1
+extern "C" {
+void* __libc_malloc(std::size_t size);
+void* __libc_calloc(std::size_t count, std::size_t size);
+void* __libc_realloc(void* pointer, std::size_t size);
+void* __libc_memalign(std::size_t alignment, std::size_t size);
+}
+
+namespace {
+volatile bool g_counting = false;
+volatile long g_allocations = 0;
+}  // namespace
+
+// Break here in a debugger to see who allocates inside a counted region.
+extern "C" __attribute__((noinline, used)) void wpg_test_allocation_seen() {
+  asm volatile("" ::: "memory");
+}
+
+namespace {
+inline void countAllocation() {
+  if (g_counting) {
+    g_allocations = g_allocations + 1;
+    wpg_test_allocation_seen();
+  }
+}
+}  // namespace
+
+extern "C" __attribute__((weak)) void* malloc(std::size_t size) {
+  countAllocation();
+  return __libc_memalign(alignof(std::max_align_t), size);
+}
+extern "C" __attribute__((weak)) void* calloc(std::size_t count, std::size_t size) {
+  countAllocation();
+  return __libc_calloc(count, size);
+}
+extern "C" __attribute__((weak)) void* realloc(void* pointer, std::size_t size) {
+  countAllocation();
+  return __libc_realloc(pointer, size);
+}
+// Reached when another TU's malloc (forwarding to __libc_malloc) is the one linked.
+extern "C" __attribute__((weak)) void* __libc_malloc(std::size_t size) {
+  countAllocation();
+  return __libc_memalign(alignof(std::max_align_t), size);
+}
+#endif
+
+namespace {
+
+using Eigen::Vector3d;
+using wpg::GeneratorAlgorithm;
+using wpg::GeneratorSettings;
+using wpg::PatternGenerator;
+using wpg::WalkingParameters;
+
+struct Counts {
+  long allocations = 0;  // malloc / calloc / realloc calls
+};
+
+void startCounting() {
+#ifdef EIGEN_RUNTIME_NO_MALLOC
+  Eigen::internal::set_is_malloc_allowed(false);
+#endif
+#if WPG_ALLOCATION_COUNTER
+  g_allocations = 0;
+  g_counting = true;
+#endif
+}
+
+Counts stopCounting() {
+  Counts counts;
+#if WPG_ALLOCATION_COUNTER
+  g_counting = false;
+  counts.allocations = g_allocations;
+#endif
+#ifdef EIGEN_RUNTIME_NO_MALLOC
+  Eigen::internal::set_is_malloc_allowed(true);
+#endif
+  return counts;
+}
+
+// One NMPC sample: solve, integrate the CoM over the sampling period at the control period
+// with the planned jerk, end the period.
+void runSample(PatternGenerator& generator, double t, const Vector3d& command) {
+  generator.update(t, command);
+  Vector3d com_x = generator.comX(), com_y = generator.comY();
+  const auto& plan = generator.plan();
+  for (int i = 0; i < 20; ++i) {
+    wpg::integrateJerk(com_x, plan.jerk_x, 0.005);
+    wpg::integrateJerk(com_y, plan.jerk_y, 0.005);
+  }
+  generator.advance(com_x, com_y);
+}
+
+struct Segment {
+  int samples;
+  Vector3d command;
+};
+
+struct LoopResult {
+  Counts counts;
+  int patterns_seen = 0;  // bit mask of Hessian patterns solved in the counted region
+  int non_solved = 0;
+  std::string where;      // samples that allocated: "sample (pattern, equality rows): count"
+};
+
+long allocationsSoFar() {
+#if WPG_ALLOCATION_COUNTER
+  return g_allocations;
+#else
+  return 0;
+#endif
+}
+
+// Warms up with `warmup`, then counts allocations over `counted`.
+LoopResult countOverLoop(const WalkingParameters& w, GeneratorAlgorithm algorithm,
+                         const std::vector<Segment>& warmup, const std::vector<Segment>& counted) {
+  GeneratorSettings settings;
+  settings.algorithm = algorithm;
+  PatternGenerator generator(w, settings);
+  int k = 0;
+  for (const Segment& s : warmup)
+    for (int i = 0; i < s.samples; ++i, ++k) runSample(generator, k * w.sampling_period, s.command);
+  LoopResult result;
+  constexpr int kMax = 512;
+  int statuses[kMax] = {0}, patterns[kMax] = {0}, equalities[kMax] = {0};
+  long allocations[kMax] = {0};
+  int n = 0;
+  startCounting();
+  for (const Segment& s : counted) {
+    for (int i = 0; i < s.samples; ++i, ++k, ++n) {
+      const long before = allocationsSoFar();
+      runSample(generator, k * w.sampling_period, s.command);
+      if (n < kMax) {
+        allocations[n] = allocationsSoFar() - before;
+        statuses[n] = static_cast<int>(generator.lastSolve().status);
+        patterns[n] = generator.problem().phase.pattern;
+        equalities[n] = static_cast<int>(generator.workspace().solver.equalityMultipliers().size());
+      }
+    }
+  }
+  result.counts = stopCounting();
+  for (int i = 0; i < n && i < kMax; ++i) {
+    result.patterns_seen |= 1 << patterns[i];
+    if (statuses[i] != 0) ++result.non_solved;
+    if (allocations[i] > 0 && result.where.size() < 400) {
+      result.where += " " + std::to_string(i) + " (pattern " + std::to_string(patterns[i]) +
+                      ", me " + std::to_string(equalities[i]) + "): " +
+                      std::to_string(allocations[i]) + ";";
+    }
+  }
+  return result;
+}
+
+bool counterAvailable() {
+#if WPG_ALLOCATION_COUNTER
+  return true;
+#else
+  return false;
+#endif
+}
+
+void expectNoAllocation(const LoopResult& r, const char* what) {
+  EXPECT_EQ(r.counts.allocations, 0) << what << ": malloc/calloc/realloc calls in the hot loop "
+                                     << "(run under gdb, break wpg_test_allocation_seen); "
+                                     << "samples that allocated:" << r.where;
+  EXPECT_EQ(r.non_solved, 0) << what << ": some samples were not solved";
+}
+
+TEST(NmpcAllocation, CounterSeesAllocations) {
+  if (!counterAvailable()) GTEST_SKIP() << "the allocation counter needs glibc (and no sanitizer)";
+  // Positive controls: the counter is live for a plain malloc, an Eigen heap object and a
+  // std container, whichever malloc definition the executable links.
+  void* (*volatile allocate)(std::size_t) = &std::malloc;
+  startCounting();
+  void* p = allocate(40);
+  const Counts plain = stopCounting();
+  std::free(p);
+  EXPECT_GT(plain.allocations, 0);
+
+  static Eigen::VectorXd* eigen_sink = nullptr;
+  static std::vector<double>* std_sink = nullptr;
+  eigen_sink = new Eigen::VectorXd;
+  startCounting();
+  eigen_sink->resize(1000);
+  const Counts eigen = stopCounting();
+  EXPECT_GT(eigen.allocations, 0);
+  startCounting();
+  std_sink = new std::vector<double>(100, 1.0);
+  const Counts container = stopCounting();
+  EXPECT_GT(container.allocations, 0);
+  delete eigen_sink;
+  delete std_sink;
+}
+
+const std::vector<int> kAllWalkingPatterns{0, 1, 2, 3, 4, 5, 6, 7};
+
+int maskOf(const std::vector<int>& patterns) {
+  int mask = 0;
+  for (int p : patterns) mask |= 1 << p;
+  return mask;
+}
+
+TEST(NmpcAllocation, NmpcWalkForward) {
+  if (!counterAvailable()) GTEST_SKIP() << "the allocation counter needs glibc (and no sanitizer)";
+  const WalkingParameters w;
+  const Vector3d forward(0.2, 0.0, 0.0);
+  const LoopResult r =
+      countOverLoop(w, GeneratorAlgorithm::kNmpc, {{30, forward}}, {{40, forward}});
+  EXPECT_EQ(r.patterns_seen & maskOf(kAllWalkingPatterns), maskOf(kAllWalkingPatterns));
+  expectNoAllocation(r, "NMPC, walk forward");
+}
+
+TEST(NmpcAllocation, NmpcCurve) {
+  if (!counterAvailable()) GTEST_SKIP() << "the allocation counter needs glibc (and no sanitizer)";
+  WalkingParameters w;
+  w.max_step_yaw_change = 0.17;
+  const Vector3d curve(0.2, 0.0, 0.2);
+  const LoopResult r = countOverLoop(w, GeneratorAlgorithm::kNmpc, {{30, curve}}, {{40, curve}});
+  EXPECT_EQ(r.patterns_seen & maskOf(kAllWalkingPatterns), maskOf(kAllWalkingPatterns));
+  expectNoAllocation(r, "NMPC, curve");
+}
+
+TEST(NmpcAllocation, LmpcWalkForwardAndCurve) {
+  if (!counterAvailable()) GTEST_SKIP() << "the allocation counter needs glibc (and no sanitizer)";
+  WalkingParameters w;
+  w.max_step_yaw_change = 0.17;
+  const Vector3d forward(0.2, 0.0, 0.0), curve(0.2, 0.0, 0.2);
+  const LoopResult a = countOverLoop(w, GeneratorAlgorithm::kLmpc, {{30, forward}}, {{40, forward}});
+  expectNoAllocation(a, "LMPC, walk forward");
+  const LoopResult b = countOverLoop(w, GeneratorAlgorithm::kLmpc, {{30, curve}}, {{40, curve}});
+  expectNoAllocation(b, "LMPC, curve");
+  EXPECT_EQ(b.patterns_seen & maskOf(kAllWalkingPatterns), maskOf(kAllWalkingPatterns));
+}
+
+// Standing, starting, stopping and the standing pattern: the warm-up runs the same cycle once.
+TEST(NmpcAllocation, StartStopCycle) {
+  if (!counterAvailable()) GTEST_SKIP() << "the allocation counter needs glibc (and no sanitizer)";
+  WalkingParameters w;
+  w.max_step_yaw_change = 0.17;
+  const Vector3d zero = Vector3d::Zero(), forward(0.2, 0.0, 0.0), curve(0.2, 0.0, 0.2);
+  const std::vector<Segment> cycle{{5, zero}, {25, forward}, {10, curve}, {30, zero}};
+  for (GeneratorAlgorithm algorithm : {GeneratorAlgorithm::kNmpc, GeneratorAlgorithm::kLmpc}) {
+    const LoopResult r = countOverLoop(w, algorithm, cycle, cycle);
+    const int all = (1 << (w.stepSamples() + 1)) - 1;  // walking 0..S-1 and standing S
+    EXPECT_EQ(r.patterns_seen, all);
+    expectNoAllocation(r, algorithm == GeneratorAlgorithm::kNmpc ? "NMPC start/stop"
+                                                                 : "LMPC start/stop");
+  }
+}
+
+}  // namespace

@@ -1,0 +1,445 @@
+// Tests of the NMPC constraints g(U) <= 0 (paper eq. 9-17) and of their exact Jacobian:
+// central finite differences at random points of every walking phase, the CoM-state term of
+// the yaw derivative of the CoP rows, and g itself against a direct geometric computation.
+#include <gtest/gtest.h>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "wpg/convex_polygon.hpp"
+#include "wpg/nmpc.hpp"
+#include "wpg/obstacles.hpp"
+#include "wpg/walking_parameters.hpp"
+
+namespace {
+
+using Eigen::MatrixXd;
+using Eigen::Vector2d;
+using Eigen::Vector3d;
+using Eigen::VectorXd;
+using wpg::FootSide;
+using wpg::NmpcLayout;
+using wpg::NmpcModel;
+using wpg::NmpcProblem;
+using wpg::WalkingParameters;
+
+struct Rng {
+  explicit Rng(unsigned seed) : engine(seed) {}
+  double uniform(double lo, double hi) {
+    return std::uniform_real_distribution<double>(lo, hi)(engine);
+  }
+  double normal() { return std::normal_distribution<double>(0.0, 1.0)(engine); }
+  bool chance(double p) { return uniform(0.0, 1.0) < p; }
+  // Yaws over the whole circle and beyond (+-3.5 rad), with extra weight on large ones.
+  double yaw() { return chance(0.3) ? (chance(0.5) ? 1.0 : -1.0) * uniform(2.8, 3.5) : uniform(-3.5, 3.5); }
+  std::mt19937 engine;
+};
+
+enum class FixedMode { kNone, kFirst, kRandom };
+
+NmpcProblem randomProblem(const NmpcModel& model, int pattern, FootSide first_side, FixedMode mode,
+                          Rng& rng) {
+  const NmpcLayout& L = model.layout();
+  const WalkingParameters& w = model.parameters();
+  NmpcProblem problem = model.makeProblem();
+  auto& phase = problem.phase;
+  phase.pattern = pattern;
+  phase.standing = pattern == model.standingPattern();
+  model.rowStepsOf(pattern, phase.row_step);
+  phase.remaining_samples = phase.standing ? L.horizon : pattern;
+  phase.first_step_side = first_side;
+  phase.support_pose = Vector3d(rng.uniform(-2, 2), rng.uniform(-2, 2), rng.yaw());
+  phase.support_half_length = w.copHalfLength();
+  phase.support_half_width =
+      phase.standing ? 0.5 * w.initial_foot_separation + w.copHalfWidth() : w.copHalfWidth();
+  for (int i = 0; i < L.steps; ++i) {
+    bool fixed = false;
+    if (mode == FixedMode::kFirst) fixed = i == 0;
+    if (mode == FixedMode::kRandom) fixed = rng.chance(0.5);
+    phase.step_fixed(i) = fixed ? 1 : 0;
+    phase.fixed_step_pose.col(i) =
+        Vector3d(rng.uniform(-2, 2), rng.uniform(-2, 2), rng.yaw());
+  }
+  problem.com_x = Vector3d(phase.support_pose.x() + rng.uniform(-0.5, 0.5), rng.uniform(-1, 1),
+                           rng.uniform(-4, 4));
+  problem.com_y = Vector3d(phase.support_pose.y() + rng.uniform(-0.5, 0.5), rng.uniform(-1, 1),
+                           rng.uniform(-4, 4));
+  for (int j = 0; j < L.horizon; ++j) {
+    problem.velocity_x(j) = rng.uniform(-0.4, 0.4);
+    problem.velocity_y(j) = rng.uniform(-0.3, 0.3);
+  }
+  for (int i = 0; i < L.steps; ++i) problem.yaw_reference(i) = rng.yaw();
+  return problem;
+}
+
+VectorXd randomU(const NmpcModel& model, const NmpcProblem& problem, Rng& rng) {
+  const NmpcLayout& L = model.layout();
+  VectorXd U(L.variableCount());
+  for (int j = 0; j < L.horizon; ++j) {
+    U(L.jerkX() + j) = 3.0 * rng.normal();
+    U(L.jerkY() + j) = 3.0 * rng.normal();
+  }
+  for (int i = 0; i < L.steps; ++i) {
+    U(L.stepX() + i) = problem.phase.support_pose.x() + rng.uniform(-0.8, 0.8);
+    U(L.stepY() + i) = problem.phase.support_pose.y() + rng.uniform(-0.8, 0.8);
+    U(L.stepYaw() + i) = rng.yaw();
+  }
+  return U;
+}
+
+struct JacobianCheck {
+  double worst = 0.0;  // max |J - Jfd| / max(1, |J|)
+  int worst_row = -1, worst_col = -1;
+};
+
+JacobianCheck compareWithFiniteDifferences(const NmpcModel& model, const NmpcProblem& problem,
+                                           const VectorXd& U, MatrixXd* J_out = nullptr) {
+  const NmpcLayout& L = model.layout();
+  const int n = L.variableCount(), m = L.inequalityCount();
+  VectorXd g(m), gp(m), gm(m);
+  MatrixXd J(m, n);
+  J.setConstant(12345.0);  // evaluateConstraints must overwrite every entry
+  wpg::evaluateConstraints(model, problem, U, g, &J);
+  const double h = 1e-6;
+  JacobianCheck check;
+  for (int k = 0; k < n; ++k) {
+    VectorXd Up = U, Um = U;
+    Up(k) += h;
+    Um(k) -= h;
+    wpg::evaluateConstraints(model, problem, Up, gp, nullptr);
+    wpg::evaluateConstraints(model, problem, Um, gm, nullptr);
+    const VectorXd fd = (gp - gm) / (2 * h);
+    for (int r = 0; r < m; ++r) {
+      const double err = std::abs(J(r, k) - fd(r)) / std::max(1.0, std::abs(J(r, k)));
+      if (err > check.worst) check = {err, r, k};
+    }
+  }
+  if (J_out) *J_out = J;
+  return check;
+}
+
+std::string describeRow(const NmpcLayout& L, int row) {
+  const int cop = NmpcLayout::kCopEdges * L.horizon;
+  const int feas = L.feasibility_edges * L.steps;
+  if (row < 0) return "none";
+  if (row < cop) return "CoP sample " + std::to_string(row / 4) + " edge " + std::to_string(row % 4);
+  if (row < cop + feas)
+    return "feasibility step " + std::to_string((row - cop) / L.feasibility_edges) + " edge " +
+           std::to_string((row - cop) % L.feasibility_edges);
+  if (row < L.firstObstacleRow()) return "yaw step " + std::to_string((row - cop - feas) / 2);
+  return "obstacle step " + std::to_string((row - L.firstObstacleRow()) / std::max(1, L.obstacle_slots)) +
+         " slot " + std::to_string((row - L.firstObstacleRow()) % std::max(1, L.obstacle_slots));
+}
+
+TEST(NmpcJacobian, MatchesCentralFiniteDifferencesEverywhere) {
+  WalkingParameters w;
+  w.max_step_yaw_change = 0.17;
+  const NmpcModel model(w);
+  const NmpcLayout& L = model.layout();
+  ASSERT_EQ(model.patternCount(), w.stepSamples() + 1);
+  Rng rng(2024);
+  int points = 0;
+  double worst = 0.0;
+  for (int pattern = 0; pattern < model.patternCount(); ++pattern) {
+    for (FootSide side : {FootSide::kLeft, FootSide::kRight}) {
+      for (FixedMode mode : {FixedMode::kNone, FixedMode::kFirst, FixedMode::kRandom}) {
+        for (int trial = 0; trial < 4; ++trial) {
+          const NmpcProblem problem = randomProblem(model, pattern, side, mode, rng);
+          const VectorXd U = randomU(model, problem, rng);
+          const JacobianCheck check = compareWithFiniteDifferences(model, problem, U);
+          ++points;
+          worst = std::max(worst, check.worst);
+          EXPECT_LE(check.worst, 1e-6)
+              << "pattern " << pattern << " side " << static_cast<int>(side) << " mode "
+              << static_cast<int>(mode) << " trial " << trial << ": row " << check.worst_row
+              << " (" << describeRow(L, check.worst_row) << "), column " << check.worst_col;
+        }
+      }
+    }
+  }
+  EXPECT_GE(points, 200);
+  ::testing::Test::RecordProperty("worst_relative_error", std::to_string(worst));
+}
+
+// Obstacle rows (eq. 18-19): circles in the paper's squared form, a box and a polygon through
+// the analytic signed distance; steps kept away from the obstacle boundaries and from the
+// polygon's medial axis regions where the distance is not differentiable (outside only).
+TEST(NmpcJacobian, ObstacleRowsMatchFiniteDifferences) {
+  WalkingParameters w;
+  w.max_step_yaw_change = 0.17;
+  const int slots = 4;
+  const NmpcModel model(w, slots);
+  const NmpcLayout& L = model.layout();
+  ASSERT_EQ(L.obstacle_slots, slots);
+  ASSERT_EQ(L.inequalityCount(), 4 * L.horizon + L.feasibility_edges * L.steps + 2 * L.steps + slots * L.steps);
+  std::vector<wpg::Obstacle> obstacles(3);
+  obstacles[0].type = wpg::ObstacleType::kCircle;
+  obstacles[0].center = Vector2d(0.6, 0.2);
+  obstacles[0].radius = 0.15;
+  obstacles[0].margin = 0.1;
+  obstacles[1].type = wpg::ObstacleType::kBox;
+  obstacles[1].center = Vector2d(-0.5, -0.4);
+  obstacles[1].size = Vector2d(0.4, 0.2);
+  obstacles[1].yaw = 0.6;
+  obstacles[1].margin = 0.05;
+  obstacles[2].type = wpg::ObstacleType::kPolygon;
+  obstacles[2].vertices = {{0.3, -0.9}, {0.7, -0.8}, {0.5, -0.5}};
+  obstacles[2].margin = 0.02;
+  const wpg::AnalyticObstacleDistance distance(obstacles);
+  Rng rng(31);
+  int points = 0;
+  for (int pattern = 0; pattern < model.patternCount(); ++pattern) {
+    for (int trial = 0; trial < 6; ++trial) {
+      NmpcProblem problem = randomProblem(model, pattern, trial % 2 ? FootSide::kLeft : FootSide::kRight,
+                                          trial < 2 ? FixedMode::kNone : FixedMode::kRandom, rng);
+      problem.phase.support_pose.head<2>().setZero();
+      problem.obstacles = &obstacles;
+      problem.distance = &distance;
+      problem.obstacle_slot.resize(slots);
+      problem.obstacle_slot << 0, 1, -1, 2;
+      VectorXd U = randomU(model, problem, rng);
+      // Steps at least 2 cm away from every obstacle boundary.
+      for (int i = 0; i < L.steps; ++i) {
+        for (int attempt = 0;; ++attempt) {
+          ASSERT_LT(attempt, 1000);
+          const Vector2d F(rng.uniform(-1.2, 1.2), rng.uniform(-1.2, 1.2));
+          bool clear = true;
+          for (int o = 0; o < 3; ++o)
+            if (distance.signedDistance(o, F, nullptr) < 0.02) clear = false;
+          if (!clear) continue;
+          U(L.stepX() + i) = F.x();
+          U(L.stepY() + i) = F.y();
+          break;
+        }
+      }
+      const JacobianCheck check = compareWithFiniteDifferences(model, problem, U);
+      ++points;
+      EXPECT_LE(check.worst, 1e-6) << "pattern " << pattern << " trial " << trial << ": row "
+                                   << check.worst_row << " (" << describeRow(L, check.worst_row)
+                                   << "), column " << check.worst_col;
+      // Values: the circle's squared form, the others' margin - distance; -1 for the empty
+      // slot and for fixed steps.
+      VectorXd g(L.inequalityCount());
+      wpg::evaluateConstraints(model, problem, U, g, nullptr);
+      for (int i = 0; i < L.steps; ++i) {
+        const Vector2d F(U(L.stepX() + i), U(L.stepY() + i));
+        if (problem.phase.step_fixed(i)) {
+          for (int k = 0; k < slots; ++k) EXPECT_EQ(g(L.obstacleRow(i, k)), -1.0);
+          continue;
+        }
+        const double r = obstacles[0].radius + obstacles[0].margin;
+        EXPECT_NEAR(g(L.obstacleRow(i, 0)), r * r - (F - obstacles[0].center).squaredNorm(), 1e-12);
+        EXPECT_NEAR(g(L.obstacleRow(i, 1)), 0.05 - distance.signedDistance(1, F, nullptr), 1e-12);
+        EXPECT_EQ(g(L.obstacleRow(i, 2)), -1.0);
+        EXPECT_NEAR(g(L.obstacleRow(i, 3)), 0.02 - distance.signedDistance(2, F, nullptr), 1e-12);
+      }
+    }
+  }
+  EXPECT_GE(points, 50);
+}
+
+TEST(NmpcJacobian, FixedStepRowsAreInactive) {
+  const WalkingParameters w;
+  const NmpcModel model(w);
+  const NmpcLayout& L = model.layout();
+  Rng rng(5);
+  for (int pattern = 0; pattern < model.patternCount(); ++pattern) {
+    const NmpcProblem problem = randomProblem(model, pattern, FootSide::kRight, FixedMode::kFirst, rng);
+    const VectorXd U = randomU(model, problem, rng);
+    VectorXd g(L.inequalityCount());
+    MatrixXd J(L.inequalityCount(), L.variableCount());
+    J.setConstant(7.0);
+    wpg::evaluateConstraints(model, problem, U, g, &J);
+    for (int e = 0; e < L.feasibility_edges; ++e) {
+      EXPECT_EQ(g(L.feasibilityRow(0, e)), -1.0);
+      EXPECT_EQ(J.row(L.feasibilityRow(0, e)).cwiseAbs().maxCoeff(), 0.0);
+    }
+    for (bool upper : {true, false}) {
+      EXPECT_EQ(g(L.yawRow(0, upper)), -1.0);
+      EXPECT_EQ(J.row(L.yawRow(0, upper)).cwiseAbs().maxCoeff(), 0.0);
+    }
+    // Step 2 stays free: its rows are active and depend on step 1's pose (its predecessor).
+    EXPECT_NE(J(L.yawRow(1, true), L.stepYaw() + 0), 0.0);
+    EXPECT_NE(J(L.yawRow(1, true), L.stepYaw() + 1), 0.0);
+  }
+}
+
+// The yaw derivative of a CoP row, dg/dtheta = a' R'(theta) (z_j - f), depends on the whole
+// CoP z_j = Pzs c_hat + Pzu jerks, including the current CoM state term Pzs c_hat.
+TEST(NmpcJacobian, CopYawDerivativeIncludesTheComStateTerm) {
+  const WalkingParameters w;
+  const NmpcModel model(w);
+  const NmpcLayout& L = model.layout();
+  const wpg::LipmPrediction& P = model.prediction();
+  Rng rng(9);
+  NmpcProblem problem = randomProblem(model, 0, FootSide::kLeft, FixedMode::kNone, rng);
+  VectorXd U = randomU(model, problem, rng);
+  const double yaw = 0.7;
+  U(L.stepYaw() + 0) = yaw;  // pattern 0: sample 1 is on step 1
+  ASSERT_EQ(problem.phase.row_step(0), 1);
+  const int m = L.inequalityCount(), n = L.variableCount();
+  VectorXd g(m);
+  MatrixXd J0(m, n), J1(m, n), J2(m, n);
+  wpg::evaluateConstraints(model, problem, U, g, &J0);
+
+  const int col = L.stepYaw() + 0;
+  const int j = 0;  // first CoP sample
+  const double s = std::sin(yaw), c = std::cos(yaw);
+  // Edge 0 (normal +x in the foot frame): g = c dx + s dy - b, dg/dtheta = -s dx + c dy.
+  const double delta = 0.1;
+  NmpcProblem moved_x = problem;
+  moved_x.com_x(0) += delta;  // z_j moves by Pzs(j, 0) delta = delta along x
+  wpg::evaluateConstraints(model, moved_x, U, g, &J1);
+  const double change_x = J1(L.copRow(j, 0), col) - J0(L.copRow(j, 0), col);
+  EXPECT_GT(std::abs(change_x), 0.05) << "the yaw column ignores the CoM position";
+  EXPECT_NEAR(change_x, -s * P.cop_state(j, 0) * delta, 1e-12);
+
+  NmpcProblem moved_y = problem;
+  moved_y.com_y(1) += delta;  // a CoM velocity change moves z_j by Pzs(j, 1) delta along y
+  wpg::evaluateConstraints(model, moved_y, U, g, &J2);
+  const double change_y = J2(L.copRow(j, 0), col) - J0(L.copRow(j, 0), col);
+  EXPECT_GT(std::abs(change_y), 1e-3) << "the yaw column ignores the CoM velocity";
+  EXPECT_NEAR(change_y, c * P.cop_state(j, 1) * delta, 1e-12);
+
+  // And the full value: a' R'(theta) (Pzs c_hat + Pzu jerks - f) on every edge of every sample
+  // on step 1.
+  for (int jj = 0; jj < L.horizon; ++jj) {
+    if (problem.phase.row_step(jj) != 1) continue;
+    const double zx = P.cop_state.row(jj).dot(problem.com_x) +
+                      P.cop_jerk.row(jj).dot(U.segment(L.jerkX(), L.horizon));
+    const double zy = P.cop_state.row(jj).dot(problem.com_y) +
+                      P.cop_jerk.row(jj).dot(U.segment(L.jerkY(), L.horizon));
+    const double dx = zx - U(L.stepX()), dy = zy - U(L.stepY());
+    // Foot-frame coordinates (lx, ly) = R(theta)(d); edges +lx, -lx, +ly, -ly.
+    const double dlx = -s * dx + c * dy, dly = -c * dx - s * dy;
+    const double expected[4] = {dlx, -dlx, dly, -dly};
+    for (int e = 0; e < 4; ++e)
+      EXPECT_NEAR(J0(L.copRow(jj, e), col), expected[e], 1e-12) << "sample " << jj << " edge " << e;
+    // Without the state term the value would differ (the state term is not small here).
+    const double zx_jerk_only = P.cop_jerk.row(jj).dot(U.segment(L.jerkX(), L.horizon));
+    const double zy_jerk_only = P.cop_jerk.row(jj).dot(U.segment(L.jerkY(), L.horizon));
+    const double wrong = -s * (zx_jerk_only - U(L.stepX())) + c * (zy_jerk_only - U(L.stepY()));
+    EXPECT_GT(std::abs(J0(L.copRow(jj, 0), col) - wrong), 1e-3);
+  }
+}
+
+// g(U) against a straightforward computation: the CoP from the prediction matrices, rotated
+// into the support foot frame, compared with the rectangle; the step in the previous foot's
+// frame compared with the feasibility polygon; the yaw difference with its bound.
+TEST(NmpcConstraints, ValuesMatchDirectGeometry) {
+  WalkingParameters w;
+  w.max_step_yaw_change = 0.17;
+  const NmpcModel model(w);
+  const NmpcLayout& L = model.layout();
+  const wpg::LipmPrediction& P = model.prediction();
+  wpg::ConvexPolygon feasibility[2];
+  ASSERT_TRUE(feasibility[0].setVertices(w.feasibilityVertices(FootSide::kLeft)));
+  ASSERT_TRUE(feasibility[1].setVertices(w.feasibilityVertices(FootSide::kRight)));
+  Rng rng(77);
+  for (int pattern = 0; pattern < model.patternCount(); ++pattern) {
+    for (FootSide side : {FootSide::kLeft, FootSide::kRight}) {
+      const NmpcProblem problem = randomProblem(model, pattern, side, FixedMode::kNone, rng);
+      const VectorXd U = randomU(model, problem, rng);
+      VectorXd g(L.inequalityCount());
+      wpg::evaluateConstraints(model, problem, U, g, nullptr);
+      const auto& phase = problem.phase;
+      const VectorXd zx = P.cop_state * problem.com_x + P.cop_jerk * U.segment(L.jerkX(), L.horizon);
+      const VectorXd zy = P.cop_state * problem.com_y + P.cop_jerk * U.segment(L.jerkY(), L.horizon);
+      for (int j = 0; j < L.horizon; ++j) {
+        const int step = phase.row_step(j) - 1;
+        const Vector3d foot = step < 0 ? phase.support_pose
+                                       : Vector3d(U(L.stepX() + step), U(L.stepY() + step),
+                                                  U(L.stepYaw() + step));
+        const double hl = step < 0 ? phase.support_half_length : w.copHalfLength();
+        const double hw = step < 0 ? phase.support_half_width : w.copHalfWidth();
+        const Eigen::Rotation2Dd R(foot.z());
+        const Vector2d local = R.inverse() * (Vector2d(zx(j), zy(j)) - foot.head<2>());
+        const double expected[4] = {local.x() - hl, -local.x() - hl, local.y() - hw, -local.y() - hw};
+        for (int e = 0; e < 4; ++e)
+          EXPECT_NEAR(g(L.copRow(j, e)), expected[e], 1e-12)
+              << "pattern " << pattern << " sample " << j << " edge " << e;
+        // Inside the rectangle iff every row is <= 0.
+        const bool inside = std::abs(local.x()) <= hl && std::abs(local.y()) <= hw;
+        const double worst = g.segment(L.copRow(j, 0), 4).maxCoeff();
+        EXPECT_EQ(inside, worst <= 0.0);
+      }
+      for (int i = 0; i < L.steps; ++i) {
+        const Vector3d prev = i == 0 ? phase.support_pose
+                                     : Vector3d(U(L.stepX() + i - 1), U(L.stepY() + i - 1),
+                                                U(L.stepYaw() + i - 1));
+        const Vector3d step(U(L.stepX() + i), U(L.stepY() + i), U(L.stepYaw() + i));
+        const Eigen::Rotation2Dd R(prev.z());
+        const Vector2d local = R.inverse() * (step.head<2>() - prev.head<2>());
+        const auto& polygon = feasibility[phase.stepSide(i) == FootSide::kLeft ? 0 : 1];
+        ASSERT_EQ(polygon.edgeCount(), L.feasibility_edges);
+        double worst = -1e300;
+        for (int e = 0; e < L.feasibility_edges; ++e) worst = std::max(worst, g(L.feasibilityRow(i, e)));
+        EXPECT_NEAR(worst, polygon.violation(local), 1e-12) << "pattern " << pattern << " step " << i;
+        const double change = step.z() - prev.z();
+        EXPECT_NEAR(g(L.yawRow(i, true)), change - w.max_step_yaw_change, 1e-12);
+        EXPECT_NEAR(g(L.yawRow(i, false)), -change - w.max_step_yaw_change, 1e-12);
+      }
+    }
+  }
+}
+
+// Known geometry, to pin the rotation direction: a foot turned by +90 degrees (toes along
+// world +y). A CoP 1 cm in front of the ankle (world +y) touches the front edge (+x of the
+// foot) and not the side edges; a left step 0.3 m to the foot's left (world -x) is feasible.
+TEST(NmpcConstraints, RotationDirectionOnKnownGeometry) {
+  const WalkingParameters w;
+  const NmpcModel model(w);
+  const NmpcLayout& L = model.layout();
+  NmpcProblem problem = model.makeProblem();
+  auto& phase = problem.phase;
+  phase.pattern = 3;
+  model.rowStepsOf(3, phase.row_step);
+  phase.remaining_samples = 3;
+  phase.first_step_side = FootSide::kLeft;
+  phase.support_pose = Vector3d(1.0, 2.0, M_PI / 2);
+  phase.support_half_length = w.copHalfLength();
+  phase.support_half_width = w.copHalfWidth();
+  const double offset = 0.01;
+  problem.com_x = Vector3d(1.0, 0.0, 0.0);           // at rest: z = c for every sample
+  problem.com_y = Vector3d(2.0 + offset, 0.0, 0.0);
+  VectorXd U = VectorXd::Zero(L.variableCount());
+  U(L.stepX() + 0) = 1.0 - 0.3;  // left step: world -x is the foot's +y
+  U(L.stepY() + 0) = 2.0;
+  U(L.stepYaw() + 0) = M_PI / 2 + 0.03;
+  U(L.stepX() + 1) = 1.0 - 0.3 + 0.01;  // right step from the left one, back next to the first foot
+  U(L.stepY() + 1) = 2.0 + 0.15;
+  U(L.stepYaw() + 1) = M_PI / 2 + 0.06;
+  VectorXd g(L.inequalityCount());
+  wpg::evaluateConstraints(model, problem, U, g, nullptr);
+  const double hl = w.copHalfLength(), hw = w.copHalfWidth();
+  for (int j = 0; j < 3; ++j) {
+    EXPECT_NEAR(g(L.copRow(j, 0)), offset - hl, 1e-12);
+    EXPECT_NEAR(g(L.copRow(j, 1)), -offset - hl, 1e-12);
+    EXPECT_NEAR(g(L.copRow(j, 2)), -hw, 1e-12);
+    EXPECT_NEAR(g(L.copRow(j, 3)), -hw, 1e-12);
+  }
+  for (int e = 0; e < L.feasibility_edges; ++e) EXPECT_LE(g(L.feasibilityRow(0, e)), 0.0) << e;
+  // The right step, 0.15 m along world +y (the left foot's forward direction) and 0.01 m
+  // along world +x, is almost straight ahead of the left foot: outside the right-step polygon.
+  double worst1 = -1.0;
+  for (int e = 0; e < L.feasibility_edges; ++e) worst1 = std::max(worst1, g(L.feasibilityRow(1, e)));
+  // local = R(-theta0)(dx, dy) with theta0 = pi/2 + 0.03: about (0.15, -0.01): outside the
+  // right-step polygon (y must be <= -0.2).
+  EXPECT_GT(worst1, 0.15);
+  EXPECT_NEAR(g(L.yawRow(0, true)), 0.03 - w.max_step_yaw_change, 1e-12);
+  EXPECT_NEAR(g(L.yawRow(1, false)), -0.03 - w.max_step_yaw_change, 1e-12);
+
+  // The same left step on the wrong side (world +x = the foot's -y) is infeasible.
+  U(L.stepX() + 0) = 1.0 + 0.3;
+  wpg::evaluateConstraints(model, problem, U, g, nullptr);
+  double worst0 = -1.0;
+  for (int e = 0; e < L.feasibility_edges; ++e) worst0 = std::max(worst0, g(L.feasibilityRow(0, e)));
+  EXPECT_GT(worst0, 0.4);
+}
+
+}  // namespace
