@@ -7,8 +7,12 @@ set -euo pipefail
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="$(realpath -m -- "${WPG_BUILD_DIR:-$repo/build}")"
 
+# ../shared/TOOLCHAIN.md: Eigen (libwpg), HDF5 + yaml-cpp (datasets), CLI11 (cli), FCL
+# (planning), Simbody + urdfdom (robots), GoogleTest + Google Benchmark (tests), h5py +
+# matplotlib (analysis figures, run by Debian's /usr/bin/python3).
 packages=(build-essential cmake libeigen3-dev libhdf5-dev libcli11-dev libgtest-dev
-          libbenchmark-dev libyaml-cpp-dev python3-h5py python3-matplotlib)
+          libbenchmark-dev libyaml-cpp-dev libfcl-dev libsimbody-dev liburdfdom-dev
+          python3-h5py python3-matplotlib)
 
 missing=()
 for package in "${packages[@]}"; do

@@ -53,6 +53,8 @@ WalkResult generateWalk(const WalkingParameters& parameters, const WalkRequest& 
   };
 
   const double omega0 = std::sqrt(parameters.gravity / parameters.com_height);
+  PatternGenerator::SamplePlan last_plan;  // the final sample closes the last period
+  bool planned = false;
   int k = 0;
   for (; k < iterations; ++k) {
     const double t = k * T;
@@ -81,6 +83,8 @@ WalkResult generateWalk(const WalkingParameters& parameters, const WalkRequest& 
                        " s ended with status '" + iterationStatusName(log.status) + "'";
     }
     const PatternGenerator::SamplePlan& plan = generator.plan();
+    last_plan = plan;
+    planned = true;
     if (plan.swinging) {
       if (!swing_started) {
         swing.start(generator.footPose(plan.swing_side), plan.lift_off_time, plan.landing_time,
@@ -100,8 +104,10 @@ WalkResult generateWalk(const WalkingParameters& parameters, const WalkRequest& 
     }
     if (generator.advance(com_x, com_y)) out.footsteps.push_back(generator.lastLanding());
   }
+  // The sample at the end belongs to the last period: a swing foot still in the air is where
+  // its polynomial puts it (not back at its lift-off pose).
   push = request.pushAccelerationAt(k * T);
-  record(k * T, nullptr);
+  record(k * T, planned ? &last_plan : nullptr);
   return result;
 }
 

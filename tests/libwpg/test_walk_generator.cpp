@@ -347,3 +347,25 @@ TEST(GenerateWalk, RejectsInvalidParameters) {
 }
 
 }  // namespace
+
+// The sample at t = duration closes the last period: a walk that ends mid-swing keeps the
+// swing foot where its polynomial is (regression: it jumped back to the lift-off pose, which
+// made the multibody ZMP of the replay explode on the last samples).
+TEST(WalkGenerator, FeetAreContinuousThroughTheLastSample) {
+  for (double duration : {9.95, 10.0, 10.3, 10.55}) {
+    wpg::WalkRequest request;
+    request.duration = duration;
+    request.reference = {{0.0, Eigen::Vector3d::Zero()}, {1.0, Eigen::Vector3d(0.2, 0.0, 0.0)}};
+    const wpg::WalkResult r = wpg::generateWalk(wpg::WalkingParameters(), request);
+    ASSERT_TRUE(r.success) << r.message;
+    const wpg::WalkTrajectory& tr = r.trajectory;
+    for (std::size_t i = 1; i < tr.size(); ++i) {
+      // 5 ms at most ~1 m/s of foot speed: far below 1 cm per sample.
+      ASSERT_LT((tr.left_foot[i] - tr.left_foot[i - 1]).head<3>().norm(), 0.01)
+          << "duration " << duration << ", t = " << tr.time[i];
+      ASSERT_LT((tr.right_foot[i] - tr.right_foot[i - 1]).head<3>().norm(), 0.01)
+          << "duration " << duration << ", t = " << tr.time[i];
+    }
+    EXPECT_EQ(tr.support.back(), tr.support[tr.size() - 2]) << "duration " << duration;
+  }
+}

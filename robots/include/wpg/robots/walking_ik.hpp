@@ -1,0 +1,141 @@
+#pragma once
+// Whole-body inverse kinematics for walking (HRP-2-like legs): the feet follow their targets
+// exactly through an analytic 6-DoF leg IK, the upper body keeps a reference posture (SRDF
+// "half_sitting"), the waist (root link) keeps roll = pitch = 0 and the requested yaw, and its
+// position is found by Newton iterations so that the WHOLE-BODY centre of mass equals the
+// requested CoM (the pattern generator's CoM).
+//
+// Leg structure required by the analytic IK (checked at construction, HRP-2's): from the root,
+// six revolute joints with axes z, x, y, y, y, x (hip yaw, hip roll, hip pitch, knee, ankle
+// pitch, ankle roll) and identity joint-frame rotations; the three hip axes intersect (hip roll
+// and pitch origins at 0), the knee origin is (0, y_k, -thigh), the ankle pitch origin
+// (0, y_a, -shank) (lateral offsets along the pitch axes are allowed: HRP-2 has y_a = -+0.035),
+// the ankle roll origin at 0. The sole frame is any frame of the last leg body without rotation
+// (HRP-2: LLEG_SOLE/RLEG_SOLE, 0.105 m below the ankle).
+//
+// Feet targets follow wpg::WalkTrajectory: x, y, z of the sole point under the ankle (z = 0 on
+// the ground), yaw; feet are flat (roll = pitch = 0). solve() does not allocate and is const
+// (one WalkingIk may serve several threads). The RobotModel must outlive the WalkingIk.
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "wpg/robots/robot_model.hpp"
+#include "wpg/walk_trajectory.hpp"
+
+namespace wpg::robots {
+
+struct WalkingIkSettings {
+  std::string left_sole_frame = "LLEG_SOLE";    // frame on the left sole, under the ankle
+  std::string right_sole_frame = "RLEG_SOLE";   // frame on the right sole, under the ankle
+  std::string reference_posture = "half_sitting";  // SRDF state held by every non-leg joint
+  double com_tolerance = 1e-12;  // [m] Newton stops when |CoM(q) - target| <= this
+  int max_iterations = 30;       // Newton iterations on the waist position
+  double jacobian_step = 1e-6;   // [m] forward-difference step of the CoM / waist Jacobian
+  double joint_limit_tolerance = 1e-9;  // [rad or m] a joint beyond its limit by more is reported
+};
+
+struct WalkingIkTarget {
+  Eigen::Vector4d left_foot = Eigen::Vector4d::Zero();   // sole x, y, z [m], yaw [rad]
+  Eigen::Vector4d right_foot = Eigen::Vector4d::Zero();  // sole x, y, z [m], yaw [rad]
+  Eigen::Vector3d com = Eigen::Vector3d::Zero();         // whole-body CoM, world [m]
+  double waist_yaw = 0.0;                                 // [rad], free-flyer yaw
+};
+
+enum class WalkingIkStatus : std::uint8_t {
+  kSolved = 0,         // feet reached, CoM within com_tolerance
+  kLegOutOfReach = 1,  // a foot target is beyond the leg's reach (knee straightened): foot error > 0
+  kNotConverged = 2,   // the CoM Newton iterations hit max_iterations
+};
+const char* walkingIkStatusName(WalkingIkStatus status);
+
+struct WalkingIkResult {
+  WalkingIkStatus status = WalkingIkStatus::kSolved;
+  int iterations = 0;              // CoM evaluations after the initial guess (Jacobian included)
+  double com_error = 0.0;          // |CoM(q) - target| [m]
+  double foot_position_error = 0.0;  // max over both soles, from forward kinematics [m]
+  double foot_rotation_error = 0.0;  // max over both soles, |R - R_target|_F / sqrt(2) [rad]
+  // Joint-limit violations (not clamped): bit k set when joint k (configuration order, k < 64)
+  // is beyond its limits by more than joint_limit_tolerance; the largest excess [rad or m].
+  std::uint64_t limit_violations = 0;
+  double max_limit_violation = 0.0;
+};
+
+// One IK per sample of a walk.
+struct WalkingIkTrajectory {
+  Eigen::MatrixXd q;                     // n x nq, one configuration per row
+  std::vector<WalkingIkResult> samples;  // n
+  int failures = 0;                      // samples whose status is not kSolved
+  double max_com_error = 0.0;            // [m]
+  double max_foot_position_error = 0.0;  // [m]
+  std::uint64_t limit_violations = 0;    // union over the samples (bit k: joint k)
+  int samples_with_limit_violations = 0;
+  double max_limit_violation = 0.0;      // [rad or m]
+};
+
+class WalkingIk {
+ public:
+  enum Side { kLeft = 0, kRight = 1 };
+  using LegAngles = Eigen::Matrix<double, 6, 1>;
+
+  // Throws std::invalid_argument when the legs do not have the structure above, a frame or the
+  // reference posture is unknown, or the robot has more than 64 joints.
+  explicit WalkingIk(const RobotModel& model, WalkingIkSettings settings = {});
+
+  const RobotModel& model() const { return model_; }
+  const WalkingIkSettings& settings() const { return settings_; }
+  // Configuration indices (into q) of the six joints of a leg, hip yaw first.
+  const std::array<int, 6>& legConfigurationIndices(Side side) const { return legs_[side].q_index; }
+  // The reference posture the upper body holds, root at the origin.
+  const Eigen::VectorXd& referenceConfiguration() const { return reference_; }
+
+  // Whole-body IK. q (nq entries) is written completely: free-flyer, legs, reference posture
+  // elsewhere. Never throws for reachable or unreachable targets (see the status); throws
+  // std::invalid_argument for a wrong q size or a non-finite target.
+  WalkingIkResult solve(const WalkingIkTarget& target, Eigen::Ref<Eigen::VectorXd> q) const;
+
+  // Analytic leg IK: joint angles (hip yaw ... ankle roll) that put the sole frame at `sole`
+  // (world) with the root at `waist` (world). Returns false when the target is out of reach;
+  // the angles then straighten the knee towards it (and the sole misses its target).
+  bool solveLeg(Side side, const Pose& waist, const Pose& sole, LegAngles& angles) const;
+  // Forward kinematics of the sole frame for given leg angles (root at `waist`).
+  Pose legForwardKinematics(Side side, const Pose& waist, const LegAngles& angles) const;
+
+  // IK of every sample of a walk: feet and free-flyer yaw from `walk`, CoM from `com`
+  // (n x 3, e.g. a CoM corrected by the dynamic filter) or from walk.com.
+  WalkingIkTrajectory solveTrajectory(const WalkTrajectory& walk) const;
+  WalkingIkTrajectory solveTrajectory(const WalkTrajectory& walk,
+                                      const Eigen::Ref<const Eigen::MatrixXd>& com) const;
+
+ private:
+  struct Leg {
+    std::array<int, 6> body{};     // body indices, hip yaw first
+    std::array<int, 6> q_index{};  // indices into q
+    Eigen::Vector3d hip = Eigen::Vector3d::Zero();  // hip yaw origin in the root frame
+    double thigh = 0.0, shank = 0.0;  // hip-pitch -> knee, knee -> ankle (along -z) [m]
+    double lateral = 0.0;             // y offset hip-pitch frame -> ankle (knee + ankle) [m]
+    Eigen::Vector3d sole = Eigen::Vector3d::Zero();  // sole frame origin in the foot frame
+  };
+  struct LegMassPoint { double mass; Eigen::Vector3d com; };  // in its body frame
+
+  Leg makeLeg(const std::string& sole_frame) const;
+  // Whole-body CoM for the waist at (p, yaw), legs by IK; also the leg angles and reachability.
+  Eigen::Vector3d comForWaist(const Eigen::Vector3d& p, const Eigen::Matrix3d& waist_rotation,
+                              const Pose (&soles)[2], LegAngles (&angles)[2],
+                              bool& reachable) const;
+
+  const RobotModel& model_;
+  WalkingIkSettings settings_;
+  std::array<Leg, 2> legs_;
+  std::array<std::array<LegMassPoint, 6>, 2> leg_mass_{};
+  Eigen::VectorXd reference_;          // reference posture, root at the origin
+  double upper_mass_ = 0.0;            // every body but the legs
+  Eigen::Vector3d upper_com_ = Eigen::Vector3d::Zero();  // in the root frame
+  Eigen::Vector3d reference_com_offset_ = Eigen::Vector3d::Zero();  // CoM - root, reference
+  double total_mass_ = 0.0;
+};
+
+}  // namespace wpg::robots

@@ -1,0 +1,339 @@
+#include "wpg/robots/walking_ik.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include <Eigen/LU>
+
+namespace wpg::robots {
+namespace {
+
+constexpr double kStructureTolerance = 1e-12;
+
+Eigen::Matrix3d rotZ(double a) {
+  return Eigen::AngleAxisd(a, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+}
+Eigen::Matrix3d rotX(double a) {
+  return Eigen::AngleAxisd(a, Eigen::Vector3d::UnitX()).toRotationMatrix();
+}
+Eigen::Matrix3d rotY(double a) {
+  return Eigen::AngleAxisd(a, Eigen::Vector3d::UnitY()).toRotationMatrix();
+}
+
+Pose soleTarget(const Eigen::Vector4d& foot) {
+  Pose pose;
+  pose.position = foot.head<3>();
+  pose.rotation = rotZ(foot(3));
+  return pose;
+}
+
+bool isIdentity(const Eigen::Matrix3d& r) {
+  return (r - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff() <= kStructureTolerance;
+}
+
+}  // namespace
+
+const char* walkingIkStatusName(WalkingIkStatus status) {
+  switch (status) {
+    case WalkingIkStatus::kSolved: return "solved";
+    case WalkingIkStatus::kLegOutOfReach: return "leg_out_of_reach";
+    case WalkingIkStatus::kNotConverged: return "not_converged";
+  }
+  return "unknown";
+}
+
+WalkingIk::Leg WalkingIk::makeLeg(const std::string& sole_frame) const {
+  const auto fail = [&](const std::string& why) {
+    throw std::invalid_argument("walking IK: the leg of frame " + sole_frame + " of robot " +
+                                model_.name() + " " + why);
+  };
+  const Frame& frame = model_.frames()[model_.frameIndex(sole_frame)];
+  if (!isIdentity(frame.placement.rotation)) fail("has a rotated sole frame");
+  Leg leg;
+  leg.sole = frame.placement.position;
+  int body = frame.body;
+  for (int i = 5; i >= 0; --i) {
+    if (body <= 0) fail("has fewer than 6 joints between the root and the sole");
+    leg.body[i] = body;
+    body = model_.bodies()[body].parent;
+  }
+  if (body != 0) fail("has more than 6 joints between the root and the sole");
+  const Eigen::Vector3d expected_axes[6] = {Eigen::Vector3d::UnitZ(), Eigen::Vector3d::UnitX(),
+                                            Eigen::Vector3d::UnitY(), Eigen::Vector3d::UnitY(),
+                                            Eigen::Vector3d::UnitY(), Eigen::Vector3d::UnitX()};
+  Eigen::Vector3d origins[6];
+  for (int i = 0; i < 6; ++i) {
+    const Joint& joint = model_.joints()[model_.bodies()[leg.body[i]].joint];
+    if (joint.type == JointType::kPrismatic) fail("has a prismatic joint " + joint.name);
+    if ((joint.axis - expected_axes[i]).norm() > kStructureTolerance) {
+      fail("has joint " + joint.name + " with an axis other than hip yaw z, hip roll x, hip pitch "
+           "y, knee y, ankle pitch y, ankle roll x");
+    }
+    if (!isIdentity(joint.origin.rotation)) fail("has a rotated joint frame " + joint.name);
+    origins[i] = joint.origin.position;
+    leg.q_index[i] = RobotModel::kFreeFlyerConfigurationSize + joint.index;
+  }
+  if (origins[1].norm() > kStructureTolerance || origins[2].norm() > kStructureTolerance ||
+      origins[5].norm() > kStructureTolerance) {
+    fail("does not have intersecting hip axes and intersecting ankle axes");
+  }
+  if (std::abs(origins[3].x()) > kStructureTolerance || std::abs(origins[4].x()) > kStructureTolerance ||
+      !(origins[3].z() < 0.0) || !(origins[4].z() < 0.0)) {
+    fail("does not have a knee below the hip and an ankle below the knee without x offsets");
+  }
+  leg.hip = origins[0];
+  leg.thigh = -origins[3].z();
+  leg.shank = -origins[4].z();
+  leg.lateral = origins[3].y() + origins[4].y();
+  // Nothing but the next leg body may hang from a leg body (its mass would not be counted).
+  for (std::size_t b = 1; b < model_.bodies().size(); ++b) {
+    const int parent = model_.bodies()[b].parent;
+    for (int i = 0; i < 6; ++i) {
+      if (parent == leg.body[i] && (i == 5 || static_cast<int>(b) != leg.body[i + 1])) {
+        fail("has a branch at body " + model_.bodies()[parent].name);
+      }
+    }
+  }
+  return leg;
+}
+
+WalkingIk::WalkingIk(const RobotModel& model, WalkingIkSettings settings)
+    : model_(model), settings_(std::move(settings)) {
+  if (model_.jointCount() > 64) {
+    throw std::invalid_argument("walking IK: at most 64 joints (limit-violation bit mask)");
+  }
+  if (!(settings_.com_tolerance > 0.0) || settings_.max_iterations < 1 ||
+      !(settings_.jacobian_step > 0.0) || !(settings_.joint_limit_tolerance >= 0.0)) {
+    throw std::invalid_argument("walking IK: settings must be positive");
+  }
+  legs_[kLeft] = makeLeg(settings_.left_sole_frame);
+  legs_[kRight] = makeLeg(settings_.right_sole_frame);
+  for (int i = 0; i < 6; ++i) {
+    if (std::find(legs_[kRight].body.begin(), legs_[kRight].body.end(), legs_[kLeft].body[i]) !=
+        legs_[kRight].body.end()) {
+      throw std::invalid_argument("walking IK: the two sole frames share leg joints");
+    }
+  }
+  reference_ = model_.referenceConfiguration(settings_.reference_posture);
+
+  // Mass of everything but the legs, held rigid in the reference posture, in the root frame.
+  std::vector<Pose> poses;
+  model_.forwardKinematics(reference_, poses);
+  std::vector<bool> in_leg(model_.bodies().size(), false);
+  for (int side = 0; side < 2; ++side) {
+    for (int i = 0; i < 6; ++i) {
+      const Body& body = model_.bodies()[legs_[side].body[i]];
+      in_leg[legs_[side].body[i]] = true;
+      leg_mass_[side][i] = {body.mass, body.com};
+    }
+  }
+  Eigen::Vector3d moment = Eigen::Vector3d::Zero();
+  for (std::size_t b = 0; b < model_.bodies().size(); ++b) {
+    if (in_leg[b]) continue;
+    upper_mass_ += model_.bodies()[b].mass;
+    moment += model_.bodies()[b].mass * (poses[b] * model_.bodies()[b].com);
+  }
+  total_mass_ = model_.totalMass();
+  upper_com_ = upper_mass_ > 0.0 ? Eigen::Vector3d(moment / upper_mass_) : Eigen::Vector3d::Zero();
+  reference_com_offset_ = model_.centerOfMass(reference_);  // root at the origin
+}
+
+Pose WalkingIk::legForwardKinematics(Side side, const Pose& waist, const LegAngles& angles) const {
+  const Leg& leg = legs_[side];
+  Pose pose = waist;
+  for (int i = 0; i < 6; ++i) {
+    pose = pose * model_.jointPlacement(leg.q_index[i] - RobotModel::kFreeFlyerConfigurationSize,
+                                        angles(i));
+  }
+  return pose * Pose{Eigen::Matrix3d::Identity(), leg.sole};
+}
+
+bool WalkingIk::solveLeg(Side side, const Pose& waist, const Pose& sole, LegAngles& q) const {
+  const Leg& leg = legs_[side];
+  const double l1 = leg.thigh, l2 = leg.shank, d = leg.lateral;
+  bool reachable = true;
+  const Eigen::Vector3d hip = waist * leg.hip;
+  const Eigen::Vector3d ankle = sole.position - sole.rotation * leg.sole;
+  // r: hip seen from the ankle, in the foot frame. With s = hip pitch + knee + ankle pitch:
+  // r = -Rx(-q5) Ry(-s) a, where a = ankle in the hip-roll frame = (x, d, z) (the lateral
+  // offsets lie along the parallel pitch axes), so (Rx(q5) r)_y = -d fixes the ankle roll.
+  const Eigen::Vector3d r = sole.rotation.transpose() * (hip - ankle);
+  const double rho = std::hypot(r.y(), r.z());
+  double ratio = rho > 0.0 ? -d / rho : 0.0;
+  if (ratio > 1.0 || ratio < -1.0) {
+    reachable = false;
+    ratio = std::clamp(ratio, -1.0, 1.0);
+  }
+  q(5) = std::acos(ratio) - std::atan2(r.z(), r.y());
+  q(5) = std::remainder(q(5), 2.0 * M_PI);
+  const double c5 = std::cos(q(5)), s5 = std::sin(q(5));
+  const double vz = s5 * r.y() + c5 * r.z();  // (Rx(q5) r)_z; (Rx(q5) r)_x = r_x
+  // knee: planar two-link in the pitch plane, distance ell between hip and ankle
+  const double ell2 = r.x() * r.x() + vz * vz;
+  double c3 = (ell2 - l1 * l1 - l2 * l2) / (2.0 * l1 * l2);
+  if (c3 > 1.0 || c3 < -1.0) {
+    reachable = false;
+    c3 = std::clamp(c3, -1.0, 1.0);
+  }
+  q(3) = std::acos(c3);  // knee bent forward (>= 0)
+  // ankle pitch: (vz, -r_x) is (l1 cos q3 + l2, l1 sin q3) rotated by q4
+  const double a = l1 * c3 + l2, b = l1 * std::sin(q(3));
+  q(4) = std::atan2(-r.x(), vz) - std::atan2(b, a);
+  // hip: Rz(q0) Rx(q1) Ry(q2) = Rw' Rf Rx(-q5) Ry(-(q3 + q4))
+  const Eigen::Matrix3d m =
+      waist.rotation.transpose() * sole.rotation * rotX(-q(5)) * rotY(-(q(3) + q(4)));
+  q(0) = std::atan2(-m(0, 1), m(1, 1));
+  q(1) = std::atan2(m(2, 1), std::hypot(m(0, 1), m(1, 1)));
+  q(2) = std::atan2(-m(2, 0), m(2, 2));
+  return reachable;
+}
+
+Eigen::Vector3d WalkingIk::comForWaist(const Eigen::Vector3d& p, const Eigen::Matrix3d& waist_rotation,
+                                       const Pose (&soles)[2], LegAngles (&angles)[2],
+                                       bool& reachable) const {
+  const Pose waist{waist_rotation, p};
+  Eigen::Vector3d moment = upper_mass_ * (waist * upper_com_);
+  reachable = true;
+  for (int side = 0; side < 2; ++side) {
+    reachable &= solveLeg(static_cast<Side>(side), waist, soles[side], angles[side]);
+    Pose pose = waist;
+    for (int i = 0; i < 6; ++i) {
+      pose = pose * model_.jointPlacement(
+                        legs_[side].q_index[i] - RobotModel::kFreeFlyerConfigurationSize,
+                        angles[side](i));
+      moment += leg_mass_[side][i].mass * (pose * leg_mass_[side][i].com);
+    }
+  }
+  return moment / total_mass_;
+}
+
+WalkingIkResult WalkingIk::solve(const WalkingIkTarget& target, Eigen::Ref<Eigen::VectorXd> q) const {
+  if (q.size() != model_.nq()) {
+    throw std::invalid_argument("walking IK: configuration of size " + std::to_string(q.size()) +
+                                ", expected " + std::to_string(model_.nq()));
+  }
+  if (!target.left_foot.allFinite() || !target.right_foot.allFinite() || !target.com.allFinite() ||
+      !std::isfinite(target.waist_yaw)) {
+    throw std::invalid_argument("walking IK: non-finite target");
+  }
+  WalkingIkResult result;
+  const Eigen::Matrix3d waist_rotation = rotZ(target.waist_yaw);
+  const Pose soles[2] = {soleTarget(target.left_foot), soleTarget(target.right_foot)};
+  LegAngles angles[2];
+  bool reachable = true;
+
+  // Newton on the waist position p: CoM(p) = target. Initial guess: the reference posture's
+  // CoM offset from the waist. Jacobian by forward differences, reused while the residual
+  // shrinks fast (chord method), recomputed otherwise.
+  Eigen::Vector3d p = target.com - waist_rotation * reference_com_offset_;
+  Eigen::Vector3d residual = comForWaist(p, waist_rotation, soles, angles, reachable) - target.com;
+  Eigen::Matrix3d jacobian_inverse;
+  bool have_jacobian = false;
+  double previous_norm = residual.norm();
+  result.status = WalkingIkStatus::kSolved;
+  while (residual.norm() > settings_.com_tolerance) {
+    if (result.iterations >= settings_.max_iterations) {
+      result.status = WalkingIkStatus::kNotConverged;
+      break;
+    }
+    if (!have_jacobian) {
+      Eigen::Matrix3d jacobian;
+      LegAngles scratch[2];
+      bool scratch_reachable = true;
+      for (int i = 0; i < 3; ++i) {
+        Eigen::Vector3d shifted = p;
+        shifted(i) += settings_.jacobian_step;
+        jacobian.col(i) = (comForWaist(shifted, waist_rotation, soles, scratch, scratch_reachable) -
+                           target.com - residual) / settings_.jacobian_step;
+      }
+      result.iterations += 3;
+      jacobian_inverse = jacobian.inverse();
+      have_jacobian = true;
+    }
+    p -= jacobian_inverse * residual;
+    residual = comForWaist(p, waist_rotation, soles, angles, reachable) - target.com;
+    ++result.iterations;
+    const double norm = residual.norm();
+    if (norm > 0.25 * previous_norm) have_jacobian = false;  // slow: refresh the Jacobian
+    previous_norm = norm;
+  }
+  result.com_error = residual.norm();
+
+  q = reference_;
+  RobotModel::setFreeFlyer(q, p, Eigen::Quaterniond(Eigen::AngleAxisd(target.waist_yaw,
+                                                                       Eigen::Vector3d::UnitZ())));
+  for (int side = 0; side < 2; ++side) {
+    for (int i = 0; i < 6; ++i) q(legs_[side].q_index[i]) = angles[side](i);
+    const Pose sole = legForwardKinematics(static_cast<Side>(side), Pose{waist_rotation, p},
+                                           angles[side]);
+    result.foot_position_error =
+        std::max(result.foot_position_error, (sole.position - soles[side].position).norm());
+    result.foot_rotation_error = std::max(
+        result.foot_rotation_error, (sole.rotation - soles[side].rotation).norm() / std::sqrt(2.0));
+  }
+  if (!reachable && result.status == WalkingIkStatus::kSolved) {
+    result.status = WalkingIkStatus::kLegOutOfReach;
+  }
+  const Eigen::VectorXd& lower = model_.jointLowerLimits();
+  const Eigen::VectorXd& upper = model_.jointUpperLimits();
+  for (int k = 0; k < model_.jointCount(); ++k) {
+    const double v = q(RobotModel::kFreeFlyerConfigurationSize + k);
+    const double excess = std::max(lower(k) - v, v - upper(k));
+    if (excess > settings_.joint_limit_tolerance) {
+      result.limit_violations |= std::uint64_t{1} << k;
+      result.max_limit_violation = std::max(result.max_limit_violation, excess);
+    }
+  }
+  return result;
+}
+
+WalkingIkTrajectory WalkingIk::solveTrajectory(const WalkTrajectory& walk) const {
+  Eigen::MatrixXd com(static_cast<Eigen::Index>(walk.size()), 3);
+  if (walk.com.size() != walk.size()) {
+    throw std::invalid_argument("walking IK: walk with " + std::to_string(walk.com.size()) +
+                                " CoM samples for " + std::to_string(walk.size()) + " times");
+  }
+  for (std::size_t i = 0; i < walk.size(); ++i) com.row(static_cast<Eigen::Index>(i)) = walk.com[i].transpose();
+  return solveTrajectory(walk, com);
+}
+
+WalkingIkTrajectory WalkingIk::solveTrajectory(const WalkTrajectory& walk,
+                                               const Eigen::Ref<const Eigen::MatrixXd>& com) const {
+  const std::size_t n = walk.size();
+  if (walk.left_foot.size() != n || walk.right_foot.size() != n || walk.free_flyer_yaw.size() != n) {
+    throw std::invalid_argument("walking IK: walk with inconsistent sample counts (time " +
+                                std::to_string(n) + ", feet " +
+                                std::to_string(walk.left_foot.size()) + "/" +
+                                std::to_string(walk.right_foot.size()) + ", yaw " +
+                                std::to_string(walk.free_flyer_yaw.size()) + ")");
+  }
+  if (com.rows() != static_cast<Eigen::Index>(n) || com.cols() != 3) {
+    throw std::invalid_argument("walking IK: CoM of size " + std::to_string(com.rows()) + " x " +
+                                std::to_string(com.cols()) + ", expected " + std::to_string(n) +
+                                " x 3");
+  }
+  WalkingIkTrajectory out;
+  out.q.resize(static_cast<Eigen::Index>(n), model_.nq());
+  out.samples.resize(n);
+  Eigen::VectorXd q(model_.nq());
+  WalkingIkTarget target;
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto row = static_cast<Eigen::Index>(i);
+    target.left_foot = walk.left_foot[i];
+    target.right_foot = walk.right_foot[i];
+    target.com = com.row(row).transpose();
+    target.waist_yaw = walk.free_flyer_yaw[i];
+    const WalkingIkResult& r = out.samples[i] = solve(target, q);
+    out.q.row(row) = q.transpose();
+    if (r.status != WalkingIkStatus::kSolved) ++out.failures;
+    out.max_com_error = std::max(out.max_com_error, r.com_error);
+    out.max_foot_position_error = std::max(out.max_foot_position_error, r.foot_position_error);
+    out.limit_violations |= r.limit_violations;
+    if (r.limit_violations != 0) ++out.samples_with_limit_violations;
+    out.max_limit_violation = std::max(out.max_limit_violation, r.max_limit_violation);
+  }
+  return out;
+}
+
+}  // namespace wpg::robots
