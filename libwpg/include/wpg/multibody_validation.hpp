@@ -1,0 +1,37 @@
+#pragma once
+// What the multibody replay and the dynamic filter (paper Sec. IV, Fig. 3 and 6) add to a
+// walk: plain data, filled by robots/ (Simbody) and written by datasets/ (HDF5), so that
+// neither of the two depends on the other.
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace wpg {
+
+struct ZmpErrorStatistics {
+  double rms = 0.0;  // [m], sqrt(mean |reference CoP - multibody ZMP|^2) over the samples
+  double max = 0.0;  // [m]
+};
+
+struct MultibodyValidation {
+  std::vector<std::string> configuration_names;  // nq column names of q
+  Eigen::MatrixXd q;                       // n x nq, the motion sent to the robot (filtered
+                                           // when the filter ran), robots/README layout
+  Eigen::MatrixXd zmp_multibody;           // n x 2, ZMP of the WPG's motion (before the filter)
+  Eigen::MatrixXd com_filtered;            // n x 3, WPG CoM + filter correction (empty: no filter)
+  Eigen::MatrixXd zmp_multibody_filtered;  // n x 2, ZMP after the filter (empty: no filter)
+  ZmpErrorStatistics before, after;        // vs. the reference CoP
+  int ik_failures = 0;                     // samples the IK did not solve
+  double max_ik_com_error = 0.0;           // [m]
+  double max_ik_foot_error = 0.0;          // [m]
+  int samples_with_limit_violations = 0;
+  double max_limit_violation = 0.0;        // [rad]
+  std::vector<std::string> violated_joints;
+  // Timing profile per NMPC iteration of the control chain, as the paper's Sec. V-C table
+  // (NMPC + IK + dynamic filter, the filter including its multibody ZMP): k entries [s].
+  Eigen::VectorXd chain_time;
+  Eigen::MatrixXd chain_stage_time;        // k x 4: NMPC, IK, multibody ZMP, preview filter [s]
+};
+
+}  // namespace wpg

@@ -1,0 +1,134 @@
+#include "wpg/robots/walk_replay.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdint>
+#include <cmath>
+#include <stdexcept>
+
+#include "wpg/dynamic_filter.hpp"
+#include "wpg/robots/multibody_replay.hpp"
+#include "wpg/robots/walking_ik.hpp"
+
+namespace wpg::robots {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds(Clock::time_point since) {
+  return std::chrono::duration<double>(Clock::now() - since).count();
+}
+
+// IK of every sample; the time of each sample goes to its NMPC iteration (stage column 1).
+Eigen::MatrixXd solveIk(const WalkingIk& ik, const RobotModel& model, const WalkTrajectory& walk,
+                        const Eigen::MatrixXd& com, int per_iteration, MultibodyValidation& out,
+                        bool record) {
+  const Eigen::Index n = static_cast<Eigen::Index>(walk.size());
+  Eigen::MatrixXd q(n, model.nq());
+  Eigen::VectorXd qi(model.nq());
+  WalkingIkTarget target;
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const auto start = Clock::now();
+    target.left_foot = walk.left_foot[i];
+    target.right_foot = walk.right_foot[i];
+    target.com = com.row(i).transpose();
+    target.waist_yaw = walk.free_flyer_yaw[i];
+    const WalkingIkResult r = ik.solve(target, qi);
+    q.row(i) = qi.transpose();
+    const Eigen::Index k = std::min<Eigen::Index>(i / per_iteration, out.chain_stage_time.rows() - 1);
+    if (record && k >= 0) out.chain_stage_time(k, 1) += seconds(start);
+    if (!record) continue;
+    if (r.status != WalkingIkStatus::kSolved) ++out.ik_failures;
+    out.max_ik_com_error = std::max(out.max_ik_com_error, r.com_error);
+    out.max_ik_foot_error = std::max(out.max_ik_foot_error, r.foot_position_error);
+    if (r.limit_violations != 0) ++out.samples_with_limit_violations;
+    out.max_limit_violation = std::max(out.max_limit_violation, r.max_limit_violation);
+    for (int j = 0; j < 64 && j < static_cast<int>(model.jointNames().size()); ++j) {
+      if (!(r.limit_violations & (std::uint64_t{1} << j))) continue;
+      const std::string& name = model.jointNames()[j];
+      if (std::find(out.violated_joints.begin(), out.violated_joints.end(), name) ==
+          out.violated_joints.end())
+        out.violated_joints.push_back(name);
+    }
+  }
+  return q;
+}
+
+ZmpErrorStatistics statistics(const WalkTrajectory& walk, const Eigen::MatrixXd& zmp) {
+  ZmpErrorStatistics s;
+  double sum = 0.0;
+  int count = 0;
+  for (Eigen::Index i = 0; i < zmp.rows(); ++i) {
+    const Eigen::Vector2d e = walk.cop[i] - zmp.row(i).transpose();
+    if (!e.allFinite()) continue;
+    sum += e.squaredNorm();
+    s.max = std::max(s.max, e.norm());
+    ++count;
+  }
+  s.rms = count ? std::sqrt(sum / count) : 0.0;
+  return s;
+}
+
+}  // namespace
+
+MultibodyValidation replayWalk(const RobotModel& model, const WalkingParameters& w,
+                               const WalkRequest& request, const WalkTrajectory& walk,
+                               const WalkReplaySettings& settings) {
+  const Eigen::Index n = static_cast<Eigen::Index>(walk.size());
+  if (n < 3 || walk.com.size() != walk.size() || walk.cop.size() != walk.size())
+    throw std::invalid_argument("replay: expected a walk of at least 3 consistent samples");
+  const double dt = w.control_period;
+  const int per_iteration = static_cast<int>(std::lround(w.sampling_period / dt));
+  const Eigen::Index iterations = std::max<Eigen::Index>(1, walk.mpc.size());
+
+  MultibodyValidation out;
+  out.configuration_names = {"base_x", "base_y", "base_z", "base_qw", "base_qx", "base_qy", "base_qz"};
+  for (const std::string& joint : model.jointNames()) out.configuration_names.push_back(joint);
+  out.chain_stage_time = Eigen::MatrixXd::Zero(iterations, 4);
+  for (Eigen::Index k = 0; k < static_cast<Eigen::Index>(walk.mpc.size()); ++k)
+    out.chain_stage_time(k, 0) = walk.mpc[k].solve_time;
+
+  Eigen::MatrixXd com(n, 3), com_force(n, 3);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    com.row(i) = walk.com[i].transpose();
+    const Eigen::Vector2d a = request.pushAccelerationAt(walk.time[i]);
+    com_force.row(i) << request.robot_mass * a.x(), request.robot_mass * a.y(), 0.0;
+  }
+  const WalkingIk ik(model);
+  MultibodyReplay replay(model, MultibodyReplaySettings{w.gravity});
+
+  // The unfiltered motion: IK then inverse dynamics.
+  Eigen::MatrixXd q = solveIk(ik, model, walk, com, per_iteration, out, !settings.filter);
+  auto start = Clock::now();
+  out.zmp_multibody = replay.run(q, dt, com_force).zmp;
+  const double zmp_time = seconds(start);
+  out.before = statistics(walk, out.zmp_multibody);
+  if (!settings.filter) {
+    out.q = q;
+    out.after = out.before;
+  } else {
+    // Dynamic filter: preview control on (reference CoP - multibody ZMP), correction added to
+    // the WPG's CoM; then IK and replay again (validation, Fig. 6's dashed green curve).
+    start = Clock::now();
+    const PreviewController controller(dt, w.com_height, w.gravity, settings.preview);
+    Eigen::MatrixXd error(n, 2), correction(n, 2);
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const Eigen::Vector2d e = walk.cop[i] - out.zmp_multibody.row(i).transpose();
+      error.row(i) = e.allFinite() ? Eigen::RowVector2d(e.transpose()) : Eigen::RowVector2d::Zero();
+    }
+    dynamicFilterCorrection(controller, error, correction);
+    out.com_filtered = com;
+    out.com_filtered.leftCols<2>() += correction;
+    const double filter_time = seconds(start);
+    out.q = solveIk(ik, model, walk, out.com_filtered, per_iteration, out, true);
+    out.zmp_multibody_filtered = replay.run(out.q, dt, com_force).zmp;
+    out.after = statistics(walk, out.zmp_multibody_filtered);
+    // The whole-walk stages are spread evenly over the iterations (per-sample costs).
+    out.chain_stage_time.col(3).setConstant(filter_time / iterations);
+  }
+  out.chain_stage_time.col(2).setConstant(zmp_time / iterations);
+  out.chain_time = out.chain_stage_time.rowwise().sum();
+  return out;
+}
+
+}  // namespace wpg::robots
