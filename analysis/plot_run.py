@@ -36,7 +36,10 @@ STATUS_STYLE = {
     1: ("relaxed", "tab:orange", "s"),
     2: ("fallback", "tab:red", "X"),
     3: ("iteration limit", "tab:purple", "D"),
+    4: ("fallen", "black", "v"),
 }
+FAILED_STATUSES = (2, 3, 4)  # fallback, iteration limit, fallen: the walk failed
+OBSTACLE_COLOUR = "0.35"
 SCHEMA_DATASETS = ("time", "com", "cop", "support", "footsteps", "footstep_side")
 
 
@@ -224,8 +227,80 @@ def sole_corners(x, y, yaw, length, width):
     return corners
 
 
-def draw_top_view(ax, run, foot_length, foot_width):
+def scenario_obstacles(scenario):
+    """[(outline [(x, y)], margin)] of the scenario's obstacles (circles as polygons)."""
+    request = scenario.get("request") if isinstance(scenario.get("request"), dict) else scenario
+    obstacles = request.get("obstacles")
+    shapes = []
+    for obstacle in obstacles if isinstance(obstacles, list) else []:
+        try:
+            kind = obstacle.get("type", "circle")
+            margin = float(obstacle.get("margin", 0.0) or 0.0)
+            if kind == "circle":
+                cx, cy = (float(v) for v in obstacle["center"])
+                radius = float(obstacle["radius"])
+                outline = [(cx + radius * math.cos(a), cy + radius * math.sin(a))
+                           for a in np.linspace(0.0, 2.0 * math.pi, 64, endpoint=False)]
+                shapes.append((outline, margin, ("circle", cx, cy, radius)))
+            elif kind == "box":
+                cx, cy = (float(v) for v in obstacle["center"])
+                length, width = (float(v) for v in obstacle["size"])
+                outline = sole_corners(cx, cy, float(obstacle.get("yaw", 0.0) or 0.0),
+                                       length, width)
+                shapes.append((outline, margin, None))
+            elif kind == "polygon":
+                outline = [(float(v[0]), float(v[1])) for v in obstacle["vertices"]]
+                shapes.append((outline, margin, None))
+        except (TypeError, KeyError, ValueError, AttributeError):
+            continue
+    return shapes
+
+
+def grown_outline(outline, margin, circle):
+    """The outline grown by `margin` (Minkowski sum with a disc), as a polygon."""
+    if circle is not None:
+        _, cx, cy, radius = circle
+        return [(cx + (radius + margin) * math.cos(a), cy + (radius + margin) * math.sin(a))
+                for a in np.linspace(0.0, 2.0 * math.pi, 64, endpoint=False)]
+    points = []
+    for x, y in outline:
+        for a in np.linspace(0.0, 2.0 * math.pi, 24, endpoint=False):
+            points.append((x + margin * math.cos(a), y + margin * math.sin(a)))
+    return convex_hull(points)
+
+
+def convex_hull(points):
+    points = sorted(set(points))
+    if len(points) < 3:
+        return points
+
+    def cross(o, a, b):
+        return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0])
+
+    lower, upper = [], []
+    for p in points:
+        while len(lower) >= 2 and cross(lower[-2], lower[-1], p) <= 0:
+            lower.pop()
+        lower.append(p)
+    for p in reversed(points):
+        while len(upper) >= 2 and cross(upper[-2], upper[-1], p) <= 0:
+            upper.pop()
+        upper.append(p)
+    return lower[:-1] + upper[:-1]
+
+
+def draw_obstacles(ax, obstacles):
+    for outline, margin, circle in obstacles:
+        ax.add_patch(Polygon(outline, closed=True, facecolor=OBSTACLE_COLOUR, alpha=0.45,
+                             edgecolor=OBSTACLE_COLOUR, linewidth=1.0))
+        if margin > 0:
+            ax.add_patch(Polygon(grown_outline(outline, margin, circle), closed=True, fill=False,
+                                 edgecolor=OBSTACLE_COLOUR, linestyle="--", linewidth=0.8))
+
+
+def draw_top_view(ax, run, foot_length, foot_width, obstacles=()):
     footsteps, sides = run["footsteps"], run["footstep_side"]
+    draw_obstacles(ax, obstacles)
     for index, ((landing, x, y, yaw), side) in enumerate(zip(footsteps, sides)):
         colour = LEFT_COLOUR if int(side) == 1 else RIGHT_COLOUR
         ax.add_patch(Polygon(sole_corners(x, y, yaw, foot_length, foot_width), closed=True,
@@ -249,6 +324,9 @@ def draw_top_view(ax, run, foot_length, foot_width):
                Patch(facecolor=LEFT_COLOUR, alpha=0.35, edgecolor=LEFT_COLOUR, label="left foot"),
                Patch(facecolor=RIGHT_COLOUR, alpha=0.35, edgecolor=RIGHT_COLOUR,
                      label="right foot")]
+    if obstacles:
+        handles.append(Patch(facecolor=OBSTACLE_COLOUR, alpha=0.45, edgecolor=OBSTACLE_COLOUR,
+                             label="obstacle (dashed: margin)"))
     ax.legend(handles=handles, loc="best", fontsize=8, framealpha=0.85)
 
 
@@ -274,13 +352,13 @@ def shade_support(ax, spans):
 
 
 def first_failure(run):
-    """(time, status name) of the first NMPC iteration that fell back or hit its iteration
-    limit, or None."""
+    """(time, status name) of the first NMPC iteration that fell back, hit its iteration
+    limit or found the robot fallen, or None."""
     mpc = run["mpc"]
     if mpc is None or "status" not in mpc:
         return None
     status = np.asarray(mpc["status"], dtype=int)
-    bad = np.flatnonzero(np.isin(status, (2, 3)))
+    bad = np.flatnonzero(np.isin(status, FAILED_STATUSES))
     if len(bad) == 0:
         return None
     return float(mpc["time"][bad[0]]), STATUS_STYLE[int(status[bad[0]])][0]
@@ -370,7 +448,7 @@ def draw(runs, source_path):
         right.append(fig.add_subplot(cell[2, 1], sharex=right[0]))
         for ax in right[:2]:
             ax.tick_params(labelbottom=False)
-        draw_top_view(top, run, foot_length, foot_width)
+        draw_top_view(top, run, foot_length, foot_width, scenario_obstacles(scenario))
         draw_time_panels(right, run, scenario_pushes(scenario))
         command = describe_command(scenario)
         title = "run %s" % run["name"] + ("   —   " + command if command else "")

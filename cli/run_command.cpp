@@ -16,6 +16,18 @@
 #include "wpg/datasets/scenario.hpp"
 #include "wpg/walk_generator.hpp"
 
+// The FCL world of planning/ (one obstacle model for the NMPC and the footstep checks), used as
+// soon as the executable links wpg_planning (its headers are then on the include path).
+// Without it, generateWalk measures obstacles with libwpg's exact 2-D distance and the dataset
+// holds the step-centre clearances only.
+#if __has_include("wpg/planning/obstacle_checks.hpp")
+#define WPG_CLI_WITH_PLANNING 1
+#include <optional>
+
+#include "wpg/planning/obstacle_checks.hpp"
+#include "wpg/planning/world.hpp"
+#endif
+
 namespace fs = std::filesystem;
 
 namespace wpg::cli {
@@ -120,8 +132,17 @@ int runCommand(const RunOptions& options) {
   }
 
   WalkResult result;
+  std::string obstacle_summary;  // one line of the summary when the FCL world checked the steps
+#ifdef WPG_CLI_WITH_PLANNING
+  std::optional<planning::World> world;
+#endif
   try {
+#ifdef WPG_CLI_WITH_PLANNING
+    if (!scenario.request.obstacles.empty()) world.emplace(scenario.request.obstacles);
+    result = generateWalk(scenario.walking, scenario.request, world ? &*world : nullptr);
+#else
     result = generateWalk(scenario.walking, scenario.request);
+#endif
   } catch (const std::invalid_argument& e) {
     throw UsageError(aboutFile(scenario_path, e.what()));
   }
@@ -133,13 +154,33 @@ int runCommand(const RunOptions& options) {
     }
   }
   try {
+#ifdef WPG_CLI_WITH_PLANNING
+    if (world) {
+      const planning::FootstepObstacleReport report =
+          planning::checkFootsteps(*world, scenario.walking, result.trajectory);
+      datasets::FootstepClearances clearances;
+      clearances.clearance = report.clearance;
+      clearances.clearance_obstacle = report.clearance_obstacle;
+      clearances.foot_distance = report.foot_distance;
+      datasets::writeRunDataset(dataset_path.string(), scenario, result, &clearances);
+      obstacle_summary = "obstacles " + std::to_string(world->obstacleCount()) +
+                         "; least clearance to the margins: step centre " +
+                         format("%.3f", report.min_centre_clearance) + " m, sole " +
+                         format("%.3f", report.min_clearance) + " m; sole to obstacle " +
+                         format("%.3f", report.min_foot_distance) + " m\n";
+    } else {
+      datasets::writeRunDataset(dataset_path.string(), scenario, result);
+    }
+#else
     datasets::writeRunDataset(dataset_path.string(), scenario, result);
+#endif
   } catch (const std::invalid_argument& e) {
     // an inconsistent trajectory is a bug, not bad input
     throw std::runtime_error(std::string("cannot write the dataset: ") + e.what());
   }
 
   printSummary(std::cout, scenario, result);
+  std::cout << obstacle_summary;
   std::cout << "dataset   " << dataset_path.string() << '\n';
   if (options.plot) {
     std::cout.flush();

@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <limits>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -15,6 +16,7 @@
 
 #include <H5Cpp.h>
 
+#include "wpg/obstacles.hpp"
 #include "wpg/walk_checks.hpp"
 #include <unistd.h>
 
@@ -165,6 +167,20 @@ void checkSizes(const WalkTrajectory& trajectory) {
   check("support", trajectory.support.size());
 }
 
+void checkClearanceSizes(const FootstepClearances& clearances, const WalkTrajectory& trajectory) {
+  const std::size_t m = trajectory.footsteps.size();
+  const auto check = [m](const char* name, std::size_t rows) {
+    if (rows != m) {
+      throw std::invalid_argument("writeRunDataset: clearances." + std::string(name) + " has " +
+                                  std::to_string(rows) + " entries, expected " + std::to_string(m) +
+                                  " (one per trajectory.footsteps row)");
+    }
+  };
+  check("clearance", clearances.clearance.size());
+  check("clearance_obstacle", clearances.clearance_obstacle.size());
+  check("foot_distance", clearances.foot_distance.size());
+}
+
 void checkGroupName(const std::string& name) {
   if (name.empty() || name == "." || name.find('/') != std::string::npos) {
     throw std::invalid_argument("writeRunDataset: scenario name '" + name +
@@ -264,9 +280,119 @@ void writeDoubleAttribute(H5::H5Object& object, const std::string& name, double 
   attribute.write(H5::PredType::NATIVE_DOUBLE, &value);
 }
 
+// The scenario's obstacles as a table (one row per obstacle, in the scenario's order), so that
+// plots and analyses need nothing but the file; outlines of boxes and polygons in one ragged
+// vertex list.
+void writeObstacles(H5::Group& run, const std::vector<Obstacle>& obstacles) {
+  H5::Group group = run.createGroup("obstacles");
+  writeStringAttribute(group, "description",
+                       "convex obstacles of the scenario (paper Sec. III-D), one row per obstacle "
+                       "in the scenario's order; fields that do not apply to a type are 0");
+  writeIntAttribute(group, "count", static_cast<int>(obstacles.size()));
+  std::vector<std::uint8_t> types;
+  std::vector<double> centers, radii, sizes, yaws, margins, vertices;
+  std::vector<int> vertex_start, vertex_count;
+  for (const Obstacle& obstacle : obstacles) {
+    types.push_back(static_cast<std::uint8_t>(obstacle.type));
+    centers.insert(centers.end(), {obstacle.center.x(), obstacle.center.y()});
+    radii.push_back(obstacle.radius);
+    sizes.insert(sizes.end(), {obstacle.size.x(), obstacle.size.y()});
+    yaws.push_back(obstacle.yaw);
+    margins.push_back(obstacle.margin);
+    const std::vector<Eigen::Vector2d> outline = obstacle.worldVertices();
+    vertex_start.push_back(static_cast<int>(vertices.size() / 2));
+    vertex_count.push_back(static_cast<int>(outline.size()));
+    for (const Eigen::Vector2d& v : outline) vertices.insert(vertices.end(), {v.x(), v.y()});
+  }
+  std::string codes;
+  for (const ObstacleType type :
+       {ObstacleType::kCircle, ObstacleType::kBox, ObstacleType::kPolygon}) {
+    codes += (codes.empty() ? "" : ", ") + std::to_string(static_cast<int>(type)) + "=" +
+             obstacleTypeName(type);
+  }
+  H5::DataSet type_set =
+      writeCodes(group, "type", types,
+                 {"1", nullptr, "shape of each obstacle, see the codes attribute", nullptr});
+  writeStringAttribute(type_set, "codes", codes);
+  writeDoubles(group, "center", centers, 2,
+               {"m", "world", "centre of a circle or a box (0 for polygons)", "x, y"});
+  writeDoubles(group, "radius", radii, 0, {"m", nullptr, "radius of a circle", nullptr});
+  writeDoubles(
+      group, "size", sizes, 2,
+      {"m", nullptr, "length along the box's own x axis and width of a box", "length, width"});
+  writeDoubles(group, "yaw", yaws, 0, {"rad", "world", "orientation of a box", nullptr});
+  writeDoubles(
+      group, "margin", margins, 0,
+      {"m", nullptr, "security margin: no step centre closer than this to the obstacle (eq. 18-19)",
+       nullptr});
+  writeDoubles(group, "vertices", vertices, 2,
+               {"m", "world",
+                "outlines of the boxes and polygons, counter-clockwise, concatenated: rows "
+                "vertex_start[i] to vertex_start[i] + vertex_count[i] - 1 belong to obstacle i",
+                "x, y"});
+  writeInts(group, "vertex_start", vertex_start,
+            {"1", nullptr, "first row of each obstacle's outline in vertices", nullptr});
+  writeInts(group, "vertex_count", vertex_count,
+            {"1", nullptr, "rows of each obstacle's outline in vertices (0 for circles)", nullptr});
+}
+
+// Footsteps against the obstacles (when there are any): the step centres here, with libwpg's
+// exact 2-D distance (the constraint the NMPC enforces); the soles from the caller's FCL world.
+void writeObstacleChecks(H5::Group& checks, const std::vector<Obstacle>& obstacles,
+                         const WalkTrajectory& trajectory, const FootstepClearances* clearances) {
+  if (obstacles.empty()) return;
+  const AnalyticObstacleDistance distance(obstacles);
+  const double infinity = std::numeric_limits<double>::infinity();
+  std::vector<double> centre(trajectory.footsteps.size(), infinity);
+  std::vector<int> centre_obstacle(trajectory.footsteps.size(), -1);
+  double min_centre = infinity;
+  for (std::size_t s = 0; s < trajectory.footsteps.size(); ++s) {
+    const Eigen::Vector2d ankle = trajectory.footsteps[s].pose.head<2>();
+    for (int i = 0; i < distance.obstacleCount(); ++i) {
+      const double value = distance.signedDistance(i, ankle, nullptr) -
+                           obstacles[static_cast<std::size_t>(i)].margin;
+      if (value < centre[s]) {
+        centre[s] = value;
+        centre_obstacle[s] = i;
+      }
+    }
+    min_centre = std::min(min_centre, centre[s]);
+  }
+  writeDoubles(checks, "step_centre_clearance", centre, 0,
+               {"m", nullptr,
+                "per footstep, min over obstacles of (signed distance of the ankle point to the "
+                "obstacle - margin): the NMPC's obstacle constraint, >= 0 when it holds",
+                nullptr});
+  writeInts(checks, "step_centre_clearance_obstacle", centre_obstacle,
+            {"1", nullptr, "index (row of obstacles/) of the obstacle of step_centre_clearance",
+             nullptr});
+  writeDoubleAttribute(checks, "min_step_centre_clearance", min_centre);
+  if (!clearances) return;
+  writeDoubles(checks, "step_clearance", clearances->clearance, 0,
+               {"m", nullptr,
+                "per footstep, min over obstacles of (signed distance between the sole rectangle "
+                "and the obstacle - margin), from the FCL world; < 0: the sole enters the margin",
+                nullptr});
+  writeInts(checks, "step_clearance_obstacle", clearances->clearance_obstacle,
+            {"1", nullptr, "index (row of obstacles/) of the obstacle of step_clearance", nullptr});
+  writeDoubles(checks, "step_foot_distance", clearances->foot_distance, 0,
+               {"m", nullptr,
+                "per footstep, min over obstacles of the signed distance between the sole "
+                "rectangle and the obstacle itself (margin not counted); < 0: the foot touches it",
+                nullptr});
+  const auto minimum = [infinity](const std::vector<double>& values) {
+    double value = infinity;
+    for (const double v : values) value = std::min(value, v);
+    return value;
+  };
+  writeDoubleAttribute(checks, "min_step_clearance", minimum(clearances->clearance));
+  writeDoubleAttribute(checks, "min_step_foot_distance", minimum(clearances->foot_distance));
+}
+
 // Physical invariants of the walk (libwpg/walk_checks.hpp), so that a dataset says whether
 // it is sound without any code of ours.
-void writeChecks(H5::Group& run, const Scenario& scenario, const WalkTrajectory& trajectory) {
+void writeChecks(H5::Group& run, const Scenario& scenario, const WalkTrajectory& trajectory,
+                 const FootstepClearances* clearances) {
   const WalkCheckReport report = checkWalk(scenario.walking, trajectory);
   H5::Group checks = run.createGroup("checks");
   writeStringAttribute(checks, "description",
@@ -281,9 +407,11 @@ void writeChecks(H5::Group& run, const Scenario& scenario, const WalkTrajectory&
   writeDoubleAttribute(checks, "max_step_yaw_change", report.max_step_yaw_change);
   writeIntAttribute(checks, "landed_steps", report.landed_steps);
   writeDoubleAttribute(checks, "speed_after_two_steps", report.speed_after_two_steps);
+  writeObstacleChecks(checks, scenario.request.obstacles, trajectory, clearances);
 }
 
-void writeFile(const std::string& file_path, const Scenario& scenario, const WalkResult& result) {
+void writeFile(const std::string& file_path, const Scenario& scenario, const WalkResult& result,
+               const FootstepClearances* clearances) {
   H5::H5File file(file_path, H5F_ACC_TRUNC);
   writeIntAttribute(file, "schema_version", kRunDatasetSchemaVersion);
   writeStringAttribute(file, "wpg_version", WPG_VERSION_STRING);
@@ -299,15 +427,17 @@ void writeFile(const std::string& file_path, const Scenario& scenario, const Wal
   writeStringAttribute(run, "robot", scenario.robot);
   writeTrajectory(run, result.trajectory);
   writeMpcLog(run, result.trajectory.mpc);
-  writeChecks(run, scenario, result.trajectory);
+  writeObstacles(run, scenario.request.obstacles);
+  writeChecks(run, scenario, result.trajectory, clearances);
   file.close();  // inside the try of the caller: a failed flush is an error, not a warning
 }
 
 }  // namespace
 
 void writeRunDataset(const std::string& path, const Scenario& scenario,
-                     const wpg::WalkResult& result) {
+                     const wpg::WalkResult& result, const FootstepClearances* clearances) {
   checkSizes(result.trajectory);
+  if (clearances) checkClearanceSizes(*clearances, result.trajectory);
   checkGroupName(scenario.name);
   const fs::path target(path);
   if (path.empty() || !target.has_filename()) {
@@ -328,7 +458,7 @@ void writeRunDataset(const std::string& path, const Scenario& scenario,
   std::lock_guard<std::mutex> lock(hdf5Mutex());
   H5::Exception::dontPrint();  // errors become exceptions with messages, not stderr dumps
   try {
-    writeFile(temporary, scenario, result);
+    writeFile(temporary, scenario, result, clearances);
   } catch (const H5::Exception& error) {
     std::remove(temporary.c_str());
     throw std::runtime_error(path + ": cannot write the HDF5 file (" + error.getFuncName() +

@@ -571,19 +571,20 @@ ParsedOverride parseOverride(const std::string& text, Source* source) {
 // ------------------------------------------------------------------------------------------
 
 const std::vector<std::string>& topLevelKeys() {
-  static const std::vector<std::string> keys = {"name",      "robot",     "duration", "robot_mass",
-                                                "generator", "reference", "pushes",   "walking"};
+  static const std::vector<std::string> keys = {"name",       "robot",     "duration",
+                                                "robot_mass", "generator", "reference",
+                                                "pushes",     "obstacles", "walking"};
   return keys;
 }
 
 GeneratorSettings readGenerator(const YAML::Node& node, const Source& source) {
   GeneratorSettings settings;
   if (!node.IsDefined()) return settings;
-  const Entries entries = readMap(node, "generator",
-                                  {"algorithm", "sqp_iterations", "max_sqp_iterations",
-                                   "sqp_tolerance", "max_qp_iterations", "slack_weight",
-                                   "fall_capture_distance"},
-                                  "a map of generator settings", source, /*null_is_empty=*/true);
+  const Entries entries = readMap(
+      node, "generator",
+      {"algorithm", "sqp_iterations", "max_sqp_iterations", "sqp_tolerance", "max_qp_iterations",
+       "slack_weight", "fall_capture_distance", "max_obstacles_in_qp", "obstacle_reach"},
+      "a map of generator settings", source, /*null_is_empty=*/true);
   if (present(entries, "algorithm")) {
     const YAML::Node algorithm = entry(entries, "algorithm");
     if (!algorithm.IsScalar() ||
@@ -617,6 +618,20 @@ GeneratorSettings readGenerator(const YAML::Node& node, const Source& source) {
   if (present(entries, "fall_capture_distance")) {
     settings.fall_capture_distance =
         readPositive(entry(entries, "fall_capture_distance"), "generator.fall_capture_distance",
+                     "a positive distance in m", source);
+  }
+  if (present(entries, "max_obstacles_in_qp")) {
+    const std::string expected = "an integer in [0, 32] (obstacles in the QP at each sample)";
+    settings.max_obstacles_in_qp =
+        readInteger(entry(entries, "max_obstacles_in_qp"), "generator.max_obstacles_in_qp", 0,
+                    expected, source);
+    if (settings.max_obstacles_in_qp > 32) {
+      source.fail("generator.max_obstacles_in_qp", expected, entry(entries, "max_obstacles_in_qp"));
+    }
+  }
+  if (present(entries, "obstacle_reach")) {
+    settings.obstacle_reach =
+        readPositive(entry(entries, "obstacle_reach"), "generator.obstacle_reach",
                      "a positive distance in m", source);
   }
   return settings;
@@ -671,6 +686,99 @@ std::vector<Push> readPushes(const YAML::Node& node, const Source& source) {
   return pushes;
 }
 
+// Convex obstacles (paper Sec. III-D): the keys depend on the type, read first.
+std::vector<Obstacle> readObstacles(const YAML::Node& node, const Source& source) {
+  std::vector<Obstacle> obstacles;
+  if (!node.IsDefined() || node.IsNull()) return obstacles;
+  if (!node.IsSequence()) {
+    source.fail("obstacles",
+                "a list of obstacles such as {type: circle, center: [x, y], radius: r, margin: m}",
+                node);
+  }
+  for (std::size_t i = 0; i < node.size(); ++i) {
+    const std::string key = indexKey("obstacles", i);
+    const YAML::Node item = node[i];
+    const std::string map_expected = "a map {type: circle, box or polygon, ...} (SCENARIOS.md)";
+    if (!item.IsMap()) source.fail(key, map_expected, item);
+    // (A missing key of a const map is an invalid node: replace it by an undefined one.)
+    const YAML::Node found_type = item["type"];
+    const YAML::Node type_node =
+        found_type.IsDefined() ? found_type : YAML::Node(YAML::NodeType::Undefined);
+    Obstacle obstacle;
+    std::vector<std::string> keys;
+    const std::string type = type_node.IsScalar() ? type_node.Scalar() : "";
+    if (type == "circle") {
+      obstacle.type = ObstacleType::kCircle;
+      keys = {"type", "center", "radius", "margin"};
+    } else if (type == "box") {
+      obstacle.type = ObstacleType::kBox;
+      keys = {"type", "center", "size", "yaw", "margin"};
+    } else if (type == "polygon") {
+      obstacle.type = ObstacleType::kPolygon;
+      keys = {"type", "vertices", "margin"};
+    } else {
+      source.fail(key + ".type", "circle, box or polygon", type_node);
+    }
+    const Entries entries = readMap(item, key, keys, map_expected, source);
+    if (obstacle.type == ObstacleType::kCircle || obstacle.type == ObstacleType::kBox) {
+      obstacle.center = readVector<2>(entry(entries, "center"), key + ".center",
+                                      "[x, y] in m, world frame (2 numbers)", source);
+    }
+    if (obstacle.type == ObstacleType::kCircle) {
+      obstacle.radius =
+          readPositive(entry(entries, "radius"), key + ".radius", "a positive radius in m", source);
+    }
+    if (obstacle.type == ObstacleType::kBox) {
+      const std::string size_expected = "[length along its x, width] in m (2 positive numbers)";
+      obstacle.size = readVector<2>(entry(entries, "size"), key + ".size", size_expected, source);
+      if (!(obstacle.size.minCoeff() > 0.0))
+        source.fail(key + ".size", size_expected, entry(entries, "size"));
+      if (present(entries, "yaw")) {
+        obstacle.yaw = readNumber(entry(entries, "yaw"), key + ".yaw", "an angle in rad", source);
+      }
+    }
+    if (obstacle.type == ObstacleType::kPolygon) {
+      const std::string vertices_expected =
+          "a list of at least 3 [x, y] vertices in m, world frame, of a convex polygon";
+      const YAML::Node vertices = entry(entries, "vertices");
+      if (!vertices.IsDefined() || !vertices.IsSequence() || vertices.size() < 3) {
+        source.fail(key + ".vertices", vertices_expected, vertices);
+      }
+      for (std::size_t v = 0; v < vertices.size(); ++v) {
+        obstacle.vertices.push_back(readVector<2>(vertices[v], indexKey(key + ".vertices", v),
+                                                  "[x, y] in m (2 numbers)", source));
+      }
+    }
+    if (present(entries, "margin")) {
+      obstacle.margin = readNumberAtLeast(entry(entries, "margin"), key + ".margin", 0.0,
+                                          "a distance >= 0 in m", source);
+    }
+    // Shape checks owned by libwpg (convexity, degenerate polygons). Their message reads
+    // "'<key>': expected <field>: <what>"; ours names the field's key instead.
+    try {
+      obstacle.validate(key);
+    } catch (const std::invalid_argument& error) {
+      std::string message = error.what();
+      std::string field_key = key;
+      const std::string prefix = "'" + key + "': ";
+      if (message.compare(0, prefix.size(), prefix) == 0) message.erase(0, prefix.size());
+      const std::string expected = "expected ";
+      const std::size_t colon = message.find(": ");
+      if (message.compare(0, expected.size(), expected) == 0 && colon != std::string::npos) {
+        const std::string field = message.substr(expected.size(), colon - expected.size());
+        if (!field.empty() &&
+            field.find_first_not_of("abcdefghijklmnopqrstuvwxyz_") == std::string::npos) {
+          field_key = childKey(key, field);
+          message = expected + message.substr(colon + 2);
+        }
+      }
+      source.failWith(field_key, message);
+    }
+    obstacles.push_back(obstacle);
+  }
+  return obstacles;
+}
+
 // ------------------------------------------------------------------------------------------
 // The resolved scenario, emitted: every key explicit, numbers in a canonical form.
 // ------------------------------------------------------------------------------------------
@@ -700,6 +808,8 @@ std::string emitResolved(const Scenario& scenario) {
   out << YAML::Key << "slack_weight" << YAML::Value << formatNumber(generator.slack_weight);
   out << YAML::Key << "fall_capture_distance" << YAML::Value
       << formatNumber(generator.fall_capture_distance);
+  out << YAML::Key << "max_obstacles_in_qp" << YAML::Value << generator.max_obstacles_in_qp;
+  out << YAML::Key << "obstacle_reach" << YAML::Value << formatNumber(generator.obstacle_reach);
   out << YAML::EndMap;
 
   out << YAML::Key << "reference" << YAML::Value;
@@ -723,6 +833,33 @@ std::string emitResolved(const Scenario& scenario) {
     out << YAML::Key << "force" << YAML::Value;
     emitNumbers(out, push.force.data(), 2);
     out << YAML::Key << "duration" << YAML::Value << formatNumber(push.duration);
+    out << YAML::EndMap;
+  }
+  out << YAML::EndSeq;
+
+  out << YAML::Key << "obstacles" << YAML::Value;
+  if (request.obstacles.empty()) out << YAML::Flow;
+  out << YAML::BeginSeq;
+  for (const Obstacle& obstacle : request.obstacles) {
+    out << YAML::Flow << YAML::BeginMap;
+    out << YAML::Key << "type" << YAML::Value << obstacleTypeName(obstacle.type);
+    if (obstacle.type == ObstacleType::kPolygon) {
+      out << YAML::Key << "vertices" << YAML::Value << YAML::Flow << YAML::BeginSeq;
+      for (const Eigen::Vector2d& vertex : obstacle.vertices) emitNumbers(out, vertex.data(), 2);
+      out << YAML::EndSeq;
+    } else {
+      out << YAML::Key << "center" << YAML::Value;
+      emitNumbers(out, obstacle.center.data(), 2);
+    }
+    if (obstacle.type == ObstacleType::kCircle) {
+      out << YAML::Key << "radius" << YAML::Value << formatNumber(obstacle.radius);
+    }
+    if (obstacle.type == ObstacleType::kBox) {
+      out << YAML::Key << "size" << YAML::Value;
+      emitNumbers(out, obstacle.size.data(), 2);
+      out << YAML::Key << "yaw" << YAML::Value << formatNumber(obstacle.yaw);
+    }
+    out << YAML::Key << "margin" << YAML::Value << formatNumber(obstacle.margin);
     out << YAML::EndMap;
   }
   out << YAML::EndSeq;
@@ -830,6 +967,7 @@ Scenario loadScenario(const std::string& path, const std::vector<std::string>& o
     scenario.request.generator = readGenerator(entry(entries, "generator"), source);
     scenario.request.reference = readReference(entry(entries, "reference"), source);
     scenario.request.pushes = readPushes(entry(entries, "pushes"), source);
+    scenario.request.obstacles = readObstacles(entry(entries, "obstacles"), source);
   } catch (const YAML::Exception& error) {
     // Not expected (types are checked before conversion); still one line naming the file.
     throw InputError(oneLine(path + ": " + error.what()));

@@ -2,6 +2,7 @@
 // One run, written to HDF5 (layout: datasets/SCHEMA.md, a contract with every reader).
 #include <mutex>
 #include <string>
+#include <vector>
 
 #include "wpg/datasets/scenario.hpp"
 #include "wpg/walk_generator.hpp"
@@ -11,16 +12,30 @@ namespace wpg::datasets {
 // The HDF5 schema version written in the root attribute `schema_version`.
 constexpr int kRunDatasetSchemaVersion = 1;
 
+// The sole rectangles of the landed footsteps against the obstacles, one entry per row of
+// WalkTrajectory::footsteps, as computed by the caller with the FCL world (planning/:
+// wpg::planning::checkFootsteps returns these columns under the same names). datasets/ does
+// not link FCL; the step centres' clearances it computes itself (libwpg's exact 2-D distance).
+struct FootstepClearances {
+  std::vector<double> clearance;        // min over obstacles of sd(sole, obstacle) - margin [m]
+  std::vector<int> clearance_obstacle;  // index of the obstacle of that minimum
+  std::vector<double> foot_distance;    // min over obstacles of sd(sole, obstacle) [m]
+};
+
 // Writes `result` of `scenario` to `path` (group /runs/<scenario.name>), atomically: the file
 // is written as `<path>.tmp-<pid>` in the same directory, then renamed over `path`; on any
 // error the temporary file is removed and `path` is left as it was. Creates the parent
 // directory when missing.
 //
-// Throws std::invalid_argument when the trajectory's per-sample arrays differ in length or the
-// scenario name cannot be an HDF5 group name, std::runtime_error on I/O errors (message names
-// the path).
+// The scenario's obstacles go to /runs/<name>/obstacles/, the footstep clearances to
+// /runs/<name>/checks/ (when the scenario has obstacles; `clearances` may be null, then only
+// the step centres are checked).
+//
+// Throws std::invalid_argument when the trajectory's per-sample arrays differ in length, a
+// column of `clearances` does not have one entry per footstep, or the scenario name cannot be
+// an HDF5 group name, std::runtime_error on I/O errors (message names the path).
 void writeRunDataset(const std::string& path, const Scenario& scenario,
-                     const wpg::WalkResult& result);
+                     const wpg::WalkResult& result, const FootstepClearances* clearances = nullptr);
 
 // Debian's HDF5 is built without thread safety: every use of the HDF5 library in this process
 // (writeRunDataset takes it itself) must hold this lock, e.g. when batch workers write files.

@@ -1,0 +1,46 @@
+#pragma once
+// After a run: every landed footstep checked with FCL against every obstacle (issue 3). Two
+// numbers per step, because the NMPC and the robot see obstacles differently:
+//  - the step centre (ankle) against the obstacle grown by its margin: the constraint the NMPC
+//    enforces (eq. 18-19 generalized: d(f) - m >= 0), so it must never be negative;
+//  - the sole rectangle against the obstacle grown by its margin: what the foot really
+//    occupies. Steps on the edge of the margin make it negative by up to the sole's half
+//    diagonal (0.129 m for HRP-2) while the centre constraint holds; and against the obstacle
+//    itself (margin not counted), which is negative only when the foot touches the obstacle.
+// The columns match the dataset's /runs/<name>/checks/step_* (datasets/SCHEMA.md), so that the
+// caller passes them to wpg::datasets::writeRunDataset as they are.
+#include <vector>
+
+#include "wpg/planning/world.hpp"
+#include "wpg/walk_trajectory.hpp"
+#include "wpg/walking_parameters.hpp"
+
+namespace wpg::planning {
+
+// One entry per row of WalkTrajectory::footsteps (the two initial feet included). In a world
+// without obstacles the distances are +infinity and the indices -1.
+struct FootstepObstacleReport {
+  // min over obstacles of signed_distance(sole rectangle, obstacle) - margin [m]
+  std::vector<double> clearance;
+  std::vector<int> clearance_obstacle;  // the obstacle of that minimum
+  // min over obstacles of signed_distance(sole rectangle, obstacle) [m], margin not counted
+  std::vector<double> foot_distance;
+  // min over obstacles of signed_distance(ankle point, obstacle) - margin [m]: the NMPC's
+  // constraint on the step centre
+  std::vector<double> centre_clearance;
+  std::vector<int> centre_clearance_obstacle;
+
+  // Summaries (the same minima over all steps; +infinity and -1 when there is nothing).
+  double min_clearance = 0.0;
+  int min_clearance_step = -1;
+  double min_foot_distance = 0.0;
+  int min_foot_distance_step = -1;
+  double min_centre_clearance = 0.0;
+  int min_centre_clearance_step = -1;
+};
+
+// The sole is parameters.foot_length x parameters.foot_width, centred on the ankle.
+FootstepObstacleReport checkFootsteps(const World& world, const wpg::WalkingParameters& parameters,
+                                      const wpg::WalkTrajectory& trajectory);
+
+}  // namespace wpg::planning

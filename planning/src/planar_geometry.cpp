@@ -1,0 +1,129 @@
+#include "planar_geometry.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace wpg::planning {
+
+double circleSignedDistance(const Eigen::Vector2d& center, double radius,
+                            const Eigen::Vector2d& point, Eigen::Vector2d* gradient) {
+  const Eigen::Vector2d offset = point - center;
+  const double norm = offset.norm();
+  if (gradient) *gradient = norm > 0.0 ? Eigen::Vector2d(offset / norm) : Eigen::Vector2d::UnitX();
+  return norm - radius;
+}
+
+double polygonSignedDistance(const std::vector<Eigen::Vector2d>& polygon,
+                             const Eigen::Vector2d& point, Eigen::Vector2d* gradient) {
+  const std::size_t n = polygon.size();
+  double deepest_plane = -std::numeric_limits<double>::infinity();
+  Eigen::Vector2d deepest_normal = Eigen::Vector2d::UnitX();
+  double nearest = std::numeric_limits<double>::infinity();
+  Eigen::Vector2d nearest_point = point;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Eigen::Vector2d& a = polygon[i];
+    const Eigen::Vector2d edge = polygon[(i + 1) % n] - a;
+    const Eigen::Vector2d normal = Eigen::Vector2d(edge.y(), -edge.x()).normalized();
+    const double plane = normal.dot(point - a);
+    if (plane > deepest_plane) {
+      deepest_plane = plane;
+      deepest_normal = normal;
+    }
+    const double s = std::clamp((point - a).dot(edge) / edge.squaredNorm(), 0.0, 1.0);
+    const Eigen::Vector2d on_edge = a + s * edge;
+    const double distance = (point - on_edge).norm();
+    if (distance < nearest) {
+      nearest = distance;
+      nearest_point = on_edge;
+    }
+  }
+  if (deepest_plane <= 0.0) {  // inside or on the boundary
+    if (gradient) *gradient = deepest_normal;
+    return deepest_plane;
+  }
+  if (gradient) *gradient = (point - nearest_point) / nearest;
+  return nearest;
+}
+
+namespace {
+
+Eigen::Vector2d closestOnSegment(const Eigen::Vector2d& a, const Eigen::Vector2d& b,
+                                 const Eigen::Vector2d& point) {
+  const Eigen::Vector2d edge = b - a;
+  return a + std::clamp((point - a).dot(edge) / edge.squaredNorm(), 0.0, 1.0) * edge;
+}
+
+}  // namespace
+
+Eigen::Vector2d closestPointOnNearestEdge(const std::vector<Eigen::Vector2d>& polygon,
+                                          const Eigen::Vector2d& on_boundary,
+                                          const Eigen::Vector2d& point) {
+  const std::size_t n = polygon.size();
+  std::size_t best = 0;
+  double best_distance = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < n; ++i) {
+    const double distance =
+        (on_boundary - closestOnSegment(polygon[i], polygon[(i + 1) % n], on_boundary)).norm();
+    if (distance < best_distance) {
+      best_distance = distance;
+      best = i;
+    }
+  }
+  return closestOnSegment(polygon[best], polygon[(best + 1) % n], point);
+}
+
+std::vector<Eigen::Vector2d> rectangleVertices(const Eigen::Vector2d& center, double yaw,
+                                               double length, double width) {
+  const double c = std::cos(yaw), s = std::sin(yaw);
+  const double hx = 0.5 * length, hy = 0.5 * width;
+  std::vector<Eigen::Vector2d> corners;
+  corners.reserve(4);
+  for (const auto& local : {Eigen::Vector2d(-hx, -hy), Eigen::Vector2d(hx, -hy),
+                            Eigen::Vector2d(hx, hy), Eigen::Vector2d(-hx, hy)}) {
+    corners.emplace_back(center.x() + c * local.x() - s * local.y(),
+                         center.y() + s * local.x() + c * local.y());
+  }
+  return corners;
+}
+
+namespace {
+
+// Smallest overlap of the projections of a and b on the outward normals of `edges`' edges.
+double smallestOverlap(const std::vector<Eigen::Vector2d>& edges,
+                       const std::vector<Eigen::Vector2d>& a,
+                       const std::vector<Eigen::Vector2d>& b) {
+  double smallest = std::numeric_limits<double>::infinity();
+  const std::size_t n = edges.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Eigen::Vector2d edge = edges[(i + 1) % n] - edges[i];
+    const Eigen::Vector2d axis = Eigen::Vector2d(edge.y(), -edge.x()).normalized();
+    double a_min = std::numeric_limits<double>::infinity(), a_max = -a_min;
+    double b_min = a_min, b_max = a_max;
+    for (const Eigen::Vector2d& v : a) {
+      a_min = std::min(a_min, axis.dot(v));
+      a_max = std::max(a_max, axis.dot(v));
+    }
+    for (const Eigen::Vector2d& v : b) {
+      b_min = std::min(b_min, axis.dot(v));
+      b_max = std::max(b_max, axis.dot(v));
+    }
+    smallest = std::min(smallest, std::min(a_max - b_min, b_max - a_min));
+  }
+  return smallest;
+}
+
+}  // namespace
+
+double polygonPenetration(const std::vector<Eigen::Vector2d>& a,
+                          const std::vector<Eigen::Vector2d>& b) {
+  // For two convex polygons the minimum translation is along one of their edge normals.
+  return std::min(smallestOverlap(a, a, b), smallestOverlap(b, a, b));
+}
+
+double circlePolygonPenetration(const Eigen::Vector2d& center, double radius,
+                                const std::vector<Eigen::Vector2d>& polygon) {
+  return radius - polygonSignedDistance(polygon, center, nullptr);
+}
+
+}  // namespace wpg::planning
