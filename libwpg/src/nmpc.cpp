@@ -326,16 +326,18 @@ void evaluateObstacleConstraints(const NmpcModel& model, const NmpcProblem& prob
       const Obstacle& obstacle = (*problem.obstacles)[index];
       const Eigen::Vector2d F(U(L.stepX() + i), U(L.stepY() + i));
       Eigen::Vector2d dg;
+      const double margin = obstacle.margin + model.parameters().obstacle_foot_radius;
       if (obstacle.type == ObstacleType::kCircle) {
-        // eq. (18): (F - c)^2 >= (R + m)^2  <=>  g = (R + m)^2 - |F - c|^2 <= 0
+        // eq. (18): (F - c)^2 >= (R + m)^2  <=>  g = (R + m)^2 - |F - c|^2 <= 0, with m the
+        // obstacle's margin grown by the sole's radius (obstacle_foot_radius)
         const Eigen::Vector2d d = F - obstacle.center;
-        const double r = obstacle.radius + obstacle.margin;
+        const double r = obstacle.radius + margin;
         g(row) = r * r - d.squaredNorm();
         dg = -2.0 * d;
       } else {
         // d(F) >= m  <=>  g = m - d(F) <= 0, with d the signed distance to the convex shape
         Eigen::Vector2d gradient;
-        g(row) = obstacle.margin - problem.distance->signedDistance(index, F, &gradient);
+        g(row) = margin - problem.distance->signedDistance(index, F, &gradient);
         dg = -gradient;
       }
       if (jacobian) {

@@ -1,6 +1,7 @@
 #include "wpg/walk_generator.hpp"
 
 #include <cmath>
+#include <memory>
 #include <stdexcept>
 
 #include "wpg/pattern_generator.hpp"
@@ -13,7 +14,31 @@ WalkResult generateWalk(const WalkingParameters& parameters, const WalkRequest& 
   parameters.validate();
   request.validate();
   PatternGenerator generator(parameters, request.generator);
-  if (!request.obstacles.empty()) generator.setObstacles(&request.obstacles, world);
+  // Obstacle distances: the world model when given, else libwpg's exact 2-D distance.
+  std::unique_ptr<AnalyticObstacleDistance> analytic;
+  const ObstacleDistanceOracle* distance = world;
+  if (!request.obstacles.empty()) {
+    if (!distance) {
+      analytic = std::make_unique<AnalyticObstacleDistance>(request.obstacles);
+      distance = analytic.get();
+    }
+    generator.setObstacles(&request.obstacles, distance);
+    // The feet must start clear of every obstacle grown by its margin (and the sole radius).
+    for (int o = 0; o < static_cast<int>(request.obstacles.size()); ++o) {
+      for (FootSide side : {FootSide::kLeft, FootSide::kRight}) {
+        const double clearance =
+            distance->signedDistance(o, generator.footPose(side).head<2>(), nullptr) -
+            request.obstacles[o].margin - parameters.obstacle_foot_radius;
+        if (clearance < 0.0) {
+          throw std::invalid_argument(
+              "'obstacles[" + std::to_string(o) + "]': expected the obstacle, its margin and " +
+              "the sole radius clear of the initial feet, but the " +
+              (side == FootSide::kLeft ? "left" : "right") + " foot is " +
+              std::to_string(-clearance) + " m inside");
+        }
+      }
+    }
+  }
   const double T = parameters.sampling_period;
   const double dt = parameters.control_period;
   const int sub_samples = static_cast<int>(std::lround(T / dt));
@@ -103,6 +128,23 @@ WalkResult generateWalk(const WalkingParameters& parameters, const WalkRequest& 
       integrateJerk(com_y, plan.jerk_y, dt, push.y());
     }
     if (generator.advance(com_x, com_y)) out.footsteps.push_back(generator.lastLanding());
+  }
+  // Relaxed obstacle rows (a robot enclosed or pushed into an obstacle) may let a step land in
+  // a margin: the walk is then recorded as failed.
+  if (result.success && distance) {
+    for (const Footstep& step : out.footsteps) {
+      if (step.landing_time <= 0.0) continue;
+      for (int o = 0; o < static_cast<int>(request.obstacles.size()); ++o) {
+        const double clearance = distance->signedDistance(o, step.pose.head<2>(), nullptr) -
+                                 request.obstacles[o].margin - parameters.obstacle_foot_radius;
+        if (clearance < -1e-6 && result.success) {
+          result.success = false;
+          result.message = "the step landing at t = " + std::to_string(step.landing_time) +
+                           " s is " + std::to_string(-clearance) + " m inside obstacle " +
+                           std::to_string(o) + "'s margin (its constraint had to be relaxed)";
+        }
+      }
+    }
   }
   // The sample at the end belongs to the last period: a swing foot still in the air is where
   // its polynomial puts it (not back at its lift-off pose).

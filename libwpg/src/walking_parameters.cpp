@@ -64,6 +64,7 @@ void WalkingParameters::validate() const {
   require(copHalfWidth() > 0.0, "cop_margin_y", "less than half the foot width", cop_margin_y);
   requirePositive(initial_foot_separation, "initial_foot_separation");
   requirePositive(stop_foot_separation, "stop_foot_separation");
+  requireNonNegative(obstacle_foot_radius, "obstacle_foot_radius");
   for (int i = 0; i < 5; ++i) {
     require(std::isfinite(feasibility_x[i]), "feasibility_x", "finite numbers", feasibility_x[i]);
     require(std::isfinite(feasibility_y[i]), "feasibility_y", "finite numbers", feasibility_y[i]);

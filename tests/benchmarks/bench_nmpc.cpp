@@ -16,6 +16,7 @@
 #include "wpg/datasets/scenario.hpp"
 #include "wpg/lipm_prediction.hpp"
 #include "wpg/pattern_generator.hpp"
+#include "wpg/planning/world.hpp"
 #include "wpg/walk_generator.hpp"
 
 namespace {
@@ -30,13 +31,16 @@ void reportPercentiles(benchmark::State& state, std::vector<double>& samples) {
 }
 
 void runIterations(benchmark::State& state, const Eigen::Vector3d& command,
-                   wpg::GeneratorAlgorithm algorithm, int sqp_iterations) {
+                   wpg::GeneratorAlgorithm algorithm, int sqp_iterations,
+                   const wpg::planning::World* world = nullptr) {
   wpg::WalkingParameters parameters;
   parameters.max_step_yaw_change = 0.17;  // turning at 0.2 rad/s needs it (robots/hrp2/README.md)
   wpg::GeneratorSettings settings;
   settings.algorithm = algorithm;
   settings.sqp_iterations = sqp_iterations;
+  if (world) settings.max_obstacles_in_qp = 3;
   wpg::PatternGenerator generator(parameters, settings);
+  if (world) generator.setObstacles(&world->obstacles(), world);
   const double T = parameters.sampling_period, dt = parameters.control_period;
   Eigen::Vector3d com_x = generator.comX(), com_y = generator.comY();
   double t = 0.0;
@@ -64,6 +68,8 @@ void runIterations(benchmark::State& state, const Eigen::Vector3d& command,
     advance();
     if (generator.lastSolve().status != wpg::IterationStatus::kSolved)
       state.SkipWithError("an NMPC iteration was not solved");
+    if (world && (generator.problem().obstacle_slot.array() < 0).any())
+      state.SkipWithError("fewer than three obstacles within reach");
   }
   reportPercentiles(state, samples);
 }
@@ -80,6 +86,34 @@ void BM_NmpcConvergedSqpForward(benchmark::State& state) {
 void BM_LmpcIterationCurve(benchmark::State& state) {
   runIterations(state, {0.2, 0.0, 0.2}, wpg::GeneratorAlgorithm::kLmpc, 1);
 }
+// Issue acceptance: three obstacles within reach of the previewed steps at every iteration
+// (a corridor of circles, boxes and polygons on both sides, through the FCL world).
+void BM_NmpcIterationThreeObstacles(benchmark::State& state) {
+  std::vector<wpg::Obstacle> obstacles;
+  for (int i = 0; i < 60; ++i) {
+    wpg::Obstacle o;
+    const double x = 0.5 * i, y = (i % 2 ? 1.0 : -1.0);
+    o.margin = 0.1;
+    if (i % 3 == 0) {
+      o.type = wpg::ObstacleType::kCircle;
+      o.center = Eigen::Vector2d(x, y);
+      o.radius = 0.15;
+    } else if (i % 3 == 1) {
+      o.type = wpg::ObstacleType::kBox;
+      o.center = Eigen::Vector2d(x, y);
+      o.size = Eigen::Vector2d(0.3, 0.2);
+      o.yaw = 0.3;
+    } else {
+      o.type = wpg::ObstacleType::kPolygon;
+      o.vertices = {{x - 0.15, y - 0.1}, {x + 0.15, y - 0.1}, {x, y + 0.15}};
+    }
+    obstacles.push_back(o);
+  }
+  const wpg::planning::World world(obstacles);
+  runIterations(state, {0.2, 0.0, 0.0}, wpg::GeneratorAlgorithm::kNmpc, 1, &world);
+}
+BENCHMARK(BM_NmpcIterationThreeObstacles)->UseManualTime()->Unit(benchmark::kMicrosecond)->MinTime(1.0);
+
 BENCHMARK(BM_NmpcIterationForward)->UseManualTime()->Unit(benchmark::kMicrosecond)->MinTime(1.0);
 BENCHMARK(BM_NmpcIterationCurve)->UseManualTime()->Unit(benchmark::kMicrosecond)->MinTime(1.0);
 BENCHMARK(BM_NmpcConvergedSqpForward)->UseManualTime()->Unit(benchmark::kMicrosecond);

@@ -141,6 +141,7 @@ TEST(ShippedScenarios, RobotFileRestatesTheStructDefaults) {
   EXPECT_EQ(loaded.cop_margin_y, defaults.cop_margin_y);
   EXPECT_EQ(loaded.initial_foot_separation, defaults.initial_foot_separation);
   EXPECT_EQ(loaded.stop_foot_separation, defaults.stop_foot_separation);
+  EXPECT_EQ(loaded.obstacle_foot_radius, defaults.obstacle_foot_radius);
   EXPECT_EQ(loaded.feasibility_x, defaults.feasibility_x);
   EXPECT_EQ(loaded.feasibility_y, defaults.feasibility_y);
   EXPECT_EQ(loaded.max_step_yaw_change, defaults.max_step_yaw_change);

@@ -232,11 +232,13 @@ TEST(NmpcJacobian, ObstacleRowsMatchFiniteDifferences) {
           for (int k = 0; k < slots; ++k) EXPECT_EQ(g(L.obstacleRow(i, k)), -1.0);
           continue;
         }
-        const double r = obstacles[0].radius + obstacles[0].margin;
+        // margins grown by the sole radius (WalkingParameters::obstacle_foot_radius)
+        const double foot = model.parameters().obstacle_foot_radius;
+        const double r = obstacles[0].radius + obstacles[0].margin + foot;
         EXPECT_NEAR(g(L.obstacleRow(i, 0)), r * r - (F - obstacles[0].center).squaredNorm(), 1e-12);
-        EXPECT_NEAR(g(L.obstacleRow(i, 1)), 0.05 - distance.signedDistance(1, F, nullptr), 1e-12);
+        EXPECT_NEAR(g(L.obstacleRow(i, 1)), 0.05 + foot - distance.signedDistance(1, F, nullptr), 1e-12);
         EXPECT_EQ(g(L.obstacleRow(i, 2)), -1.0);
-        EXPECT_NEAR(g(L.obstacleRow(i, 3)), 0.02 - distance.signedDistance(2, F, nullptr), 1e-12);
+        EXPECT_NEAR(g(L.obstacleRow(i, 3)), 0.02 + foot - distance.signedDistance(2, F, nullptr), 1e-12);
       }
     }
   }

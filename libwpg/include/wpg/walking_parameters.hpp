@@ -35,6 +35,10 @@ struct WalkingParameters {
   double cop_margin_y = 0.05;          // security margin removed from each side of the sole [m]
   double initial_foot_separation = 0.19;  // ankle-to-ankle distance when standing [m]
   double stop_foot_separation = 0.20;     // lateral distance of the final side-by-side step [m]
+  // Obstacle constraint (eq. 18-19) on the step centre grown by this radius, so that the whole
+  // sole stays out of the obstacle's margin: the sole's half diagonal for HRP-2. The paper
+  // treats steps as points (0).
+  double obstacle_foot_radius = 0.1287;   // [m]
   // --- step feasibility polygon for a LEFT step, in the right (support) foot frame (Fig. 5);
   //     a right step uses the mirror image (y -> -y). Counter-clockwise order not required.
   std::array<double, 5> feasibility_x{-0.28, -0.2, 0.0, 0.2, 0.28};  // [m]
