@@ -81,18 +81,16 @@ AnalyticObstacleDistance::AnalyticObstacleDistance(const std::vector<Obstacle>& 
   for (const Obstacle& obstacle : obstacles_) vertices_.push_back(obstacle.worldVertices());
 }
 
-double AnalyticObstacleDistance::signedDistance(int index, const Eigen::Vector2d& p,
-                                                Eigen::Vector2d* gradient) const {
-  const Obstacle& obstacle = obstacles_[index];
-  if (obstacle.type == ObstacleType::kCircle) {
-    const Eigen::Vector2d d = p - obstacle.center;
-    const double norm = d.norm();
-    if (gradient) *gradient = norm > 0.0 ? Eigen::Vector2d(d / norm) : Eigen::Vector2d(1.0, 0.0);
-    return norm - obstacle.radius;
-  }
-  // Convex polygon: outside, the distance to the nearest edge segment; inside, minus the
-  // distance to the nearest edge line (= the largest edge-plane value).
-  const std::vector<Eigen::Vector2d>& v = vertices_[index];
+double circleSignedDistance(const Eigen::Vector2d& center, double radius,
+                            const Eigen::Vector2d& point, Eigen::Vector2d* gradient) {
+  const Eigen::Vector2d d = point - center;
+  const double norm = d.norm();
+  if (gradient) *gradient = norm > 0.0 ? Eigen::Vector2d(d / norm) : Eigen::Vector2d(1.0, 0.0);
+  return norm - radius;
+}
+
+double polygonSignedDistance(const std::vector<Eigen::Vector2d>& v, const Eigen::Vector2d& p,
+                             Eigen::Vector2d* gradient) {
   const int n = static_cast<int>(v.size());
   double best_plane = -std::numeric_limits<double>::infinity();
   Eigen::Vector2d best_normal = Eigen::Vector2d::UnitX();
@@ -121,6 +119,14 @@ double AnalyticObstacleDistance::signedDistance(int index, const Eigen::Vector2d
   }
   if (gradient) *gradient = (p - best_closest) / best_outside;
   return best_outside;
+}
+
+double AnalyticObstacleDistance::signedDistance(int index, const Eigen::Vector2d& p,
+                                                Eigen::Vector2d* gradient) const {
+  const Obstacle& obstacle = obstacles_[index];
+  if (obstacle.type == ObstacleType::kCircle)
+    return circleSignedDistance(obstacle.center, obstacle.radius, p, gradient);
+  return polygonSignedDistance(vertices_[index], p, gradient);
 }
 
 }  // namespace wpg

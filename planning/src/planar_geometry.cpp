@@ -6,46 +6,6 @@
 
 namespace wpg::planning {
 
-double circleSignedDistance(const Eigen::Vector2d& center, double radius,
-                            const Eigen::Vector2d& point, Eigen::Vector2d* gradient) {
-  const Eigen::Vector2d offset = point - center;
-  const double norm = offset.norm();
-  if (gradient) *gradient = norm > 0.0 ? Eigen::Vector2d(offset / norm) : Eigen::Vector2d::UnitX();
-  return norm - radius;
-}
-
-double polygonSignedDistance(const std::vector<Eigen::Vector2d>& polygon,
-                             const Eigen::Vector2d& point, Eigen::Vector2d* gradient) {
-  const std::size_t n = polygon.size();
-  double deepest_plane = -std::numeric_limits<double>::infinity();
-  Eigen::Vector2d deepest_normal = Eigen::Vector2d::UnitX();
-  double nearest = std::numeric_limits<double>::infinity();
-  Eigen::Vector2d nearest_point = point;
-  for (std::size_t i = 0; i < n; ++i) {
-    const Eigen::Vector2d& a = polygon[i];
-    const Eigen::Vector2d edge = polygon[(i + 1) % n] - a;
-    const Eigen::Vector2d normal = Eigen::Vector2d(edge.y(), -edge.x()).normalized();
-    const double plane = normal.dot(point - a);
-    if (plane > deepest_plane) {
-      deepest_plane = plane;
-      deepest_normal = normal;
-    }
-    const double s = std::clamp((point - a).dot(edge) / edge.squaredNorm(), 0.0, 1.0);
-    const Eigen::Vector2d on_edge = a + s * edge;
-    const double distance = (point - on_edge).norm();
-    if (distance < nearest) {
-      nearest = distance;
-      nearest_point = on_edge;
-    }
-  }
-  if (deepest_plane <= 0.0) {  // inside or on the boundary
-    if (gradient) *gradient = deepest_normal;
-    return deepest_plane;
-  }
-  if (gradient) *gradient = (point - nearest_point) / nearest;
-  return nearest;
-}
-
 namespace {
 
 Eigen::Vector2d closestOnSegment(const Eigen::Vector2d& a, const Eigen::Vector2d& b,

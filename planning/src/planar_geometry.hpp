@@ -4,18 +4,13 @@
 #include <Eigen/Core>
 #include <vector>
 
+#include "wpg/obstacles.hpp"
+
 namespace wpg::planning {
 
-// Signed distance from `point` to the circle (center, radius): > 0 outside; gradient (optional)
-// the unit vector from the centre to the point (+x at the centre).
-double circleSignedDistance(const Eigen::Vector2d& center, double radius,
-                            const Eigen::Vector2d& point, Eigen::Vector2d* gradient);
-
-// Signed distance from `point` to a convex polygon (counter-clockwise): outside, the distance
-// to the nearest edge; inside, minus the distance to the nearest edge line. Gradient
-// (optional): away from the polygon (the nearest edge's outward normal inside).
-double polygonSignedDistance(const std::vector<Eigen::Vector2d>& polygon,
-                             const Eigen::Vector2d& point, Eigen::Vector2d* gradient);
+// The exact circle and polygon signed distances are libwpg's (wpg/obstacles.hpp):
+using wpg::circleSignedDistance;
+using wpg::polygonSignedDistance;
 
 // The point of the edge of `polygon` nearest to `on_boundary` (a point on, or within a rounding
 // error of, the boundary) that is closest to `point`: refines an approximate nearest point.

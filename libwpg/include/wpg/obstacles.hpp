@@ -59,6 +59,15 @@ class AnalyticObstacleDistance : public ObstacleDistanceOracle {
   std::vector<std::vector<Eigen::Vector2d>> vertices_;  // world, counter-clockwise
 };
 
+// Exact 2-D signed distances (> 0 outside) with their gradient with respect to the point
+// (optional; a unit vector away from the shape): to a circle, and to a convex polygon given
+// counter-clockwise (outside: distance to the nearest edge; inside: minus the distance to the
+// nearest edge line, gradient that edge's outward normal).
+double circleSignedDistance(const Eigen::Vector2d& center, double radius,
+                            const Eigen::Vector2d& point, Eigen::Vector2d* gradient);
+double polygonSignedDistance(const std::vector<Eigen::Vector2d>& polygon,
+                             const Eigen::Vector2d& point, Eigen::Vector2d* gradient);
+
 // Centre and radius of a circle enclosing the obstacle (cheap reach test).
 void boundingCircle(const Obstacle& obstacle, Eigen::Vector2d* center, double* radius);
 
