@@ -3,7 +3,11 @@
 
 For every group under /runs/: on the left the top view (every footstep as an oriented sole
 rectangle centred on the ankle, the CoM and CoP paths, equal axes); on the right CoM and CoP
-x and y against time, and the NMPC solve time per iteration over the support phases.
+x and y against time, and the NMPC solve time per iteration over the support phases. When the
+run was replayed on the multibody model (`zmp_multibody`, `wpg run --filter`, `wpg replay`),
+a bottom row draws the analogue of the paper's Fig. 6: reference CoP (solid blue), multibody
+ZMP before the dynamic filter (dash-dot red) and after it (dashed green) for x and y over a
+few seconds of steady walking, and the distance |CoP - ZMP| over the whole walk.
 
     /usr/bin/python3 plot_run.py RUN.h5 [-o FIG.png] [--run NAME]
 
@@ -41,6 +45,16 @@ STATUS_STYLE = {
 FAILED_STATUSES = (2, 3, 4)  # fallback, iteration limit, fallen: the walk failed
 OBSTACLE_COLOUR = "0.35"
 SCHEMA_DATASETS = ("time", "com", "cop", "support", "footsteps", "footstep_side")
+# The multibody replay (optional): datasets of the run group, and the attributes of multibody/.
+MULTIBODY_DATASETS = ("zmp_multibody", "zmp_multibody_filtered", "com_filtered")
+MULTIBODY_ATTRIBUTES = ("zmp_error_rms_before", "zmp_error_max_before", "zmp_error_rms_after",
+                        "zmp_error_max_after", "ik_failures", "filtered")
+# Fig. 6 of the paper: reference CoP solid blue, ZMP before the filter dash-dot red, after the
+# filter dashed green.
+FIG6_REFERENCE = dict(color="tab:blue", linestyle="-", linewidth=1.4)
+FIG6_BEFORE = dict(color="tab:red", linestyle="-.", linewidth=1.2)
+FIG6_AFTER = dict(color="tab:green", linestyle="--", linewidth=1.4)
+FIG6_WINDOW = 3.0  # [s] of steady walking shown per axis
 
 
 class BadInput(Exception):
@@ -194,6 +208,15 @@ def read_runs(path, only=None):
             if isinstance(mpc, h5py.Group) and "time" in mpc and "solve_time" in mpc:
                 run["mpc"] = {key: np.asarray(mpc[key][()]) for key in mpc.keys()
                               if isinstance(mpc[key], h5py.Dataset)}
+            run["multibody"] = None
+            if isinstance(group.get("zmp_multibody"), h5py.Dataset):
+                multibody = {key: np.asarray(group[key][()]) for key in MULTIBODY_DATASETS
+                             if isinstance(group.get(key), h5py.Dataset)}
+                attributes = group["multibody"].attrs if isinstance(
+                    group.get("multibody"), h5py.Group) else {}
+                multibody.update({key: float(attributes[key]) for key in MULTIBODY_ATTRIBUTES
+                                  if key in attributes})
+                run["multibody"] = multibody
             # a batch may store each run's own scenario text on its group
             run["scenario_text"] = as_text(group.attrs.get("scenario")) or scenario_text
             check_shapes(path, run)
@@ -206,7 +229,15 @@ def read_runs(path, only=None):
 def check_shapes(path, run):
     n = run["time"].shape[0] if run["time"].ndim == 1 else -1
     expected = {"com": (n, 3), "cop": (n, 2), "support": (n,)}
+    for key in (run.get("multibody") or {}):
+        if key in MULTIBODY_DATASETS:
+            expected[key] = (n, 3) if key == "com_filtered" else (n, 2)
     for key, shape in expected.items():
+        if key in MULTIBODY_DATASETS:
+            if run["multibody"][key].shape != shape:
+                raise BadInput("'%s': /runs/%s/%s has shape %s, expected %s"
+                               % (path, run["name"], key, run["multibody"][key].shape, shape))
+            continue
         if run[key].shape[:len(shape)] != shape or n < 0:
             raise BadInput("'%s': /runs/%s/%s has shape %s, expected %s"
                            % (path, run["name"], key, run[key].shape, shape))
@@ -431,17 +462,87 @@ def draw_time_panels(axes, run, pushes):
     ax.grid(True, linewidth=0.4, alpha=0.5)
 
 
+def steady_window(time, support, length=FIG6_WINDOW):
+    """(t0, t1): `length` s of steady walking, from 1 s after the first single support (the
+    start transient), or the whole run when it is shorter."""
+    if len(time) == 0:
+        return 0.0, 1.0
+    single = np.flatnonzero(np.asarray(support) != 0)
+    start = float(time[single[0]]) + 1.0 if len(single) else float(time[0])
+    start = min(start, float(time[-1]) - length)
+    start = max(start, float(time[0]))
+    return start, min(float(time[-1]), start + length)
+
+
+def mm(value):
+    return "%.1f mm" % (1e3 * value)
+
+
+def draw_fig6(axes, run):
+    """The paper's Fig. 6: reference CoP, multibody ZMP before and after the dynamic filter."""
+    time, cop, mb = run["time"], run["cop"], run["multibody"]
+    before = mb["zmp_multibody"]
+    after = mb.get("zmp_multibody_filtered")
+    filtered = after is not None and len(after) == len(time)
+    t0, t1 = steady_window(time, run["support"])
+    chosen = (time >= t0) & (time <= t1)
+    spans = support_spans(time, run["support"])
+    for ax, column, axis_name in ((axes[0], 0, "x"), (axes[1], 1, "y")):
+        shade_support(ax, [s for s in spans if s[1] >= t0 and s[0] <= t1])
+        ax.plot(time[chosen], cop[chosen, column], label="reference CoP", **FIG6_REFERENCE)
+        ax.plot(time[chosen], before[chosen, column], label="multibody ZMP", **FIG6_BEFORE)
+        if filtered:
+            ax.plot(time[chosen], after[chosen, column], label="multibody ZMP, filtered",
+                    **FIG6_AFTER)
+        ax.set_xlim(t0, t1)
+        ax.set_ylabel("ZMP %s [m]" % axis_name)
+        ax.set_xlabel("time [s]")
+        ax.set_title("Fig. 6 analogue, %s: %.1f s of steady walking" % (axis_name, t1 - t0),
+                     fontsize=9)
+        ax.grid(True, linewidth=0.4, alpha=0.5)
+        ax.legend(loc="best", fontsize=7, framealpha=0.85)
+    ax = axes[2]
+    shade_support(ax, spans)
+    ax.plot(time, 1e3 * np.linalg.norm(cop - before, axis=1), label="before the filter",
+            **dict(FIG6_BEFORE, linewidth=0.8))
+    title = "|CoP - multibody ZMP|: RMS %s, max %s" % (
+        mm(mb.get("zmp_error_rms_before", float("nan"))),
+        mm(mb.get("zmp_error_max_before", float("nan"))))
+    if filtered:
+        ax.plot(time, 1e3 * np.linalg.norm(cop - after, axis=1), label="after the filter",
+                **dict(FIG6_AFTER, linewidth=0.9))
+        title = "|CoP - multibody ZMP|: RMS %s -> %s, max %s -> %s" % (
+            mm(mb.get("zmp_error_rms_before", float("nan"))),
+            mm(mb.get("zmp_error_rms_after", float("nan"))),
+            mm(mb.get("zmp_error_max_before", float("nan"))),
+            mm(mb.get("zmp_error_max_after", float("nan"))))
+    ax.axvspan(t0, t1, facecolor="none", edgecolor="0.3", linestyle=":", linewidth=1.0)
+    ax.set_title(title, fontsize=9)
+    ax.set_ylabel("distance [mm]")
+    ax.set_xlabel("time [s]   (dotted box: the window on the left)")
+    ax.set_ylim(bottom=0)
+    ax.grid(True, linewidth=0.4, alpha=0.5)
+    ax.legend(loc="upper right", fontsize=7, framealpha=0.85)
+
+
 def draw(runs, source_path):
     rows = len(runs)
-    fig = plt.figure(figsize=(15, 6.8 * rows))
-    outer = fig.add_gridspec(rows, 1, hspace=0.35)
+    heights = [6.8 + (3.4 if run["multibody"] is not None else 0.0) for run in runs]
+    fig = plt.figure(figsize=(15, sum(heights)))
+    outer = fig.add_gridspec(rows, 1, hspace=0.35 if rows > 1 else 0.0, height_ratios=heights)
     for row, run in enumerate(runs):
         scenario = parse_scenario(run["scenario_text"])
         foot_length = walking_value(scenario, run["scenario_text"], "foot_length",
                                     DEFAULT_FOOT_LENGTH)
         foot_width = walking_value(scenario, run["scenario_text"], "foot_width",
                                    DEFAULT_FOOT_WIDTH)
-        cell = outer[row].subgridspec(3, 2, width_ratios=(1.25, 1.0), hspace=0.45, wspace=0.18)
+        cell = outer[row]
+        if run["multibody"] is not None:
+            split = cell.subgridspec(2, 1, height_ratios=(6.8, 3.4), hspace=0.28)
+            bottom = split[1].subgridspec(1, 3, wspace=0.3)
+            draw_fig6([fig.add_subplot(bottom[0, i]) for i in range(3)], run)
+            cell = split[0]
+        cell = cell.subgridspec(3, 2, width_ratios=(1.25, 1.0), hspace=0.45, wspace=0.18)
         top = fig.add_subplot(cell[:, 0])
         right = [fig.add_subplot(cell[0, 1])]
         right.append(fig.add_subplot(cell[1, 1], sharex=right[0]))

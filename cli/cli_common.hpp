@@ -43,8 +43,31 @@ struct RunOptions {
   std::string output;                  // empty: out/<scenario name>.h5
   std::vector<std::string> overrides;  // "key=value", applied after the file
   bool plot = true;
+  bool replay = false;  // --replay: replay on the multibody model (else the scenario's `replay:`)
+  bool filter = false;  // --filter: replay and dynamic filter (else the scenario's `filter:`)
 };
 int runCommand(const RunOptions& options);
+
+struct ReplayOptions {
+  std::string input;   // a dataset written by `wpg run`
+  std::string output;  // empty: overwrite the input (atomically)
+  bool filter = true;  // --no-filter: replay only
+  bool plot = true;
+};
+int replayCommand(const ReplayOptions& options);
+
+// The shipped scenarios `wpg bench` measures by default: the walk and the paper's experiments.
+inline const std::vector<std::string>& defaultBenchScenarios() {
+  static const std::vector<std::string> names = {"walk_forward", "paper_experiment_a",
+                                                 "paper_experiment_b"};
+  return names;
+}
+
+struct BenchOptions {
+  std::vector<std::string> scenarios = defaultBenchScenarios();
+  std::string json;  // empty: no JSON file
+};
+int benchCommand(const BenchOptions& options);
 
 struct PlotOptions {
   std::string input;

@@ -44,6 +44,47 @@ int main(int argc, char** argv) {
       ->default_str("");
   bool no_plot = false;
   run_app->add_flag("--no-plot", no_plot, "Do not draw the figure");
+  run_app->add_flag("--replay", run.replay,
+                    "Replay the walk on the robot's multibody model (robots/<robot>/<robot>.urdf: "
+                    "walking IK, Simbody inverse dynamics, multibody ZMP). Default: the "
+                    "scenario's `replay:` key (false)");
+  run_app->add_flag("--filter", run.filter,
+                    "Replay and run the dynamic filter (Kajita preview control on the ZMP error, "
+                    "paper Sec. IV) with the scenario's filter_settings; implies --replay. "
+                    "Default: the scenario's `filter:` key (false)");
+
+  ReplayOptions replay;
+  CLI::App* replay_app = app.add_subcommand(
+      "replay",
+      "Replay an existing run dataset on the robot's multibody model with the dynamic filter; "
+      "write it again with the multibody fields (q, zmp_multibody, com_filtered, ...).");
+  replay_app->add_option("run_file", replay.input, "HDF5 dataset written by `wpg run`")
+      ->required()
+      ->type_name("RUN.h5");
+  replay_app->add_option("-o,--output", replay.output, "HDF5 dataset to write; the figure goes next to it (.png)")
+      ->default_str("RUN.h5, overwritten atomically")
+      ->type_name("OUT.h5");
+  bool no_filter = false;
+  replay_app->add_flag("--no-filter", no_filter,
+                       "Replay only: the multibody ZMP of the walk as generated, no dynamic filter");
+  bool replay_no_plot = false;
+  replay_app->add_flag("--no-plot", replay_no_plot, "Do not draw the figure");
+
+  BenchOptions bench;
+  CLI::App* bench_app = app.add_subcommand(
+      "bench",
+      "Time the control chain (NMPC + IK + multibody ZMP + dynamic filter) per NMPC iteration "
+      "on scenarios, as the paper's Sec. V-C table; writes nothing but --json.");
+  std::string default_bench;
+  for (const std::string& name : defaultBenchScenarios()) {
+    default_bench += (default_bench.empty() ? "" : " ") + name;
+  }
+  bench_app->add_option("scenarios", bench.scenarios, "Scenario files or shipped scenario names")
+      ->default_str(default_bench)
+      ->type_name("SCENARIO...");
+  bench_app->add_option("--json", bench.json, "Also write the numbers to this JSON file")
+      ->default_str("none")
+      ->type_name("FILE");
 
   PlotOptions plot;
   CLI::App* plot_app = app.add_subcommand("plot", "Draw the figure of a run dataset (PNG).");
@@ -68,6 +109,12 @@ int main(int argc, char** argv) {
       run.plot = !no_plot;
       return runCommand(run);
     }
+    if (replay_app->parsed()) {
+      replay.filter = !no_filter;
+      replay.plot = !replay_no_plot;
+      return replayCommand(replay);
+    }
+    if (bench_app->parsed()) return benchCommand(bench);
     return plotCommand(plot);
   } catch (const UsageError& e) {
     printError(e.what());

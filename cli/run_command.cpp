@@ -1,4 +1,5 @@
-// `wpg run`: scenario file -> generateWalk -> HDF5 dataset (+ figure) and a short summary.
+// `wpg run`: scenario file -> generateWalk (-> multibody replay and dynamic filter) -> HDF5
+// dataset (+ figure) and a short summary.
 #include <unistd.h>
 
 #include <algorithm>
@@ -10,23 +11,13 @@
 #include <sstream>
 #include <system_error>
 
-#include "cli_common.hpp"
-#include "wpg/datasets/input_error.hpp"
-#include "wpg/datasets/run_dataset.hpp"
-#include "wpg/datasets/scenario.hpp"
-#include "wpg/walk_generator.hpp"
-
-// The FCL world of planning/ (one obstacle model for the NMPC and the footstep checks), used as
-// soon as the executable links wpg_planning (its headers are then on the include path).
-// Without it, generateWalk measures obstacles with libwpg's exact 2-D distance and the dataset
-// holds the step-centre clearances only.
-#if __has_include("wpg/planning/obstacle_checks.hpp")
-#define WPG_CLI_WITH_PLANNING 1
 #include <optional>
 
-#include "wpg/planning/obstacle_checks.hpp"
-#include "wpg/planning/world.hpp"
-#endif
+#include "cli_common.hpp"
+#include "walk_pipeline.hpp"
+#include "wpg/datasets/input_error.hpp"
+#include "wpg/datasets/scenario.hpp"
+#include "wpg/walk_generator.hpp"
 
 namespace fs = std::filesystem;
 
@@ -100,16 +91,28 @@ int runCommand(const RunOptions& options) {
     }
   }
 
+  // --replay and --filter switch the scenario's keys on, after every --set (the filter implies
+  // the replay), so that the resolved scenario in the dataset says what ran.
+  std::vector<std::string> overrides = options.overrides;
+  if (options.replay) overrides.push_back("replay=true");
+  if (options.filter) overrides.push_back("filter=true");
+
   // Everything about the input is checked before anything is written.
   datasets::Scenario scenario;
   try {
-    scenario = datasets::loadScenario(scenario_path, options.overrides, robotsDirectory());
+    scenario = datasets::loadScenario(scenario_path, overrides, robotsDirectory());
     scenario.walking.validate();
     scenario.request.validate();
   } catch (const datasets::InputError& e) {
     throw UsageError(aboutFile(scenario_path, e.what()));
   } catch (const std::invalid_argument& e) {
     throw UsageError(aboutFile(scenario_path, e.what()));
+  }
+  // The robot's multibody model and the filter's controller before anything is generated.
+  std::optional<robots::RobotModel> model;
+  if (scenario.replay) {
+    model.emplace(loadRobotModel(scenario.robot));
+    if (scenario.filter) checkFilterSettings(scenario, scenario_path);
   }
 
   const fs::path dataset_path =
@@ -132,20 +135,13 @@ int runCommand(const RunOptions& options) {
   }
 
   WalkResult result;
-  std::string obstacle_summary;  // one line of the summary when the FCL world checked the steps
-#ifdef WPG_CLI_WITH_PLANNING
-  std::optional<planning::World> world;
-#endif
   try {
-#ifdef WPG_CLI_WITH_PLANNING
-    if (!scenario.request.obstacles.empty()) world.emplace(scenario.request.obstacles);
-    result = generateWalk(scenario.walking, scenario.request, world ? &*world : nullptr);
-#else
-    result = generateWalk(scenario.walking, scenario.request);
-#endif
+    result = generateScenarioWalk(scenario);
   } catch (const std::invalid_argument& e) {
     throw UsageError(aboutFile(scenario_path, e.what()));
   }
+  std::optional<ReplayOutcome> replay;
+  if (model) replay = replayScenarioWalk(*model, scenario, result.trajectory, scenario.filter);
 
   if (dataset_path.has_parent_path()) {
     fs::create_directories(dataset_path.parent_path(), ec);
@@ -153,27 +149,10 @@ int runCommand(const RunOptions& options) {
       throw UsageError("cannot create the folder of '" + dataset_path.string() + "': " + ec.message());
     }
   }
+  std::string obstacle_summary;  // one line of the summary when the FCL world checked the steps
   try {
-#ifdef WPG_CLI_WITH_PLANNING
-    if (world) {
-      const planning::FootstepObstacleReport report =
-          planning::checkFootsteps(*world, scenario.walking, result.trajectory);
-      datasets::FootstepClearances clearances;
-      clearances.clearance = report.clearance;
-      clearances.clearance_obstacle = report.clearance_obstacle;
-      clearances.foot_distance = report.foot_distance;
-      datasets::writeRunDataset(dataset_path.string(), scenario, result, &clearances);
-      obstacle_summary = "obstacles " + std::to_string(world->obstacleCount()) +
-                         "; least clearance to the margins: step centre " +
-                         format("%.3f", report.min_centre_clearance) + " m, sole " +
-                         format("%.3f", report.min_clearance) + " m; sole to obstacle " +
-                         format("%.3f", report.min_foot_distance) + " m\n";
-    } else {
-      datasets::writeRunDataset(dataset_path.string(), scenario, result);
-    }
-#else
-    datasets::writeRunDataset(dataset_path.string(), scenario, result);
-#endif
+    obstacle_summary = writeScenarioDataset(dataset_path.string(), scenario, result,
+                                            replay ? &replay->validation : nullptr);
   } catch (const std::invalid_argument& e) {
     // an inconsistent trajectory is a bug, not bad input
     throw std::runtime_error(std::string("cannot write the dataset: ") + e.what());
@@ -181,6 +160,7 @@ int runCommand(const RunOptions& options) {
 
   printSummary(std::cout, scenario, result);
   std::cout << obstacle_summary;
+  if (replay) printMultibodySummary(std::cout, *replay);
   std::cout << "dataset   " << dataset_path.string() << '\n';
   if (options.plot) {
     std::cout.flush();

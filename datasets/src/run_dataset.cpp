@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -52,6 +53,18 @@ void writeIntAttribute(H5::H5Object& object, const std::string& name, int value)
   H5::Attribute attribute =
       object.createAttribute(name, H5::PredType::STD_I32LE, H5::DataSpace(H5S_SCALAR));
   attribute.write(H5::PredType::NATIVE_INT, &value);
+}
+
+// A 1-D attribute of variable-length UTF-8 strings (h5py: an array of str).
+void writeStringListAttribute(H5::H5Object& object, const std::string& name,
+                              const std::vector<std::string>& values) {
+  H5::StrType type(H5::PredType::C_S1, H5T_VARIABLE);
+  type.setCset(H5T_CSET_UTF8);
+  const hsize_t count = values.size();
+  H5::Attribute attribute = object.createAttribute(name, type, H5::DataSpace(1, &count));
+  std::vector<const char*> pointers;
+  for (const std::string& value : values) pointers.push_back(value.c_str());
+  if (count > 0) attribute.write(type, pointers.data());
 }
 
 // --- datasets -------------------------------------------------------------------------------
@@ -410,8 +423,133 @@ void writeChecks(H5::Group& run, const Scenario& scenario, const WalkTrajectory&
   writeObstacleChecks(checks, scenario.request.obstacles, trajectory, clearances);
 }
 
+// An Eigen matrix as a time-major (row-major) vector; a 1-column matrix stays 2-D.
+std::vector<double> rowMajor(const Eigen::MatrixXd& matrix) {
+  std::vector<double> values(static_cast<std::size_t>(matrix.size()));
+  Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
+      values.data(), matrix.rows(), matrix.cols()) = matrix;
+  return values;
+}
+
+std::string joined(const std::vector<std::string>& names) {
+  std::string text;
+  for (const std::string& name : names) text += (text.empty() ? "" : ", ") + name;
+  return text;
+}
+
+void checkMultibodySizes(const MultibodyValidation& multibody, const WalkTrajectory& trajectory) {
+  const Eigen::Index n = static_cast<Eigen::Index>(trajectory.size());
+  const auto check = [](bool ok, const std::string& what) {
+    if (!ok) throw std::invalid_argument("writeRunDataset: multibody." + what);
+  };
+  const auto shape = [](const Eigen::MatrixXd& m) {
+    return std::to_string(m.rows()) + " x " + std::to_string(m.cols());
+  };
+  const Eigen::Index nq = static_cast<Eigen::Index>(multibody.configuration_names.size());
+  check(multibody.q.rows() == n && multibody.q.cols() == nq && nq > 0,
+        "q is " + shape(multibody.q) + ", expected " + std::to_string(n) + " x " +
+            std::to_string(nq) + " (one row per sample, one column per configuration name)");
+  check(multibody.zmp_multibody.rows() == n && multibody.zmp_multibody.cols() == 2,
+        "zmp_multibody is " + shape(multibody.zmp_multibody) + ", expected " +
+            std::to_string(n) + " x 2");
+  const bool filtered = multibody.com_filtered.size() > 0;
+  check(!filtered || (multibody.com_filtered.rows() == n && multibody.com_filtered.cols() == 3),
+        "com_filtered is " + shape(multibody.com_filtered) + ", expected " + std::to_string(n) +
+            " x 3 or empty");
+  check(filtered ? multibody.zmp_multibody_filtered.rows() == n &&
+                       multibody.zmp_multibody_filtered.cols() == 2
+                 : multibody.zmp_multibody_filtered.size() == 0,
+        "zmp_multibody_filtered is " + shape(multibody.zmp_multibody_filtered) + ", expected " +
+            (filtered ? std::to_string(n) + " x 2 (com_filtered is given)"
+                      : std::string("empty (com_filtered is empty)")));
+  check(multibody.chain_stage_time.rows() == multibody.chain_time.size() &&
+            multibody.chain_stage_time.cols() == 4,
+        "chain_stage_time is " + shape(multibody.chain_stage_time) + ", expected " +
+            std::to_string(multibody.chain_time.size()) + " x 4 (one row per chain_time entry)");
+}
+
+// The multibody replay and the dynamic filter (paper Sec. IV, Fig. 6): the motion sent to the
+// robot, the multibody ZMP before and after the filter, and how far they are from the
+// reference CoP.
+void writeMultibody(H5::Group& run, const Scenario& scenario, const MultibodyValidation& mb) {
+  const hsize_t nq = mb.configuration_names.size();
+  std::vector<std::string> units;
+  for (hsize_t j = 0; j < nq; ++j) units.push_back(j < 3 ? "m" : j < 7 ? "1" : "rad");
+  const bool filtered = mb.com_filtered.size() > 0;
+  const std::string q_units = joined(units);
+  const std::string q_columns = joined(mb.configuration_names);
+  H5::DataSet q = writeDataset(
+      run, "q", rowMajor(mb.q).data(), static_cast<hsize_t>(mb.q.rows()), nq,
+      H5::PredType::NATIVE_DOUBLE, H5::PredType::IEEE_F64LE,
+      {q_units.c_str(), "world",
+       filtered ? "configuration of the robot following the filtered CoM (com_filtered), from the "
+                  "walking IK: base position, base orientation quaternion (w, x, y, z), joint "
+                  "values in the URDF's order"
+                : "configuration of the robot following the generated CoM, from the walking IK: "
+                  "base position, base orientation quaternion (w, x, y, z), joint values in the "
+                  "URDF's order",
+       q_columns.c_str()});
+  writeStringListAttribute(q, "names", mb.configuration_names);
+  writeDoubles(run, "zmp_multibody", rowMajor(mb.zmp_multibody), 2,
+               {"m", "world",
+                "ZMP of the multibody model (inverse dynamics of the IK motion of the generated "
+                "CoM and feet), before the dynamic filter",
+                "x, y"});
+  if (filtered) {
+    writeDoubles(run, "com_filtered", rowMajor(mb.com_filtered), 3,
+                 {"m", "world",
+                  "centre of mass corrected by the dynamic filter: com + the preview controller's "
+                  "correction of the ZMP error (paper Sec. IV)",
+                  "x, y, z"});
+    writeDoubles(run, "zmp_multibody_filtered", rowMajor(mb.zmp_multibody_filtered), 2,
+                 {"m", "world", "ZMP of the multibody model following com_filtered", "x, y"});
+  }
+
+  H5::Group group = run.createGroup("multibody");
+  writeStringAttribute(group, "description",
+                       "multibody replay of the walk (walking IK, inverse dynamics) and dynamic "
+                       "filter; ZMP errors are |cop - zmp| in m, RMS and max over the samples "
+                       "(after = before without the filter)");
+  writeIntAttribute(group, "filtered", filtered ? 1 : 0);
+  writeDoubleAttribute(group, "zmp_error_rms_before", mb.before.rms);
+  writeDoubleAttribute(group, "zmp_error_max_before", mb.before.max);
+  writeDoubleAttribute(group, "zmp_error_rms_after", mb.after.rms);
+  writeDoubleAttribute(group, "zmp_error_max_after", mb.after.max);
+  writeIntAttribute(group, "ik_failures", mb.ik_failures);
+  writeDoubleAttribute(group, "max_ik_com_error", mb.max_ik_com_error);
+  writeDoubleAttribute(group, "max_ik_foot_error", mb.max_ik_foot_error);
+  writeIntAttribute(group, "samples_with_limit_violations", mb.samples_with_limit_violations);
+  writeDoubleAttribute(group, "max_limit_violation", mb.max_limit_violation);
+  writeStringListAttribute(group, "violated_joints", mb.violated_joints);
+  writeDoubleAttribute(group, "filter_error_weight", scenario.filter_settings.error_weight);
+  writeDoubleAttribute(group, "filter_input_weight", scenario.filter_settings.input_weight);
+  writeDoubleAttribute(group, "filter_preview_time", scenario.filter_settings.preview_time);
+
+  // Timing profile of the control chain per NMPC iteration (paper Sec. V-C).
+  H5::Group timing = run.createGroup("timing");
+  writeStringAttribute(timing, "description",
+                       "wall time of the control chain per NMPC iteration (paper Sec. V-C): NMPC, "
+                       "walking IK, multibody ZMP, dynamic filter; the whole-walk stages (ZMP, "
+                       "filter) spread evenly over the iterations");
+  const Eigen::VectorXd& chain = mb.chain_time;
+  writeDoubles(timing, "chain_time", std::vector<double>(chain.data(), chain.data() + chain.size()),
+               0, {"s", nullptr, "wall time of the whole chain in each NMPC iteration", nullptr});
+  writeDoubles(timing, "chain_stage_time", rowMajor(mb.chain_stage_time), 4,
+               {"s", nullptr, "wall time of each stage of the chain in each NMPC iteration",
+                "nmpc, ik, multibody_zmp, filter"});
+  const Eigen::Index k = chain.size();
+  const double average = k > 0 ? chain.mean() : 0.0;
+  const double std_dev =
+      k > 1 ? std::sqrt((chain.array() - average).square().sum() / static_cast<double>(k - 1))
+            : 0.0;
+  writeDoubleAttribute(timing, "chain_time_average", average);
+  writeDoubleAttribute(timing, "chain_time_std", std_dev);
+  writeDoubleAttribute(timing, "chain_time_min", k > 0 ? chain.minCoeff() : 0.0);
+  writeDoubleAttribute(timing, "chain_time_max", k > 0 ? chain.maxCoeff() : 0.0);
+}
+
 void writeFile(const std::string& file_path, const Scenario& scenario, const WalkResult& result,
-               const FootstepClearances* clearances) {
+               const FootstepClearances* clearances, const MultibodyValidation* multibody) {
   H5::H5File file(file_path, H5F_ACC_TRUNC);
   writeIntAttribute(file, "schema_version", kRunDatasetSchemaVersion);
   writeStringAttribute(file, "wpg_version", WPG_VERSION_STRING);
@@ -429,15 +567,18 @@ void writeFile(const std::string& file_path, const Scenario& scenario, const Wal
   writeMpcLog(run, result.trajectory.mpc);
   writeObstacles(run, scenario.request.obstacles);
   writeChecks(run, scenario, result.trajectory, clearances);
+  if (multibody) writeMultibody(run, scenario, *multibody);
   file.close();  // inside the try of the caller: a failed flush is an error, not a warning
 }
 
 }  // namespace
 
 void writeRunDataset(const std::string& path, const Scenario& scenario,
-                     const wpg::WalkResult& result, const FootstepClearances* clearances) {
+                     const wpg::WalkResult& result, const FootstepClearances* clearances,
+                     const wpg::MultibodyValidation* multibody) {
   checkSizes(result.trajectory);
   if (clearances) checkClearanceSizes(*clearances, result.trajectory);
+  if (multibody) checkMultibodySizes(*multibody, result.trajectory);
   checkGroupName(scenario.name);
   const fs::path target(path);
   if (path.empty() || !target.has_filename()) {
@@ -458,7 +599,7 @@ void writeRunDataset(const std::string& path, const Scenario& scenario,
   std::lock_guard<std::mutex> lock(hdf5Mutex());
   H5::Exception::dontPrint();  // errors become exceptions with messages, not stderr dumps
   try {
-    writeFile(temporary, scenario, result, clearances);
+    writeFile(temporary, scenario, result, clearances, multibody);
   } catch (const H5::Exception& error) {
     std::remove(temporary.c_str());
     throw std::runtime_error(path + ": cannot write the HDF5 file (" + error.getFuncName() +

@@ -213,6 +213,17 @@ int readInteger(const YAML::Node& node, const std::string& key, int minimum,
   return value;
 }
 
+// YAML 1.2's core booleans; quoted text is a string, and yes/no/on/off (YAML 1.1) are not
+// accepted: they read as strings in other YAML readers.
+bool readBoolean(const YAML::Node& node, const std::string& key, const std::string& expected,
+                 const Source& source) {
+  if (!node.IsDefined() || !node.IsScalar() || isQuoted(node)) source.fail(key, expected, node);
+  const std::string& text = node.Scalar();
+  if (text == "true" || text == "True" || text == "TRUE") return true;
+  if (text == "false" || text == "False" || text == "FALSE") return false;
+  source.fail(key, expected, node);
+}
+
 // Names become folder names (robot) and HDF5 group names (scenario): keep them plain.
 std::string readName(const YAML::Node& node, const std::string& key, const std::string& expected,
                      const Source& source) {
@@ -288,6 +299,27 @@ bool present(const Entries& entries, const std::string& name) {
 // Reading a YAML file with syntax errors reported by line.
 // ------------------------------------------------------------------------------------------
 
+// `text` parsed as one YAML document; `origin` names it in messages.
+YAML::Node parseYamlText(const std::string& text, const std::string& origin) {
+  std::vector<YAML::Node> documents;
+  try {
+    documents = YAML::LoadAll(text);
+  } catch (const YAML::Exception& error) {
+    std::string where;
+    if (!error.mark.is_null()) {
+      where = "line " + std::to_string(error.mark.line + 1) + ", column " +
+              std::to_string(error.mark.column + 1) + ": ";
+    }
+    throw InputError(oneLine(origin + ": " + where + "YAML syntax error: " + error.msg));
+  }
+  if (documents.size() > 1) {
+    throw InputError(origin + ": expected one YAML document, got " +
+                     std::to_string(documents.size()) + " (separated by '---')");
+  }
+  if (documents.empty()) return YAML::Node(YAML::NodeType::Null);
+  return documents.front();
+}
+
 YAML::Node readYamlFile(const std::string& path, const std::string& what) {
   std::error_code ec;
   if (fs::is_directory(path, ec)) {
@@ -303,23 +335,7 @@ YAML::Node readYamlFile(const std::string& path, const std::string& what) {
   std::ostringstream text;
   text << stream.rdbuf();
   if (stream.bad()) throw InputError(path + ": cannot read the " + what + ": read error");
-  std::vector<YAML::Node> documents;
-  try {
-    documents = YAML::LoadAll(text.str());
-  } catch (const YAML::Exception& error) {
-    std::string where;
-    if (!error.mark.is_null()) {
-      where = "line " + std::to_string(error.mark.line + 1) + ", column " +
-              std::to_string(error.mark.column + 1) + ": ";
-    }
-    throw InputError(oneLine(path + ": " + where + "YAML syntax error: " + error.msg));
-  }
-  if (documents.size() > 1) {
-    throw InputError(path + ": expected one YAML document, got " +
-                     std::to_string(documents.size()) + " (separated by '---')");
-  }
-  if (documents.empty()) return YAML::Node(YAML::NodeType::Null);
-  return documents.front();
+  return parseYamlText(text.str(), path);
 }
 
 // ------------------------------------------------------------------------------------------
@@ -363,6 +379,7 @@ const std::vector<WalkingField>& walkingFields() {
       numberField("cop_margin_y", &P::cop_margin_y),
       numberField("initial_foot_separation", &P::initial_foot_separation),
       numberField("stop_foot_separation", &P::stop_foot_separation),
+      numberField("obstacle_foot_radius", &P::obstacle_foot_radius),
       polygonField("feasibility_x", &P::feasibility_x),
       polygonField("feasibility_y", &P::feasibility_y),
       numberField("max_step_yaw_change", &P::max_step_yaw_change),
@@ -571,9 +588,9 @@ ParsedOverride parseOverride(const std::string& text, Source* source) {
 // ------------------------------------------------------------------------------------------
 
 const std::vector<std::string>& topLevelKeys() {
-  static const std::vector<std::string> keys = {"name",       "robot",     "duration",
-                                                "robot_mass", "generator", "reference",
-                                                "pushes",     "obstacles", "walking"};
+  static const std::vector<std::string> keys = {
+      "name",   "robot",     "duration", "robot_mass", "generator",      "reference",
+      "pushes", "obstacles", "walking",  "replay",     "filter",         "filter_settings"};
   return keys;
 }
 
@@ -633,6 +650,31 @@ GeneratorSettings readGenerator(const YAML::Node& node, const Source& source) {
     settings.obstacle_reach =
         readPositive(entry(entries, "obstacle_reach"), "generator.obstacle_reach",
                      "a positive distance in m", source);
+  }
+  return settings;
+}
+
+// The dynamic filter's preview controller (Kajita et al. 2003; wpg/preview_control.hpp).
+PreviewControlSettings readFilterSettings(const YAML::Node& node, const Source& source) {
+  PreviewControlSettings settings;
+  if (!node.IsDefined()) return settings;
+  const Entries entries =
+      readMap(node, "filter_settings", {"error_weight", "input_weight", "preview_time"},
+              "a map {error_weight, input_weight, preview_time}", source, /*null_is_empty=*/true);
+  if (present(entries, "error_weight")) {
+    settings.error_weight = readPositive(entry(entries, "error_weight"),
+                                         "filter_settings.error_weight",
+                                         "a positive weight (Qe)", source);
+  }
+  if (present(entries, "input_weight")) {
+    settings.input_weight = readPositive(entry(entries, "input_weight"),
+                                         "filter_settings.input_weight",
+                                         "a positive weight (R)", source);
+  }
+  if (present(entries, "preview_time")) {
+    settings.preview_time = readPositive(entry(entries, "preview_time"),
+                                         "filter_settings.preview_time",
+                                         "a positive duration in seconds", source);
   }
   return settings;
 }
@@ -864,6 +906,17 @@ std::string emitResolved(const Scenario& scenario) {
   }
   out << YAML::EndSeq;
 
+  out << YAML::Key << "replay" << YAML::Value << scenario.replay;
+  out << YAML::Key << "filter" << YAML::Value << scenario.filter;
+  out << YAML::Key << "filter_settings" << YAML::Value << YAML::Flow << YAML::BeginMap;
+  out << YAML::Key << "error_weight" << YAML::Value
+      << formatNumber(scenario.filter_settings.error_weight);
+  out << YAML::Key << "input_weight" << YAML::Value
+      << formatNumber(scenario.filter_settings.input_weight);
+  out << YAML::Key << "preview_time" << YAML::Value
+      << formatNumber(scenario.filter_settings.preview_time);
+  out << YAML::EndMap;
+
   out << YAML::Key << "walking" << YAML::Value << YAML::BeginMap;
   for (const WalkingField& field : walkingFields()) {
     out << YAML::Key << field.name << YAML::Value;
@@ -883,13 +936,16 @@ std::string emitResolved(const Scenario& scenario) {
 
 }  // namespace
 
-Scenario loadScenario(const std::string& path, const std::vector<std::string>& overrides,
-                      const std::string& robots_dir) {
+namespace {
+
+// `root` is the parsed scenario of `path` (a file, or the origin of a text).
+Scenario loadScenarioTree(YAML::Node root, const std::string& path,
+                          const std::vector<std::string>& overrides,
+                          const std::string& robots_dir) {
   Source source(path);
   Scenario scenario;
   scenario.source_path = path;
   try {
-    YAML::Node root = readYamlFile(path, "scenario file");
     if (root.IsNull() && !overrides.empty()) root = YAML::Node(YAML::NodeType::Map);
     if (!root.IsMap()) {
       source.failFile("expected a map of scenario keys (" + joinNames(topLevelKeys()) +
@@ -968,6 +1024,16 @@ Scenario loadScenario(const std::string& path, const std::vector<std::string>& o
     scenario.request.reference = readReference(entry(entries, "reference"), source);
     scenario.request.pushes = readPushes(entry(entries, "pushes"), source);
     scenario.request.obstacles = readObstacles(entry(entries, "obstacles"), source);
+    if (present(entries, "filter")) {
+      scenario.filter = readBoolean(entry(entries, "filter"), "filter", "true or false", source);
+    }
+    // The filter replays the walk (before and after its correction): filter implies replay.
+    scenario.replay = scenario.filter;
+    if (present(entries, "replay") &&
+        readBoolean(entry(entries, "replay"), "replay", "true or false", source)) {
+      scenario.replay = true;
+    }
+    scenario.filter_settings = readFilterSettings(entry(entries, "filter_settings"), source);
   } catch (const YAML::Exception& error) {
     // Not expected (types are checked before conversion); still one line naming the file.
     throw InputError(oneLine(path + ": " + error.what()));
@@ -988,6 +1054,19 @@ Scenario loadScenario(const std::string& path, const std::vector<std::string>& o
 
   scenario.resolved_yaml = emitResolved(scenario);
   return scenario;
+}
+
+}  // namespace
+
+Scenario loadScenario(const std::string& path, const std::vector<std::string>& overrides,
+                      const std::string& robots_dir) {
+  return loadScenarioTree(readYamlFile(path, "scenario file"), path, overrides, robots_dir);
+}
+
+Scenario loadScenarioText(const std::string& text, const std::string& origin,
+                          const std::vector<std::string>& overrides,
+                          const std::string& robots_dir) {
+  return loadScenarioTree(parseYamlText(text, origin), origin, overrides, robots_dir);
 }
 
 }  // namespace wpg::datasets

@@ -20,6 +20,7 @@ double seconds(Clock::time_point since) {
 }
 
 // IK of every sample; the time of each sample goes to its NMPC iteration (stage column 1).
+// `record` keeps the IK statistics (of the motion finally sent to the robot).
 Eigen::MatrixXd solveIk(const WalkingIk& ik, const RobotModel& model, const WalkTrajectory& walk,
                         const Eigen::MatrixXd& com, int per_iteration, MultibodyValidation& out,
                         bool record) {
@@ -36,7 +37,7 @@ Eigen::MatrixXd solveIk(const WalkingIk& ik, const RobotModel& model, const Walk
     const WalkingIkResult r = ik.solve(target, qi);
     q.row(i) = qi.transpose();
     const Eigen::Index k = std::min<Eigen::Index>(i / per_iteration, out.chain_stage_time.rows() - 1);
-    if (record && k >= 0) out.chain_stage_time(k, 1) += seconds(start);
+    if (k >= 0) out.chain_stage_time(k, 1) += seconds(start);
     if (!record) continue;
     if (r.status != WalkingIkStatus::kSolved) ++out.ik_failures;
     out.max_ik_com_error = std::max(out.max_ik_com_error, r.com_error);
@@ -123,7 +124,8 @@ MultibodyValidation replayWalk(const RobotModel& model, const WalkingParameters&
     out.q = solveIk(ik, model, walk, out.com_filtered, per_iteration, out, true);
     out.zmp_multibody_filtered = replay.run(out.q, dt, com_force).zmp;
     out.after = statistics(walk, out.zmp_multibody_filtered);
-    // The whole-walk stages are spread evenly over the iterations (per-sample costs).
+    // The whole-walk stages are spread evenly over the iterations (per-sample costs). The
+    // validation replay of the corrected motion is not part of the control chain.
     out.chain_stage_time.col(3).setConstant(filter_time / iterations);
   }
   out.chain_stage_time.col(2).setConstant(zmp_time / iterations);

@@ -20,3 +20,6 @@ check_png() {
   [[ -s "$1" ]] || fail "no figure $1"
   [[ "$(head -c 8 "$1" | od -An -tx1 | tr -d ' \n')" == 89504e470d0a1a0a ]] || fail "$1 is not a PNG"
 }
+
+# check_multibody FILE.h5 ARGS...: the multibody replay fields (check_multibody.py ARGS).
+check_multibody() { "$PYTHON" "$HERE/check_multibody.py" "$@" || fail "bad multibody fields in $1"; }

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# help.sh WPG: --help, run --help and plot --help exit 0 and show the defaults; --version.
+# help.sh WPG: --help and every subcommand's --help exit 0 and show the defaults; --version.
 set -euo pipefail
 # shellcheck source=common.sh
 source "$(dirname "$0")/common.sh"
@@ -13,6 +13,16 @@ env -u WPG_DATA_DIR "$wpg" run --help >"$WORKDIR/run_help" || fail "run --help: 
 cat "$WORKDIR/run_help"
 grep -q walk_forward "$WORKDIR/run_help" || fail "run --help does not show the default scenario"
 grep -q 'out/<scenario name>.h5' "$WORKDIR/run_help" || fail "run --help does not show the default output"
+grep -q -- '--filter' "$WORKDIR/run_help" || fail "run --help lacks --filter"
+grep -q -- '--replay' "$WORKDIR/run_help" || fail "run --help lacks --replay"
+grep -q '\breplay\b' "$WORKDIR/help" || fail "--help lacks the replay subcommand"
+grep -q '\bbench\b' "$WORKDIR/help" || fail "--help lacks the bench subcommand"
+"$wpg" replay --help >"$WORKDIR/replay_help" || fail "replay --help: exit status $?"
+grep -q 'overwritten atomically' "$WORKDIR/replay_help" || fail "replay --help does not show the default output"
+grep -q -- '--no-filter' "$WORKDIR/replay_help" || fail "replay --help lacks --no-filter"
+"$wpg" bench --help >"$WORKDIR/bench_help" || fail "bench --help: exit status $?"
+grep -q 'walk_forward paper_experiment_a paper_experiment_b' "$WORKDIR/bench_help" \
+  || fail "bench --help does not show the default scenarios"
 "$wpg" plot --help >"$WORKDIR/plot_help" || fail "plot --help: exit status $?"
 grep -q 'RUN.png' "$WORKDIR/plot_help" || fail "plot --help does not show the default figure"
 "$wpg" --version | grep -Eq '^wpg [0-9]+\.[0-9]+\.[0-9]+' || fail "--version"

@@ -167,6 +167,12 @@ TEST(ShippedScenarios, WalkForward) {
   EXPECT_EQ(s.request.reference[1].velocity, Eigen::Vector3d(0.2, 0.0, 0.0));
   EXPECT_TRUE(s.request.pushes.empty());
   EXPECT_DOUBLE_EQ(s.walking.max_step_yaw_change, 0.05);  // the paper's bound
+  // No multibody replay unless asked; the filter's classic Kajita settings.
+  EXPECT_FALSE(s.replay);
+  EXPECT_FALSE(s.filter);
+  EXPECT_EQ(s.filter_settings.error_weight, 1.0);
+  EXPECT_EQ(s.filter_settings.input_weight, 1e-6);
+  EXPECT_EQ(s.filter_settings.preview_time, 1.6);
 }
 
 TEST(ShippedScenarios, WalkSideways) {
@@ -217,7 +223,8 @@ TEST(ShippedScenarios, ResolvedYamlRoundTrips) {
                             ("wpg_test_resolved_" + std::to_string(::getpid()) + ".yaml"))
                                .string();
   for (const char* name : {"walk_forward", "walk_sideways", "turn_on_the_spot", "curve",
-                           "start_walk_stop", "push"}) {
+                           "start_walk_stop", "push", "paper_experiment_a",
+                           "paper_experiment_b"}) {
     SCOPED_TRACE(name);
     const Scenario first = loadShipped(name, {"generator.sqp_tolerance=1e-9"});
     std::ofstream(path) << first.resolved_yaml;
@@ -230,6 +237,9 @@ TEST(ShippedScenarios, ResolvedYamlRoundTrips) {
     EXPECT_EQ(second.request.duration, first.request.duration);
     EXPECT_EQ(second.request.robot_mass, first.request.robot_mass);
     EXPECT_EQ(second.request.generator.sqp_tolerance, 1e-9);
+    EXPECT_EQ(second.replay, first.replay);
+    EXPECT_EQ(second.filter, first.filter);
+    EXPECT_EQ(second.filter_settings.input_weight, first.filter_settings.input_weight);
     ASSERT_EQ(second.request.reference.size(), first.request.reference.size());
     for (std::size_t i = 0; i < first.request.reference.size(); ++i) {
       EXPECT_EQ(second.request.reference[i].t, first.request.reference[i].t);
@@ -251,8 +261,41 @@ TEST(ShippedScenarios, ResolvedYamlListsEveryKey) {
         "algorithm: nmpc", "sqp_iterations: 1", "max_sqp_iterations:", "sqp_tolerance:",
         "max_qp_iterations:", "slack_weight:", "reference:", "pushes: []", "walking:",
         "com_height: 0.814", "horizon_length: 16", "max_step_yaw_change: 0.17",
-        "feasibility_x: [-0.28, -0.2, 0.0, 0.2, 0.28]", "weight_jerk: 1.0e-05"}) {
+        "feasibility_x: [-0.28, -0.2, 0.0, 0.2, 0.28]", "weight_jerk: 1.0e-05",
+        "replay: false", "filter: false",
+        "filter_settings: {error_weight: 1.0, input_weight: 1.0e-06, preview_time: 1.6}"}) {
     EXPECT_NE(yaml.find(key), std::string::npos) << "'" << key << "' missing in:\n" << yaml;
+  }
+}
+
+// The multibody keys: filter implies replay; the settings read back through the resolved YAML;
+// the scenario text loads like a file (wpg replay reads it from a dataset).
+TEST(ShippedScenarios, ReplayAndFilterKeys) {
+  const Scenario replay_only = loadShipped("walk_forward", {"replay=true"});
+  EXPECT_TRUE(replay_only.replay);
+  EXPECT_FALSE(replay_only.filter);
+  const Scenario filtered =
+      loadShipped("walk_forward", {"filter=true", "replay=false",
+                                   "filter_settings={input_weight: 1e-5, preview_time: 0.665}"});
+  EXPECT_TRUE(filtered.filter);
+  EXPECT_TRUE(filtered.replay);  // the filter replays the walk
+  EXPECT_EQ(filtered.filter_settings.error_weight, 1.0);
+  EXPECT_EQ(filtered.filter_settings.input_weight, 1e-5);
+  EXPECT_EQ(filtered.filter_settings.preview_time, 0.665);
+  EXPECT_NE(filtered.resolved_yaml.find("replay: true"), std::string::npos) << filtered.resolved_yaml;
+  const Scenario again = wpg::datasets::loadScenarioText(filtered.resolved_yaml, "run.h5:/scenario",
+                                                         {}, kRobotsDir);
+  EXPECT_EQ(again.resolved_yaml, filtered.resolved_yaml);
+  EXPECT_EQ(again.source_path, "run.h5:/scenario");
+  EXPECT_TRUE(again.filter);
+  EXPECT_EQ(again.filter_settings.preview_time, 0.665);
+  try {
+    wpg::datasets::loadScenarioText("name: a\nrobot: hrp2\nduration: x\nreference: []\n",
+                                    "run.h5:/scenario", {}, kRobotsDir);
+    ADD_FAILURE() << "no InputError";
+  } catch (const InputError& error) {
+    const std::string message = error.what();
+    EXPECT_EQ(message.rfind("run.h5:/scenario: key 'duration'", 0), 0u) << message;
   }
 }
 
@@ -403,6 +446,25 @@ TEST_F(ScenarioFiles, UnknownKeysAreErrors) {
               {"key 'robto'", "unknown key"});
   expectError("duplicate.yaml", replaced(kValidScenario, "duration: 5.0", "duration: 5.0\nduration: 6.0"),
               {"key 'duration'", "twice"});
+}
+
+TEST_F(ScenarioFiles, BadReplayKeys) {
+  expectError("replay_yes.yaml", std::string(kValidScenario) + "replay: yes\n",
+              {"key 'replay'", "expected true or false", "got yes"});
+  expectError("filter_quoted.yaml", std::string(kValidScenario) + "filter: \"true\"\n",
+              {"key 'filter'", "expected true or false", "string"});
+  expectError("filter_settings_typo.yaml",
+              std::string(kValidScenario) + "filter_settings: {preview: 1.0}\n",
+              {"key 'filter_settings.preview'", "unknown key", "preview_time"});
+  expectError("filter_settings_negative.yaml",
+              std::string(kValidScenario) + "filter_settings: {input_weight: -1e-6}\n",
+              {"key 'filter_settings.input_weight'", "positive"});
+  expectError("filter_settings_zero.yaml",
+              std::string(kValidScenario) + "filter_settings: {preview_time: 0}\n",
+              {"key 'filter_settings.preview_time'", "positive duration"});
+  expectError("filter_settings_list.yaml",
+              std::string(kValidScenario) + "filter_settings: [1, 1e-6, 1.6]\n",
+              {"key 'filter_settings'", "expected a map"});
 }
 
 TEST_F(ScenarioFiles, WalkingParametersAreValidated) {

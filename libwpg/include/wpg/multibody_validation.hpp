@@ -29,7 +29,8 @@ struct MultibodyValidation {
   double max_limit_violation = 0.0;        // [rad]
   std::vector<std::string> violated_joints;
   // Timing profile per NMPC iteration of the control chain, as the paper's Sec. V-C table
-  // (NMPC + IK + dynamic filter, the filter including its multibody ZMP): k entries [s].
+  // (Fig. 3: NMPC, IK of the WPG motion, its multibody ZMP, the preview filter, IK of the
+  // corrected CoM; the validation replay is not part of the chain): k entries [s].
   Eigen::VectorXd chain_time;
   Eigen::MatrixXd chain_stage_time;        // k x 4: NMPC, IK, multibody ZMP, preview filter [s]
 };

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "wpg/datasets/scenario.hpp"
+#include "wpg/multibody_validation.hpp"
 #include "wpg/walk_generator.hpp"
 
 namespace wpg::datasets {
@@ -31,11 +32,20 @@ struct FootstepClearances {
 // /runs/<name>/checks/ (when the scenario has obstacles; `clearances` may be null, then only
 // the step centres are checked).
 //
+// `multibody` (may be null: not replayed), the multibody replay and the dynamic filter of the
+// walk as computed by the caller (robots/: wpg::robots::replayWalk; datasets/ does not link
+// Simbody), adds q, zmp_multibody (and com_filtered, zmp_multibody_filtered when filtered) to
+// the run group, the ZMP error and IK summary to /runs/<name>/multibody/ and the timing
+// profile of the control chain to /runs/<name>/timing/.
+//
 // Throws std::invalid_argument when the trajectory's per-sample arrays differ in length, a
-// column of `clearances` does not have one entry per footstep, or the scenario name cannot be
-// an HDF5 group name, std::runtime_error on I/O errors (message names the path).
+// column of `clearances` does not have one entry per footstep, a matrix of `multibody` does
+// not have one row per sample (q: one column per configuration name; the filtered pair both
+// empty or both n rows), chain_time and chain_stage_time (k x 4) disagree, or the scenario name
+// cannot be an HDF5 group name; std::runtime_error on I/O errors (message names the path).
 void writeRunDataset(const std::string& path, const Scenario& scenario,
-                     const wpg::WalkResult& result, const FootstepClearances* clearances = nullptr);
+                     const wpg::WalkResult& result, const FootstepClearances* clearances = nullptr,
+                     const wpg::MultibodyValidation* multibody = nullptr);
 
 // Debian's HDF5 is built without thread safety: every use of the HDF5 library in this process
 // (writeRunDataset takes it itself) must hold this lock, e.g. when batch workers write files.

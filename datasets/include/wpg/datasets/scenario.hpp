@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "wpg/datasets/input_error.hpp"
+#include "wpg/preview_control.hpp"
 #include "wpg/walk_request.hpp"
 #include "wpg/walking_parameters.hpp"
 
@@ -21,6 +22,12 @@ struct Scenario {
   // duration, reference, pushes, generator; robot_mass from the robot's `mass` unless the
   // scenario sets `robot_mass`.
   wpg::WalkRequest request;
+  // The multibody side (paper Sec. IV): `replay:` replays the walk on the robot's multibody
+  // model (IK + inverse dynamics, the multibody ZMP), `filter:` also runs the dynamic filter
+  // (preview control on the ZMP error) with `filter_settings:`. filter implies replay.
+  bool replay = false;
+  bool filter = false;
+  wpg::PreviewControlSettings filter_settings;  // Qe = 1, R = 1e-6, 1.6 s by default
   // The whole scenario after merging the robot parameters and the overrides, emitted with
   // yaml-cpp: every key explicit (all walking parameters, all generator settings). Loading it
   // as a scenario file gives the same Scenario again (stored in every dataset).
@@ -40,5 +47,12 @@ struct Scenario {
 // rejected by WalkingParameters::validate() or WalkRequest::validate().
 Scenario loadScenario(const std::string& path, const std::vector<std::string>& overrides,
                       const std::string& robots_dir);
+
+// The same from the scenario's text (e.g. the `scenario` attribute of a run dataset);
+// `origin` stands for the file name in messages and in Scenario::source_path, e.g.
+// "out/walk_forward.h5:/scenario".
+Scenario loadScenarioText(const std::string& text, const std::string& origin,
+                          const std::vector<std::string>& overrides,
+                          const std::string& robots_dir);
 
 }  // namespace wpg::datasets

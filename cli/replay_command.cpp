@@ -1,0 +1,90 @@
+// `wpg replay RUN.h5`: an existing run dataset -> its walk and scenario -> multibody replay
+// and dynamic filter -> the dataset again with the multibody fields (datasets/SCHEMA.md).
+#include <filesystem>
+#include <iostream>
+#include <stdexcept>
+#include <system_error>
+
+#include "cli_common.hpp"
+#include "walk_pipeline.hpp"
+#include "wpg/datasets/input_error.hpp"
+#include "wpg/datasets/run_dataset_reader.hpp"
+#include "wpg/datasets/scenario.hpp"
+
+namespace fs = std::filesystem;
+
+namespace wpg::cli {
+
+int replayCommand(const ReplayOptions& options) {
+  // Everything about the input is checked before anything is computed or written.
+  datasets::StoredRun stored;
+  datasets::Scenario scenario;
+  const std::string origin = options.input + ":/scenario";
+  try {
+    stored = datasets::readRunDataset(options.input);
+    // The file's resolved scenario, with the replay switched on: the rewritten dataset's
+    // scenario says what ran.
+    scenario = datasets::loadScenarioText(
+        stored.scenario_yaml, origin,
+        {"replay=true", std::string("filter=") + (options.filter ? "true" : "false")},
+        robotsDirectory());
+  } catch (const datasets::InputError& e) {
+    throw UsageError(e.what());
+  }
+  if (scenario.name != stored.name) {
+    throw UsageError(options.input + ": the run /runs/" + stored.name +
+                     " does not belong to its scenario '" + scenario.name + "'");
+  }
+  const robots::RobotModel model = loadRobotModel(scenario.robot);
+  if (scenario.filter) checkFilterSettings(scenario, origin);
+
+  const fs::path dataset_path = options.output.empty() ? fs::path(options.input)
+                                                       : fs::path(options.output);
+  fs::path figure_path = fs::path(dataset_path).replace_extension(".png");
+  if (figure_path == dataset_path) figure_path += ".png";  // never draw over the dataset
+  std::error_code ec;
+  if (fs::is_directory(dataset_path, ec)) {
+    throw UsageError("output '" + dataset_path.string() + "' is a directory");
+  }
+
+  const WalkTrajectory& walk = stored.result.trajectory;
+  const ReplayOutcome replay = replayScenarioWalk(model, scenario, walk, scenario.filter);
+
+  if (dataset_path.has_parent_path()) {
+    fs::create_directories(dataset_path.parent_path(), ec);
+    if (ec) {
+      throw UsageError("cannot create the folder of '" + dataset_path.string() + "': " +
+                       ec.message());
+    }
+  }
+  std::string obstacle_summary;
+  try {
+    // Atomic (temporary file, then rename): overwriting RUN.h5 never leaves half a file.
+    obstacle_summary = writeScenarioDataset(dataset_path.string(), scenario, stored.result,
+                                            &replay.validation);
+  } catch (const std::invalid_argument& e) {
+    throw std::runtime_error(std::string("cannot write the dataset: ") + e.what());
+  }
+
+  std::cout << "run       " << scenario.name << " from " << options.input << ", robot "
+            << scenario.robot << ": " << walk.size() << " samples, "
+            << fixed(replay.walk_duration, 2) << " s, " << walk.mpc.size() << " NMPC iterations"
+            << (stored.result.success ? std::string()
+                                      : " (the walk failed: " + stored.result.message + ")")
+            << '\n';
+  std::cout << obstacle_summary;
+  printMultibodySummary(std::cout, replay);
+  std::cout << "dataset   " << dataset_path.string() << '\n';
+  if (options.plot) {
+    std::cout.flush();
+    if (drawFigure(dataset_path.string(), figure_path.string()) == kExitSuccess) {
+      std::cout << "figure    " << figure_path.string() << '\n';
+    } else {
+      printWarning("no figure drawn (the dataset is complete; retry with `wpg plot " +
+                   dataset_path.string() + "`)");
+    }
+  }
+  return kExitSuccess;
+}
+
+}  // namespace wpg::cli
