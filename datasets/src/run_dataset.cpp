@@ -554,7 +554,7 @@ void writeFile(const std::string& file_path, const Scenario& scenario, const Wal
   writeIntAttribute(file, "schema_version", kRunDatasetSchemaVersion);
   writeStringAttribute(file, "wpg_version", WPG_VERSION_STRING);
   writeStringAttribute(file, "scenario", scenario.resolved_yaml);
-  writeStringAttribute(file, "created_by", "wpg run");
+  writeStringAttribute(file, "created_by", "wpg");  // wpg run, wpg replay or a program of yours
 
   H5::Group runs = file.createGroup("runs");
   H5::Group run = runs.createGroup(scenario.name);

@@ -386,7 +386,6 @@ NmpcWorkspace::NmpcWorkspace(const NmpcModel& model)
   equality_vector = Eigen::VectorXd::Zero(me);
   qp_solution = Eigen::VectorXd::Zero(n);
   relaxed_factor.inverse_factor_transposed = Eigen::MatrixXd::Zero(n + 1, n + 1);
-  relaxed_factor.scratch = Eigen::VectorXd::Zero(n + 1);
   relaxed_factor.size = n + 1;
   relaxed_jacobian = Eigen::MatrixXd::Zero(mi + 1, n + 1);
   relaxed_equality_matrix = Eigen::MatrixXd::Zero(me, n + 1);

@@ -166,7 +166,7 @@ TEST_F(RunDatasetFiles, WritesTheSchemaAndReadsBackTheSameNumbers) {
   EXPECT_EQ(intAttribute(file, "schema_version"), 1);
   EXPECT_EQ(stringAttribute(file, "wpg_version"), WPG_VERSION_STRING);
   EXPECT_EQ(stringAttribute(file, "scenario"), scenario.resolved_yaml);
-  EXPECT_EQ(stringAttribute(file, "created_by"), "wpg run");
+  EXPECT_EQ(stringAttribute(file, "created_by"), "wpg");
 
   const H5::Group run = file.openGroup("/runs/hand_made");
   EXPECT_EQ(stringAttribute(run, "algorithm"),

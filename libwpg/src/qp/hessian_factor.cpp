@@ -31,7 +31,6 @@ bool HessianFactor::compute(const Eigen::Ref<const Eigen::MatrixXd>& hessian) {
   inverse_factor_transposed.setIdentity(n, n);
   llt.matrixU().solveInPlace(inverse_factor_transposed);
   if (!inverse_factor_transposed.allFinite()) return false;
-  scratch.setZero(n);
   size = static_cast<int>(n);
   return true;
 }

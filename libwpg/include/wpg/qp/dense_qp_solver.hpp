@@ -25,7 +25,6 @@ const char* qpStatusName(QpStatus status);
 // J = L^{-T} where H = L L^T. Computed once per Hessian.
 struct HessianFactor {
   Eigen::MatrixXd inverse_factor_transposed;  // n x n upper triangular, L^{-T}
-  Eigen::VectorXd scratch;                    // n, internal
   int size = 0;
   // Returns false (and leaves size = 0) when H is not symmetric positive definite (numerically:
   // a Cholesky pivot below the rounding level). Reads the lower triangle of H only.
