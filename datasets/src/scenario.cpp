@@ -371,6 +371,7 @@ const std::vector<WalkingField>& walkingFields() {
       integerField("double_support_samples", &P::double_support_samples),
       integerField("previewed_steps", &P::previewed_steps),
       integerField("start_double_support_samples", &P::start_double_support_samples),
+      integerField("velocity_window_samples", &P::velocity_window_samples),
       numberField("control_period", &P::control_period),
       numberField("foot_length", &P::foot_length),
       numberField("foot_width", &P::foot_width),

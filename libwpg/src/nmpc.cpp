@@ -1,5 +1,6 @@
 #include "wpg/nmpc.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -71,11 +72,20 @@ NmpcModel::NmpcModel(const WalkingParameters& parameters, int obstacle_slots)
   prediction_ = LipmPrediction(N, parameters_.sampling_period, parameters_.com_height,
                                parameters_.gravity);
 
+  // J1's velocity: the mean over a window of K samples of the predicted velocities (K = 1:
+  // the paper's instantaneous C'_{k+1}); the window of sample j reaches back to j - K + 1.
+  const int K = parameters_.velocity_window_samples;
+  Eigen::MatrixXd window = Eigen::MatrixXd::Zero(N, N);
+  for (int j = 0; j < N; ++j)
+    for (int i = std::max(0, j - K + 1); i <= j; ++i) window(j, i) = 1.0 / K;
+  tracked_velocity_state_ = window * prediction_.velocity_state;
+  tracked_velocity_jerk_ = window * prediction_.velocity_jerk;
+
   const double alpha = parameters_.weight_velocity;
   const double beta = parameters_.weight_cop;
   const double gamma = parameters_.weight_jerk;
   const int n = layout_.variableCount();
-  const Eigen::MatrixXd& Pvu = prediction_.velocity_jerk;
+  const Eigen::MatrixXd& Pvu = tracked_velocity_jerk_;
   const Eigen::MatrixXd& Pzu = prediction_.cop_jerk;
   // Jerk block of J1, J3, J4 (eq. 5), the same for both axes and every pattern.
   const Eigen::MatrixXd jerk_block = alpha * Pvu.transpose() * Pvu +
@@ -132,6 +142,8 @@ NmpcProblem NmpcModel::makeProblem() const {
   problem.phase.fixed_step_pose = Eigen::Matrix<double, 3, Eigen::Dynamic>::Zero(3, layout_.steps);
   problem.velocity_x = Eigen::VectorXd::Zero(layout_.horizon);
   problem.velocity_y = Eigen::VectorXd::Zero(layout_.horizon);
+  problem.velocity_past_x = Eigen::VectorXd::Zero(layout_.horizon);
+  problem.velocity_past_y = Eigen::VectorXd::Zero(layout_.horizon);
   problem.yaw_reference = Eigen::VectorXd::Zero(layout_.steps);
   problem.obstacle_slot = Eigen::VectorXi::Constant(layout_.obstacle_slots, -1);
   return problem;
@@ -151,17 +163,18 @@ void buildCostGradient(const NmpcModel& model, const NmpcProblem& problem,
     const Eigen::Vector3d& c_hat = axis == 0 ? problem.com_x : problem.com_y;
     const Eigen::VectorXd& v_ref = axis == 0 ? problem.velocity_x : problem.velocity_y;
     const double support = phase.support_pose(axis);
-    // J1 residual: Pvu jerk - (v_ref - Pvs c_hat); J3 residual: Pzu jerk - V F - t with
-    // t = v f_k - Pzs c_hat (eq. 12's terms).
+    // J1 residual: Pvu jerk - (v_ref - Pvs c_hat - past) with the tracked (windowed)
+    // velocity rows; J3 residual: Pzu jerk - V F - t with t = v f_k - Pzs c_hat (eq. 12).
     velocity_error = v_ref;
-    velocity_error.noalias() -= P.velocity_state * c_hat;
+    velocity_error -= axis == 0 ? problem.velocity_past_x : problem.velocity_past_y;
+    velocity_error.noalias() -= model.trackedVelocityState() * c_hat;
     cop_offset.noalias() = -P.cop_state * c_hat;
     for (int j = 0; j < N; ++j)
       if (phase.row_step(j) == 0) cop_offset(j) += support;
     const int oj = axis == 0 ? L.jerkX() : L.jerkY();
     const int of = axis == 0 ? L.stepX() : L.stepY();
     auto g_jerk = gradient.segment(oj, N);
-    g_jerk.noalias() = -w.weight_velocity * P.velocity_jerk.transpose() * velocity_error;
+    g_jerk.noalias() = -w.weight_velocity * model.trackedVelocityJerk().transpose() * velocity_error;
     g_jerk.noalias() -= w.weight_cop * P.cop_jerk.transpose() * cop_offset;
     for (int i = 0; i < nf; ++i) gradient(of + i) = 0.0;
     bool has_rows[16] = {false};
@@ -194,8 +207,10 @@ double evaluateCost(const NmpcModel& model, const NmpcProblem& problem,
     const int of = axis == 0 ? L.stepX() : L.stepY();
     const auto jerk = U.segment(oj, N);
     for (int j = 0; j < N; ++j) {
-      const double velocity = P.velocity_state.row(j).dot(c_hat) +
-                              P.velocity_jerk.row(j).head(j + 1).dot(jerk.head(j + 1));
+      const Eigen::VectorXd& past = axis == 0 ? problem.velocity_past_x : problem.velocity_past_y;
+      const double velocity =
+          model.trackedVelocityState().row(j).dot(c_hat) +
+          model.trackedVelocityJerk().row(j).head(j + 1).dot(jerk.head(j + 1)) + past(j);
       const double cop = P.cop_state.row(j).dot(c_hat) +
                          P.cop_jerk.row(j).head(j + 1).dot(jerk.head(j + 1));
       const int step = problem.phase.row_step(j) - 1;

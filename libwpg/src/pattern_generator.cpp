@@ -22,7 +22,9 @@ PatternGenerator::PatternGenerator(const WalkingParameters& parameters,
     : model_(parameters, settings.max_obstacles_in_qp),
       settings_(settings),
       workspace_(model_),
-      problem_(model_.makeProblem()) {
+      problem_(model_.makeProblem()),
+      velocity_history_(Eigen::Matrix<double, 2, Eigen::Dynamic>::Zero(
+          2, std::max(0, parameters.velocity_window_samples - 1))) {
   reset();
 }
 
@@ -82,6 +84,7 @@ void PatternGenerator::reset(const Eigen::Vector3d& pose) {
   structure_changed_ = true;
   workspace_.U.setZero();
   workspace_.active_count = 0;
+  velocity_history_.setZero();
   plan_ = SamplePlan();
 }
 
@@ -196,6 +199,21 @@ void PatternGenerator::buildProblem(const Eigen::Vector3d& command) {
   }
   problem_.com_x = com_x_;
   problem_.com_y = com_y_;
+  // J1's windowed velocity: the samples of each window already walked (newest first: the
+  // current sample's velocity, then the ones before).
+  const int history = static_cast<int>(velocity_history_.cols());
+  for (int i = history - 1; i > 0; --i) velocity_history_.col(i) = velocity_history_.col(i - 1);
+  if (history > 0) velocity_history_.col(0) << com_x_(1), com_y_(1);
+  const double window = w.velocity_window_samples;
+  for (int j = 0; j < L.horizon; ++j) {
+    double past_x = 0.0, past_y = 0.0;
+    for (int i = 0; i < history - j; ++i) {
+      past_x += velocity_history_(0, i);
+      past_y += velocity_history_(1, i);
+    }
+    problem_.velocity_past_x(j) = past_x / window;
+    problem_.velocity_past_y(j) = past_y / window;
+  }
   selectObstacles();
 }
 

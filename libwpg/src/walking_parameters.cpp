@@ -81,6 +81,8 @@ void WalkingParameters::validate() const {
   requirePositive(max_step_yaw_change, "max_step_yaw_change");
   requirePositive(weight_velocity, "weight_velocity");
   requirePositive(weight_yaw, "weight_yaw");
+  require(velocity_window_samples >= 1 && velocity_window_samples <= horizon_length,
+          "velocity_window_samples", "an integer in [1, horizon_length]", velocity_window_samples);
   requirePositive(weight_cop, "weight_cop");
   requirePositive(weight_jerk, "weight_jerk");
   requireNonNegative(step_height, "step_height");

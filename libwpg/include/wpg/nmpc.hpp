@@ -89,6 +89,9 @@ struct NmpcProblem {
   Eigen::Vector3d com_x = Eigen::Vector3d::Zero();  // [c, c', c''] along world x
   Eigen::Vector3d com_y = Eigen::Vector3d::Zero();
   Eigen::VectorXd velocity_x, velocity_y;  // N: world reference velocity per sample (J1)
+  // N: the part of each sample's windowed mean velocity that comes from samples already
+  // walked (0 with the paper's instantaneous tracking, velocity_window_samples = 1)
+  Eigen::VectorXd velocity_past_x, velocity_past_y;
   Eigen::VectorXd yaw_reference;           // nf: reference yaw of each step (J2)
 };
 
@@ -99,6 +102,12 @@ class NmpcModel {
   const WalkingParameters& parameters() const { return parameters_; }
   const NmpcLayout& layout() const { return layout_; }
   const LipmPrediction& prediction() const { return prediction_; }
+  // The velocity J1 tracks: (windowed mean of) C' = tracked_state c_hat + tracked_jerk jerks
+  // + the problem's velocity_past (prediction's velocity rows with window 1).
+  const Eigen::Matrix<double, Eigen::Dynamic, 3>& trackedVelocityState() const {
+    return tracked_velocity_state_;
+  }
+  const Eigen::MatrixXd& trackedVelocityJerk() const { return tracked_velocity_jerk_; }
   const ConvexPolygon& feasibilityPolygon(FootSide side) const {
     return side == FootSide::kLeft ? feasibility_left_ : feasibility_right_;
   }
@@ -118,6 +127,8 @@ class NmpcModel {
   WalkingParameters parameters_;
   NmpcLayout layout_;
   LipmPrediction prediction_;
+  Eigen::Matrix<double, Eigen::Dynamic, 3> tracked_velocity_state_;
+  Eigen::MatrixXd tracked_velocity_jerk_;
   ConvexPolygon feasibility_left_, feasibility_right_;
   std::vector<Eigen::MatrixXd> hessians_;
   std::vector<qp::HessianFactor> factors_;

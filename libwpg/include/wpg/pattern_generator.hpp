@@ -99,6 +99,9 @@ class PatternGenerator {
   Eigen::Vector3d com_x_ = Eigen::Vector3d::Zero(), com_y_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d left_ = Eigen::Vector3d::Zero(), right_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d command_ = Eigen::Vector3d::Zero();
+  // CoM velocities (x; y) at the current and previous samples, newest first: the walked part
+  // of J1's windowed velocity (velocity_window_samples - 1 columns).
+  Eigen::Matrix<double, 2, Eigen::Dynamic> velocity_history_;
   double time_ = 0.0;
   bool standing_ = true;
   FootSide support_side_ = FootSide::kRight;

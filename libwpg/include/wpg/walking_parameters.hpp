@@ -48,6 +48,12 @@ struct WalkingParameters {
   double max_step_yaw_change = 0.05;   // [rad]
   // --- cost weights, eq. (5) and Sec. V-D ----------------------------------------------------
   double weight_velocity = 2.5;        // alpha: linear velocity tracking (J1)
+  // J1 tracks the CoM velocity averaged over this many samples (the current one and those
+  // before it, past samples from the walk's history). 1 = the paper's instantaneous velocity;
+  // single_support_samples + double_support_samples = the mean over one step, which does not
+  // charge the lateral sway of every step to the tracking (sideways walking, going around
+  // obstacles).
+  int velocity_window_samples = 1;
   // Weight of the angular tracking J2. The paper uses alpha for both (Sec. III-B: "a different
   // weight ... was not necessary"); with it the optimum of (5) yaws every other foot to the
   // yaw bound on straight walks to bring the feet closer than the feasibility polygon allows.
