@@ -74,16 +74,7 @@ int replayCommand(const ReplayOptions& options) {
             << '\n';
   std::cout << obstacle_summary;
   printMultibodySummary(std::cout, replay);
-  std::cout << "dataset   " << dataset_path.string() << '\n';
-  if (options.plot) {
-    std::cout.flush();
-    if (drawFigure(dataset_path.string(), figure_path.string()) == kExitSuccess) {
-      std::cout << "figure    " << figure_path.string() << '\n';
-    } else {
-      printWarning("no figure drawn (the dataset is complete; retry with `wpg plot " +
-                   dataset_path.string() + "`)");
-    }
-  }
+  reportDatasetAndFigure(dataset_path.string(), figure_path.string(), options.plot);
   return kExitSuccess;
 }
 

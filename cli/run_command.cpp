@@ -161,16 +161,7 @@ int runCommand(const RunOptions& options) {
   printSummary(std::cout, scenario, result);
   std::cout << obstacle_summary;
   if (replay) printMultibodySummary(std::cout, *replay);
-  std::cout << "dataset   " << dataset_path.string() << '\n';
-  if (options.plot) {
-    std::cout.flush();
-    if (drawFigure(dataset_path.string(), figure_path.string()) == kExitSuccess) {
-      std::cout << "figure    " << figure_path.string() << '\n';
-    } else {
-      printWarning("no figure drawn (the dataset is complete; retry with `wpg plot " +
-                   dataset_path.string() + "`)");
-    }
-  }
+  reportDatasetAndFigure(dataset_path.string(), figure_path.string(), options.plot);
   if (!result.success) {
     std::cout.flush();
     printError("the walk failed: " + (result.message.empty() ? std::string("see mpc/status in the dataset")

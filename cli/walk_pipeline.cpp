@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <iostream>
 #include <optional>
 #include <ostream>
 #include <stdexcept>
@@ -156,6 +157,19 @@ void printMultibodySummary(std::ostream& out, const ReplayOutcome& outcome) {
         << fixed(1e3 * std_dev, 3) << ", min " << fixed(1e3 * chain.minCoeff(), 3) << ", max "
         << fixed(1e3 * chain.maxCoeff(), 3) << " ms; replay" << (filtered ? " + filter " : " ")
         << fixed(outcome.realTimeFactor(), 0) << "x real time\n";
+  }
+}
+
+void reportDatasetAndFigure(const std::string& dataset_path, const std::string& figure_path,
+                            bool plot) {
+  std::cout << "dataset   " << dataset_path << '\n';
+  if (!plot) return;
+  std::cout.flush();
+  if (drawFigure(dataset_path, figure_path) == kExitSuccess) {
+    std::cout << "figure    " << figure_path << '\n';
+  } else {
+    printWarning("no figure drawn (the dataset is complete; retry with `wpg plot " +
+                 dataset_path + "`)");
   }
 }
 

@@ -47,6 +47,11 @@ std::string writeScenarioDataset(const std::string& path, const datasets::Scenar
 // The summary lines of a replay: ZMP error before/after, IK status, timing of the chain.
 void printMultibodySummary(std::ostream& out, const ReplayOutcome& outcome);
 
+// The last lines of `wpg run` and `wpg replay`: the dataset, and when `plot` its figure next to
+// it (a figure that cannot be drawn is a warning: the dataset is complete).
+void reportDatasetAndFigure(const std::string& dataset_path, const std::string& figure_path,
+                            bool plot);
+
 // "%.<digits>f" of value.
 std::string fixed(double value, int digits);
 

@@ -11,6 +11,8 @@
 #include <vector>
 
 #include <H5Cpp.h>
+
+#include "hdf5_read.hpp"
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -101,24 +103,13 @@ wpg::MultibodyValidation handMadeValidation(Eigen::Index samples, Eigen::Index i
   return v;
 }
 
-std::vector<double> readMatrix(const H5::Group& group, const std::string& name,
-                               std::vector<hsize_t>* dims) {
-  const H5::DataSet dataset = group.openDataSet(name);
-  const H5::DataSpace space = dataset.getSpace();
-  dims->assign(static_cast<std::size_t>(space.getSimpleExtentNdims()), 0);
-  space.getSimpleExtentDims(dims->data());
-  hsize_t count = 1;
-  for (const hsize_t d : *dims) count *= d;
-  std::vector<double> values(count);
-  if (count > 0) dataset.read(values.data(), H5::PredType::NATIVE_DOUBLE);
-  return values;
-}
+using namespace wpg_test;  // HDF5 readers (hdf5_read.hpp)
 
 void expectMatrix(const Eigen::MatrixXd& expected, const H5::Group& group,
                   const std::string& name) {
   SCOPED_TRACE(name);
   std::vector<hsize_t> dims;
-  const std::vector<double> read = readMatrix(group, name, &dims);
+  const std::vector<double> read = readDoubles(group, name, &dims);
   const std::vector<hsize_t> shape =
       expected.cols() == 1 ? std::vector<hsize_t>{hsize_t(expected.rows())}
                            : std::vector<hsize_t>{hsize_t(expected.rows()), hsize_t(expected.cols())};
@@ -129,38 +120,6 @@ void expectMatrix(const Eigen::MatrixXd& expected, const H5::Group& group,
           << "row " << i << " column " << j;
 }
 
-std::string stringAttribute(const H5::H5Object& object, const std::string& name) {
-  const H5::Attribute attribute = object.openAttribute(name);
-  std::string value;
-  attribute.read(attribute.getStrType(), value);
-  return value;
-}
-
-std::vector<std::string> stringListAttribute(const H5::H5Object& object, const std::string& name) {
-  const H5::Attribute attribute = object.openAttribute(name);
-  hsize_t count = 0;
-  attribute.getSpace().getSimpleExtentDims(&count);
-  std::vector<char*> pointers(count);
-  const H5::StrType type = attribute.getStrType();
-  if (count > 0) attribute.read(type, pointers.data());
-  std::vector<std::string> values(pointers.begin(), pointers.end());
-  if (count > 0) {
-    H5::DataSet::vlenReclaim(pointers.data(), type, attribute.getSpace());
-  }
-  return values;
-}
-
-double doubleAttribute(const H5::H5Object& object, const std::string& name) {
-  double value = 0.0;
-  object.openAttribute(name).read(H5::PredType::NATIVE_DOUBLE, &value);
-  return value;
-}
-
-int intAttribute(const H5::H5Object& object, const std::string& name) {
-  int value = 0;
-  object.openAttribute(name).read(H5::PredType::NATIVE_INT, &value);
-  return value;
-}
 
 class MultibodyDatasetFiles : public ::testing::Test {
  protected:

@@ -13,6 +13,8 @@
 #include <vector>
 
 #include <H5Cpp.h>
+
+#include "hdf5_read.hpp"
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -267,47 +269,7 @@ TEST(ShippedObstacleScenarios, LoadAndRoundTrip) {
 
 // --- the dataset ------------------------------------------------------------------------------
 
-std::vector<hsize_t> dimensions(const H5::DataSet& dataset) {
-  const H5::DataSpace space = dataset.getSpace();
-  std::vector<hsize_t> dims(static_cast<std::size_t>(space.getSimpleExtentNdims()));
-  space.getSimpleExtentDims(dims.data());
-  return dims;
-}
-
-template <typename T>
-std::vector<T> read(const H5::Group& group, const std::string& name, const H5::PredType& type,
-                    std::vector<hsize_t>* dims = nullptr) {
-  const H5::DataSet dataset = group.openDataSet(name);
-  const std::vector<hsize_t> d = dimensions(dataset);
-  if (dims) *dims = d;
-  hsize_t count = 1;
-  for (const hsize_t n : d) count *= n;
-  std::vector<T> values(count);
-  if (count > 0) dataset.read(values.data(), type);
-  return values;
-}
-
-std::vector<double> doubles(const H5::Group& group, const std::string& name,
-                            std::vector<hsize_t>* dims = nullptr) {
-  return read<double>(group, name, H5::PredType::NATIVE_DOUBLE, dims);
-}
-
-std::vector<int> ints(const H5::Group& group, const std::string& name) {
-  return read<int>(group, name, H5::PredType::NATIVE_INT);
-}
-
-std::string stringAttribute(const H5::H5Object& object, const std::string& name) {
-  const H5::Attribute attribute = object.openAttribute(name);
-  std::string value;
-  attribute.read(attribute.getStrType(), value);
-  return value;
-}
-
-double doubleAttribute(const H5::H5Object& object, const std::string& name) {
-  double value = 0.0;
-  object.openAttribute(name).read(H5::PredType::NATIVE_DOUBLE, &value);
-  return value;
-}
+using namespace wpg_test;  // HDF5 readers (hdf5_read.hpp)
 
 int intAttribute(const H5::H5Object& object, const std::string& name) {
   int value = 0;
@@ -354,21 +316,21 @@ TEST_F(ObstacleFiles, DatasetHoldsTheObstacleTableAndTheFootstepChecks) {
   const H5::Group obstacles = file.openGroup("/runs/obstacle_test/obstacles");
   EXPECT_EQ(intAttribute(obstacles, "count"), 3);
   const std::vector<std::uint8_t> types =
-      read<std::uint8_t>(obstacles, "type", H5::PredType::NATIVE_UINT8);
+      readAll<std::uint8_t>(obstacles, "type", H5::PredType::NATIVE_UINT8);
   EXPECT_EQ(types, (std::vector<std::uint8_t>{0, 1, 2}));
   EXPECT_EQ(stringAttribute(obstacles.openDataSet("type"), "codes"), "0=circle, 1=box, 2=polygon");
   std::vector<hsize_t> dims;
-  EXPECT_EQ(doubles(obstacles, "center", &dims),
+  EXPECT_EQ(readDoubles(obstacles, "center", &dims),
             (std::vector<double>{1.5, 0.0, 3.0, 1.0, 0.0, 0.0}));
   EXPECT_EQ(dims, (std::vector<hsize_t>{3, 2}));
-  EXPECT_EQ(doubles(obstacles, "radius"), (std::vector<double>{0.3, 0.0, 0.0}));
-  EXPECT_EQ(doubles(obstacles, "size"), (std::vector<double>{0.0, 0.0, 0.4, 0.6, 0.0, 0.0}));
-  EXPECT_EQ(doubles(obstacles, "yaw"), (std::vector<double>{0.0, 0.3, 0.0}));
-  EXPECT_EQ(doubles(obstacles, "margin"), (std::vector<double>{0.2, 0.1, 0.1}));
+  EXPECT_EQ(readDoubles(obstacles, "radius"), (std::vector<double>{0.3, 0.0, 0.0}));
+  EXPECT_EQ(readDoubles(obstacles, "size"), (std::vector<double>{0.0, 0.0, 0.4, 0.6, 0.0, 0.0}));
+  EXPECT_EQ(readDoubles(obstacles, "yaw"), (std::vector<double>{0.0, 0.3, 0.0}));
+  EXPECT_EQ(readDoubles(obstacles, "margin"), (std::vector<double>{0.2, 0.1, 0.1}));
   // Outlines: none for the circle, the box's 4 corners, the triangle's 3 vertices.
-  EXPECT_EQ(ints(obstacles, "vertex_start"), (std::vector<int>{0, 0, 4}));
-  EXPECT_EQ(ints(obstacles, "vertex_count"), (std::vector<int>{0, 4, 3}));
-  const std::vector<double> vertices = doubles(obstacles, "vertices", &dims);
+  EXPECT_EQ(readInts(obstacles, "vertex_start"), (std::vector<int>{0, 0, 4}));
+  EXPECT_EQ(readInts(obstacles, "vertex_count"), (std::vector<int>{0, 4, 3}));
+  const std::vector<double> vertices = readDoubles(obstacles, "vertices", &dims);
   ASSERT_EQ(dims, (std::vector<hsize_t>{7, 2}));
   const std::vector<Eigen::Vector2d> box = scenario.request.obstacles[1].worldVertices();
   for (int k = 0; k < 4; ++k) {
@@ -385,16 +347,16 @@ TEST_F(ObstacleFiles, DatasetHoldsTheObstacleTableAndTheFootstepChecks) {
   EXPECT_EQ(stringAttribute(obstacles.openDataSet("vertices"), "frame"), "world");
 
   const H5::Group checks = file.openGroup("/runs/obstacle_test/checks");
-  EXPECT_EQ(doubles(checks, "step_clearance"), clearances.clearance);
-  EXPECT_EQ(ints(checks, "step_clearance_obstacle"), clearances.clearance_obstacle);
-  EXPECT_EQ(doubles(checks, "step_foot_distance"), clearances.foot_distance);
+  EXPECT_EQ(readDoubles(checks, "step_clearance"), clearances.clearance);
+  EXPECT_EQ(readInts(checks, "step_clearance_obstacle"), clearances.clearance_obstacle);
+  EXPECT_EQ(readDoubles(checks, "step_foot_distance"), clearances.foot_distance);
   EXPECT_EQ(doubleAttribute(checks, "min_step_clearance"), -0.05);
   EXPECT_EQ(doubleAttribute(checks, "min_step_foot_distance"), 0.11);
   // Centres computed by the writer: the initial feet and (1, 0.1) are nearest to the circle,
   // (2.8, 0.9) to the box (0.2 m from its centre along its short axis... inside it).
   const wpg::AnalyticObstacleDistance exact(scenario.request.obstacles);
-  const std::vector<double> centre = doubles(checks, "step_centre_clearance");
-  const std::vector<int> centre_obstacle = ints(checks, "step_centre_clearance_obstacle");
+  const std::vector<double> centre = readDoubles(checks, "step_centre_clearance");
+  const std::vector<int> centre_obstacle = readInts(checks, "step_centre_clearance_obstacle");
   ASSERT_EQ(centre.size(), 4u);
   EXPECT_NEAR(centre[0], std::hypot(1.5, 0.095) - 0.3 - 0.2, 1e-12);
   EXPECT_NEAR(centre[2], std::hypot(0.5, 0.1) - 0.3 - 0.2, 1e-12);
@@ -424,9 +386,9 @@ TEST_F(ObstacleFiles, WithoutObstaclesTheTableIsEmptyAndNoStepIsChecked) {
   const H5::Group obstacles = file.openGroup("/runs/obstacle_test/obstacles");
   EXPECT_EQ(intAttribute(obstacles, "count"), 0);
   std::vector<hsize_t> dims;
-  doubles(obstacles, "vertices", &dims);
+  readDoubles(obstacles, "vertices", &dims);
   EXPECT_EQ(dims, (std::vector<hsize_t>{0, 2}));
-  doubles(obstacles, "radius", &dims);
+  readDoubles(obstacles, "radius", &dims);
   EXPECT_EQ(dims, (std::vector<hsize_t>{0}));
   const H5::Group checks = file.openGroup("/runs/obstacle_test/checks");
   EXPECT_FALSE(checks.nameExists("step_centre_clearance"));

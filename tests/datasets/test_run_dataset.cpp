@@ -9,6 +9,8 @@
 #include <vector>
 
 #include <H5Cpp.h>
+
+#include "hdf5_read.hpp"
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -74,43 +76,7 @@ wpg::WalkResult handMadeResult(std::size_t samples, std::size_t steps, std::size
 
 // --- reading with the plain HDF5 C++ API -----------------------------------------------------
 
-std::vector<hsize_t> dimensions(const H5::DataSet& dataset) {
-  const H5::DataSpace space = dataset.getSpace();
-  std::vector<hsize_t> dims(static_cast<std::size_t>(space.getSimpleExtentNdims()));
-  space.getSimpleExtentDims(dims.data());
-  return dims;
-}
-
-template <typename T>
-std::vector<T> readAll(const H5::Group& group, const std::string& name,
-                       const H5::PredType& memory_type, std::vector<hsize_t>* dims) {
-  const H5::DataSet dataset = group.openDataSet(name);
-  *dims = dimensions(dataset);
-  hsize_t count = 1;
-  for (const hsize_t d : *dims) count *= d;
-  std::vector<T> values(count);
-  if (count > 0) dataset.read(values.data(), memory_type);
-  return values;
-}
-
-std::vector<double> readDoubles(const H5::Group& group, const std::string& name,
-                                std::vector<hsize_t>* dims) {
-  return readAll<double>(group, name, H5::PredType::NATIVE_DOUBLE, dims);
-}
-
-std::string stringAttribute(const H5::H5Object& object, const std::string& name) {
-  const H5::Attribute attribute = object.openAttribute(name);
-  std::string value;
-  attribute.read(attribute.getStrType(), value);
-  return value;
-}
-
-int intAttribute(const H5::H5Object& object, const std::string& name) {
-  const H5::Attribute attribute = object.openAttribute(name);
-  int value = 0;
-  attribute.read(H5::PredType::NATIVE_INT, &value);
-  return value;
-}
+using namespace wpg_test;  // HDF5 readers (hdf5_read.hpp)
 
 class RunDatasetFiles : public ::testing::Test {
  protected:
