@@ -529,12 +529,10 @@ NmpcSolveResult runSqp(const NmpcModel& model, const NmpcProblem& problem,
       if (L.obstacle_slots > 0) {
         status = solveRelaxed(factor, me, settings.slack_weight, L.firstObstacleRow(), ws, &slack);
         result.qp_iterations += ws.relaxed_solver.iterations();
-        result.relaxed_obstacles_only = status == qp::QpStatus::kOptimal;
       }
       if (status != qp::QpStatus::kOptimal) {
         status = solveRelaxed(factor, me, settings.slack_weight, 0, ws, &slack);
         result.qp_iterations += ws.relaxed_solver.iterations();
-        result.relaxed_obstacles_only = false;
       }
       if (status != qp::QpStatus::kOptimal || !ws.relaxed_solution.allFinite()) {
         result.status = IterationStatus::kFallback;  // keep the time-shifted previous plan

@@ -139,7 +139,6 @@ void PatternGenerator::buildProblem(const Eigen::Vector3d& command) {
   const int S = w.stepSamples();
   const int nf = L.steps;
   PhaseStructure& phase = problem_.phase;
-  phase.standing = standing_;
   if (standing_) {
     phase.pattern = model_.standingPattern();
     setDoubleSupport(phase);
@@ -177,7 +176,6 @@ void PatternGenerator::buildProblem(const Eigen::Vector3d& command) {
           composePose(phase.support_pose, {0.0, sign * w.stop_foot_separation, 0.0});
     }
   }
-  phase.remaining_samples = standing_ ? L.horizon : phase.pattern;
   model_.rowStepsOf(phase.pattern, phase.row_step);
 
   // J2 references: each step turns by T_step * omega from the one before (eq. 8's p^theta).

@@ -1,7 +1,6 @@
 #include "wpg/walk_generator.hpp"
 
 #include <cmath>
-#include <memory>
 #include <stdexcept>
 
 #include "wpg/pattern_generator.hpp"
@@ -15,14 +14,10 @@ WalkResult generateWalk(const WalkingParameters& parameters, const WalkRequest& 
   request.validate();
   PatternGenerator generator(parameters, request.generator);
   // Obstacle distances: the world model when given, else libwpg's exact 2-D distance.
-  std::unique_ptr<AnalyticObstacleDistance> analytic;
-  const ObstacleDistanceOracle* distance = world;
+  const ObstacleDistanceOracle* distance = nullptr;
   if (!request.obstacles.empty()) {
-    if (!distance) {
-      analytic = std::make_unique<AnalyticObstacleDistance>(request.obstacles);
-      distance = analytic.get();
-    }
-    generator.setObstacles(&request.obstacles, distance);
+    generator.setObstacles(&request.obstacles, world);
+    distance = generator.obstacleDistance();
     // The feet must start clear of every obstacle grown by its margin (and the sole radius).
     for (int o = 0; o < static_cast<int>(request.obstacles.size()); ++o) {
       for (FootSide side : {FootSide::kLeft, FootSide::kRight}) {

@@ -39,15 +39,14 @@ NmpcProblem randomProblem(const NmpcModel& model, int pattern, Rng& rng) {
   NmpcProblem problem = model.makeProblem();
   auto& phase = problem.phase;
   phase.pattern = pattern;
-  phase.standing = pattern == model.standingPattern();
+  const bool standing = pattern == model.standingPattern();
   model.rowStepsOf(pattern, phase.row_step);
-  phase.remaining_samples = phase.standing ? L.horizon : pattern;
   phase.first_step_side = rng.uniform(0, 1) < 0.5 ? FootSide::kLeft : FootSide::kRight;
   phase.support_pose = Vector3d(rng.uniform(-2, 2), rng.uniform(-2, 2), rng.uniform(-3, 3));
   phase.support_half_length = w.copHalfLength();
   phase.support_half_width = w.copHalfWidth();
   for (int i = 0; i < L.steps; ++i) {
-    phase.step_fixed(i) = phase.standing ? 1 : 0;
+    phase.step_fixed(i) = standing ? 1 : 0;
     phase.fixed_step_pose.col(i) = Vector3d(rng.uniform(-2, 2), rng.uniform(-2, 2), rng.uniform(-3, 3));
   }
   problem.com_x = Vector3d(rng.uniform(-2, 2), rng.uniform(-1, 1), rng.uniform(-3, 3));

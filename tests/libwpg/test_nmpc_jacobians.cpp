@@ -49,14 +49,13 @@ NmpcProblem randomProblem(const NmpcModel& model, int pattern, FootSide first_si
   NmpcProblem problem = model.makeProblem();
   auto& phase = problem.phase;
   phase.pattern = pattern;
-  phase.standing = pattern == model.standingPattern();
+  const bool standing = pattern == model.standingPattern();
   model.rowStepsOf(pattern, phase.row_step);
-  phase.remaining_samples = phase.standing ? L.horizon : pattern;
   phase.first_step_side = first_side;
   phase.support_pose = Vector3d(rng.uniform(-2, 2), rng.uniform(-2, 2), rng.yaw());
   phase.support_half_length = w.copHalfLength();
   phase.support_half_width =
-      phase.standing ? 0.5 * w.initial_foot_separation + w.copHalfWidth() : w.copHalfWidth();
+      standing ? 0.5 * w.initial_foot_separation + w.copHalfWidth() : w.copHalfWidth();
   for (int i = 0; i < L.steps; ++i) {
     bool fixed = false;
     if (mode == FixedMode::kFirst) fixed = i == 0;
@@ -401,7 +400,6 @@ TEST(NmpcConstraints, RotationDirectionOnKnownGeometry) {
   auto& phase = problem.phase;
   phase.pattern = 3;
   model.rowStepsOf(3, phase.row_step);
-  phase.remaining_samples = 3;
   phase.first_step_side = FootSide::kLeft;
   phase.support_pose = Vector3d(1.0, 2.0, M_PI / 2);
   phase.support_half_length = w.copHalfLength();

@@ -57,8 +57,6 @@ struct NmpcLayout {
 
 // Shape of the problem at one sample: which support each CoP sample uses, which steps are free.
 struct PhaseStructure {
-  bool standing = false;          // double support on both feet, no stepping
-  int remaining_samples = 0;      // r: CoP samples j = 1..r use the current support
   FootSide first_step_side = FootSide::kLeft;  // previewed steps alternate from this side
   // Fixed reference of the samples on the current support: the support foot (x, y, yaw), or
   // the point between the feet when standing; and the CoP rectangle there (half sizes).
@@ -68,7 +66,9 @@ struct PhaseStructure {
   Eigen::VectorXi row_step;        // N: 0 = current support, i = previewed step i (1-based)
   Eigen::VectorXi step_fixed;      // nf: 1 = pose fixed by equality (landed, or final step)
   Eigen::Matrix<double, 3, Eigen::Dynamic> fixed_step_pose;  // 3 x nf
-  int pattern = 0;                 // Hessian pattern (NmpcModel::patternOf)
+  // Hessian pattern (NmpcModel::rowStepsOf): r = the CoP samples j = 1..r on the current
+  // support while walking, or the standing pattern (every sample on both feet)
+  int pattern = 0;
 
   FootSide stepSide(int step) const {  // 0-based step index
     const bool same = (step % 2) == 0;
@@ -157,7 +157,6 @@ struct NmpcSolveResult {
   int qp_iterations = 0;
   int sqp_iterations = 0;
   double slack = 0.0;
-  bool relaxed_obstacles_only = false;  // kRelaxed with only the obstacle rows relaxed
   double cost = 0.0;
   double last_step_norm = 0.0;  // max |U_{i+1} - U_i| of the last SQP iteration
 };

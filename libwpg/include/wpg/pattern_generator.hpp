@@ -33,6 +33,9 @@ class PatternGenerator {
   // AnalyticObstacleDistance when it is null. Allocates (call it before walking).
   void setObstacles(const std::vector<Obstacle>* obstacles,
                     const ObstacleDistanceOracle* distance = nullptr);
+  // The distance the obstacle constraints use (the given one, or the internal analytic one);
+  // null without obstacles.
+  const ObstacleDistanceOracle* obstacleDistance() const { return problem_.distance; }
 
   // Standing with the ankles side by side (initial_foot_separation) about `pose` = (x, y, yaw)
   // of the point between them; CoM at rest above it at com_height.
