@@ -75,6 +75,20 @@ double ConvexPolygon::violation(const Eigen::Vector2d& p) const {
   return (normals_ * p - offsets_).maxCoeff();
 }
 
+std::vector<Eigen::Vector2d> rectangleCorners(const Eigen::Vector2d& center, double yaw,
+                                              double length, double width) {
+  const double c = std::cos(yaw), s = std::sin(yaw);
+  const double hx = 0.5 * length, hy = 0.5 * width;
+  std::vector<Eigen::Vector2d> corners;
+  corners.reserve(4);
+  for (const auto& local : {Eigen::Vector2d(-hx, -hy), Eigen::Vector2d(hx, -hy),
+                            Eigen::Vector2d(hx, hy), Eigen::Vector2d(-hx, hy)}) {
+    corners.emplace_back(center.x() + c * local.x() - s * local.y(),
+                         center.y() + s * local.x() + c * local.y());
+  }
+  return corners;
+}
+
 std::vector<Eigen::Vector2d> convexHull(std::vector<Eigen::Vector2d> points) {
   // Andrew's monotone chain.
   std::sort(points.begin(), points.end(), [](const Eigen::Vector2d& a, const Eigen::Vector2d& b) {

@@ -49,15 +49,7 @@ std::vector<Eigen::Vector2d> Obstacle::worldVertices() const {
     polygon.setVertices(vertices);
     return polygon.vertices();
   }
-  const double c = std::cos(yaw), s = std::sin(yaw);
-  const double hx = 0.5 * size.x(), hy = 0.5 * size.y();
-  std::vector<Eigen::Vector2d> out;
-  for (const auto& local : {Eigen::Vector2d(-hx, -hy), Eigen::Vector2d(hx, -hy),
-                            Eigen::Vector2d(hx, hy), Eigen::Vector2d(-hx, hy)}) {
-    out.emplace_back(center.x() + c * local.x() - s * local.y(),
-                     center.y() + s * local.x() + c * local.y());
-  }
-  return out;
+  return rectangleCorners(center, yaw, size.x(), size.y());
 }
 
 void boundingCircle(const Obstacle& obstacle, Eigen::Vector2d* center, double* radius) {

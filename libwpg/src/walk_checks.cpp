@@ -8,15 +8,12 @@
 namespace wpg {
 namespace {
 
-// Corners of a foot rectangle centred on the ankle, in the world frame.
+// Corners of a foot rectangle centred on the ankle (x, y, z, yaw), in the world frame.
 void footCorners(const Eigen::Vector4d& foot, double half_length, double half_width,
                  std::vector<Eigen::Vector2d>* out) {
-  const double c = std::cos(foot(3)), s = std::sin(foot(3));
-  for (int i = 0; i < 4; ++i) {
-    const double lx = (i == 0 || i == 3) ? half_length : -half_length;
-    const double ly = (i < 2) ? half_width : -half_width;
-    out->emplace_back(foot(0) + c * lx - s * ly, foot(1) + s * lx + c * ly);
-  }
+  for (const Eigen::Vector2d& corner :
+       rectangleCorners(foot.head<2>(), foot(3), 2.0 * half_length, 2.0 * half_width))
+    out->push_back(corner);
 }
 
 // Distance outside the support polygon (<= 0 inside).

@@ -33,20 +33,6 @@ Eigen::Vector2d closestPointOnNearestEdge(const std::vector<Eigen::Vector2d>& po
   return closestOnSegment(polygon[best], polygon[(best + 1) % n], point);
 }
 
-std::vector<Eigen::Vector2d> rectangleVertices(const Eigen::Vector2d& center, double yaw,
-                                               double length, double width) {
-  const double c = std::cos(yaw), s = std::sin(yaw);
-  const double hx = 0.5 * length, hy = 0.5 * width;
-  std::vector<Eigen::Vector2d> corners;
-  corners.reserve(4);
-  for (const auto& local : {Eigen::Vector2d(-hx, -hy), Eigen::Vector2d(hx, -hy),
-                            Eigen::Vector2d(hx, hy), Eigen::Vector2d(-hx, hy)}) {
-    corners.emplace_back(center.x() + c * local.x() - s * local.y(),
-                         center.y() + s * local.x() + c * local.y());
-  }
-  return corners;
-}
-
 namespace {
 
 // Smallest overlap of the projections of a and b on the outward normals of `edges`' edges.

@@ -4,6 +4,7 @@
 #include <Eigen/Core>
 #include <vector>
 
+#include "wpg/convex_polygon.hpp"
 #include "wpg/obstacles.hpp"
 
 namespace wpg::planning {
@@ -18,9 +19,7 @@ Eigen::Vector2d closestPointOnNearestEdge(const std::vector<Eigen::Vector2d>& po
                                           const Eigen::Vector2d& on_boundary,
                                           const Eigen::Vector2d& point);
 
-// Corners (counter-clockwise) of a length x width rectangle centred on `center`, turned by yaw.
-std::vector<Eigen::Vector2d> rectangleVertices(const Eigen::Vector2d& center, double yaw,
-                                               double length, double width);
+using wpg::rectangleCorners;  // libwpg (wpg/convex_polygon.hpp)
 
 // Penetration depth (the shortest translation that separates them) of two overlapping convex
 // polygons, by the separating axis theorem: > 0 when they overlap, <= 0 when they do not (then

@@ -199,7 +199,7 @@ double World::footClearance(const Eigen::Vector3d& foot_pose, double sole_length
   if (gap > 0.0) return gap - margin;
   // Touching or overlapping: minus the exact 2-D penetration depth.
   const std::vector<Eigen::Vector2d> rectangle =
-      rectangleVertices(foot_pose.head<2>(), foot_pose.z(), sole_length, sole_width);
+      rectangleCorners(foot_pose.head<2>(), foot_pose.z(), sole_length, sole_width);
   const wpg::Obstacle& shape = impl_->obstacles[static_cast<std::size_t>(obstacle)];
   const double depth = shape.type == wpg::ObstacleType::kCircle
                            ? circlePolygonPenetration(shape.center, shape.radius, rectangle)

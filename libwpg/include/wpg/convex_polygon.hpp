@@ -38,6 +38,11 @@ class ConvexPolygon {
   Eigen::VectorXd offsets_;
 };
 
+// Corners (counter-clockwise) of a length x width rectangle centred on `center`, turned by
+// `yaw`: foot soles and box obstacles.
+std::vector<Eigen::Vector2d> rectangleCorners(const Eigen::Vector2d& center, double yaw,
+                                              double length, double width);
+
 // Convex hull (counter-clockwise, no collinear points) of a point set; used for the double
 // support polygon.
 std::vector<Eigen::Vector2d> convexHull(std::vector<Eigen::Vector2d> points);
