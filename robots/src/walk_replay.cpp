@@ -19,40 +19,30 @@ double seconds(Clock::time_point since) {
   return std::chrono::duration<double>(Clock::now() - since).count();
 }
 
-// IK of every sample; the time of each sample goes to its NMPC iteration (stage column 1).
-// `record` keeps the IK statistics (of the motion finally sent to the robot).
+// IK of every sample (WalkingIk::solveTrajectory); each sample's solve time goes to its NMPC
+// iteration (stage column 1). `record` keeps the IK statistics (of the motion finally sent to
+// the robot).
 Eigen::MatrixXd solveIk(const WalkingIk& ik, const RobotModel& model, const WalkTrajectory& walk,
                         const Eigen::MatrixXd& com, int per_iteration, MultibodyValidation& out,
                         bool record) {
-  const Eigen::Index n = static_cast<Eigen::Index>(walk.size());
-  Eigen::MatrixXd q(n, model.nq());
-  Eigen::VectorXd qi(model.nq());
-  WalkingIkTarget target;
-  for (Eigen::Index i = 0; i < n; ++i) {
-    const auto start = Clock::now();
-    target.left_foot = walk.left_foot[i];
-    target.right_foot = walk.right_foot[i];
-    target.com = com.row(i).transpose();
-    target.waist_yaw = walk.free_flyer_yaw[i];
-    const WalkingIkResult r = ik.solve(target, qi);
-    q.row(i) = qi.transpose();
-    const Eigen::Index k = std::min<Eigen::Index>(i / per_iteration, out.chain_stage_time.rows() - 1);
-    if (k >= 0) out.chain_stage_time(k, 1) += seconds(start);
-    if (!record) continue;
-    if (r.status != WalkingIkStatus::kSolved) ++out.ik_failures;
-    out.max_ik_com_error = std::max(out.max_ik_com_error, r.com_error);
-    out.max_ik_foot_error = std::max(out.max_ik_foot_error, r.foot_position_error);
-    if (r.limit_violations != 0) ++out.samples_with_limit_violations;
-    out.max_limit_violation = std::max(out.max_limit_violation, r.max_limit_violation);
-    for (int j = 0; j < 64 && j < static_cast<int>(model.jointNames().size()); ++j) {
-      if (!(r.limit_violations & (std::uint64_t{1} << j))) continue;
-      const std::string& name = model.jointNames()[j];
-      if (std::find(out.violated_joints.begin(), out.violated_joints.end(), name) ==
-          out.violated_joints.end())
-        out.violated_joints.push_back(name);
-    }
+  WalkingIkTrajectory result = ik.solveTrajectory(walk, com);
+  for (std::size_t i = 0; i < result.solve_time.size(); ++i) {
+    const Eigen::Index k = std::min<Eigen::Index>(static_cast<Eigen::Index>(i) / per_iteration,
+                                                  out.chain_stage_time.rows() - 1);
+    out.chain_stage_time(k, 1) += result.solve_time[i];
   }
-  return q;
+  if (record) {
+    out.ik_failures = result.failures;
+    out.max_ik_com_error = result.max_com_error;
+    out.max_ik_foot_error = result.max_foot_position_error;
+    out.samples_with_limit_violations = result.samples_with_limit_violations;
+    out.max_limit_violation = result.max_limit_violation;
+    out.violated_joints.clear();
+    for (int j = 0; j < 64 && j < static_cast<int>(model.jointNames().size()); ++j)
+      if (result.limit_violations & (std::uint64_t{1} << j))
+        out.violated_joints.push_back(model.jointNames()[j]);
+  }
+  return std::move(result.q);
 }
 
 ZmpErrorStatistics statistics(const WalkTrajectory& walk, const Eigen::MatrixXd& zmp) {

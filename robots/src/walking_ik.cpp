@@ -1,5 +1,6 @@
 #include "wpg/robots/walking_ik.hpp"
 
+#include <chrono>
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -316,6 +317,7 @@ WalkingIkTrajectory WalkingIk::solveTrajectory(const WalkTrajectory& walk,
   WalkingIkTrajectory out;
   out.q.resize(static_cast<Eigen::Index>(n), model_.nq());
   out.samples.resize(n);
+  out.solve_time.resize(n);
   Eigen::VectorXd q(model_.nq());
   WalkingIkTarget target;
   for (std::size_t i = 0; i < n; ++i) {
@@ -324,7 +326,10 @@ WalkingIkTrajectory WalkingIk::solveTrajectory(const WalkTrajectory& walk,
     target.right_foot = walk.right_foot[i];
     target.com = com.row(row).transpose();
     target.waist_yaw = walk.free_flyer_yaw[i];
+    const auto start = std::chrono::steady_clock::now();
     const WalkingIkResult& r = out.samples[i] = solve(target, q);
+    out.solve_time[i] =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     out.q.row(row) = q.transpose();
     if (r.status != WalkingIkStatus::kSolved) ++out.failures;
     out.max_com_error = std::max(out.max_com_error, r.com_error);

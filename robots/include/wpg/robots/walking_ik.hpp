@@ -68,6 +68,7 @@ struct WalkingIkResult {
 struct WalkingIkTrajectory {
   Eigen::MatrixXd q;                     // n x nq, one configuration per row
   std::vector<WalkingIkResult> samples;  // n
+  std::vector<double> solve_time;        // n, wall time of each sample's solve [s]
   int failures = 0;                      // samples whose status is not kSolved
   double max_com_error = 0.0;            // [m]
   double max_foot_position_error = 0.0;  // [m]
