@@ -347,16 +347,20 @@ struct WalkingField {
   double WalkingParameters::*number;
   int WalkingParameters::*integer;
   std::array<double, 5> WalkingParameters::*polygon;
+  HeadingReference WalkingParameters::*heading;
 };
 
 WalkingField numberField(const char* name, double WalkingParameters::*member) {
-  return {name, member, nullptr, nullptr};
+  return {name, member, nullptr, nullptr, nullptr};
 }
 WalkingField integerField(const char* name, int WalkingParameters::*member) {
-  return {name, nullptr, member, nullptr};
+  return {name, nullptr, member, nullptr, nullptr};
 }
 WalkingField polygonField(const char* name, std::array<double, 5> WalkingParameters::*member) {
-  return {name, nullptr, nullptr, member};
+  return {name, nullptr, nullptr, member, nullptr};
+}
+WalkingField headingField(const char* name, HeadingReference WalkingParameters::*member) {
+  return {name, nullptr, nullptr, nullptr, member};
 }
 
 // In the struct's order (walking_parameters.hpp); the resolved YAML keeps it.
@@ -372,6 +376,7 @@ const std::vector<WalkingField>& walkingFields() {
       integerField("previewed_steps", &P::previewed_steps),
       integerField("start_double_support_samples", &P::start_double_support_samples),
       integerField("velocity_window_samples", &P::velocity_window_samples),
+      headingField("heading_reference", &P::heading_reference),
       numberField("control_period", &P::control_period),
       numberField("foot_length", &P::foot_length),
       numberField("foot_width", &P::foot_width),
@@ -418,6 +423,9 @@ void readWalkingFields(const Entries& entries, const std::string& prefix, bool r
     } else if (field.integer) {
       parameters->*field.integer =
           readInteger(node, key, std::numeric_limits<int>::min(), "an integer", source);
+    } else if (field.heading) {
+      if (!node.IsScalar() || !parseHeadingReference(node.Scalar(), &(parameters->*field.heading)))
+        source.fail(key, "support_foot or command", node);
     } else {
       const Eigen::Matrix<double, 5, 1> values =
           readVector<5>(node, key, "a list of 5 numbers [m]", source);
@@ -925,6 +933,8 @@ std::string emitResolved(const Scenario& scenario) {
       out << formatNumber(scenario.walking.*field.number);
     } else if (field.integer) {
       out << scenario.walking.*field.integer;
+    } else if (field.heading) {
+      out << headingReferenceName(scenario.walking.*field.heading);
     } else {
       emitNumbers(out, (scenario.walking.*field.polygon).data(), 5);
     }

@@ -76,6 +76,7 @@ void PatternGenerator::reset(const Eigen::Vector3d& pose) {
   com_x_ = Eigen::Vector3d(pose.x(), 0.0, 0.0);
   com_y_ = Eigen::Vector3d(pose.y(), 0.0, 0.0);
   standing_ = true;
+  commanded_heading_ = pose.z();
   support_side_ = FootSide::kRight;
   phase_sample_ = 0;
   start_remaining_ = 0;
@@ -178,17 +179,22 @@ void PatternGenerator::buildProblem(const Eigen::Vector3d& command) {
   }
   model_.rowStepsOf(phase.pattern, phase.row_step);
 
-  // J2 references: each step turns by T_step * omega from the one before (eq. 8's p^theta).
-  double previous_yaw = phase.support_pose.z();
+  // J2 references: each step turns by T_step * omega from the one before (eq. 8's p^theta),
+  // from the support foot's yaw (paper) or from the command's heading when the support foot
+  // landed (heading_reference: command; fixed steps stay where they are).
+  const bool command_heading = w.heading_reference == HeadingReference::kCommand;
+  double previous_yaw =
+      command_heading ? commanded_heading_ - phase_sample_ * w.sampling_period * command.z()
+                      : phase.support_pose.z();
   for (int i = 0; i < nf; ++i) {
-    const double yaw = phase.step_fixed(i) ? phase.fixed_step_pose(2, i)
-                                           : previous_yaw + w.stepDuration() * command.z();
-    problem_.yaw_reference(i) = yaw;
-    previous_yaw = yaw;
+    const double next = previous_yaw + w.stepDuration() * command.z();
+    problem_.yaw_reference(i) = phase.step_fixed(i) ? phase.fixed_step_pose(2, i) : next;
+    previous_yaw = command_heading ? next : problem_.yaw_reference(i);
   }
   // J1 references: the command turned into the world frame along the heading the robot will
-  // have at each sample if it follows omega (the free-flyer yaw is the mean of the feet yaws).
-  const double heading = 0.5 * (left_.z() + right_.z());
+  // have at each sample if it follows omega: from the feet's mean yaw (the free-flyer yaw;
+  // paper) or from the command's heading.
+  const double heading = command_heading ? commanded_heading_ : 0.5 * (left_.z() + right_.z());
   for (int j = 0; j < L.horizon; ++j) {
     const double yaw = heading + command.z() * (j + 1) * w.sampling_period;
     const double c = std::cos(yaw), s = std::sin(yaw);
@@ -222,6 +228,8 @@ const MpcIterationLog& PatternGenerator::update(double time, const Eigen::Vector
   const int nf = model_.layout().steps;
   const Eigen::Vector3d command = clampCommand(raw_command);
   const bool zero = isZeroCommand(command);
+  // The previous command held since the previous sample.
+  if (!standing_) commanded_heading_ += command_.z() * (time - time_);
   time_ = time;
   command_ = command;
 
@@ -237,6 +245,7 @@ const MpcIterationLog& PatternGenerator::update(double time, const Eigen::Vector
           (command.y() < 0.0 || (command.y() == 0.0 && command.z() < 0.0)) ? FootSide::kRight
                                                                            : FootSide::kLeft;
       standing_ = false;
+      commanded_heading_ = 0.5 * (left_.z() + right_.z());
       support_side_ = swing_first;  // as if swing_first had been the support foot ...
       phase_sample_ = S - 1;        // ... and the other foot had just landed, after
       start_remaining_ = w.start_double_support_samples - 1;  // the starting double support

@@ -26,6 +26,21 @@ void requireNonNegative(double value, const char* field) {
 
 }  // namespace
 
+bool parseHeadingReference(const std::string& name, HeadingReference* out) {
+  if (name == "support_foot") {
+    *out = HeadingReference::kSupportFoot;
+  } else if (name == "command") {
+    *out = HeadingReference::kCommand;
+  } else {
+    return false;
+  }
+  return true;
+}
+
+const char* headingReferenceName(HeadingReference reference) {
+  return reference == HeadingReference::kCommand ? "command" : "support_foot";
+}
+
 void WalkingParameters::validate() const {
   requirePositive(com_height, "com_height");
   requirePositive(gravity, "gravity");

@@ -147,6 +147,8 @@ TEST(ShippedScenarios, RobotFileRestatesTheStructDefaults) {
   EXPECT_EQ(loaded.max_step_yaw_change, defaults.max_step_yaw_change);
   EXPECT_EQ(loaded.weight_velocity, defaults.weight_velocity);
   EXPECT_EQ(loaded.weight_yaw, defaults.weight_yaw);
+  EXPECT_EQ(loaded.velocity_window_samples, defaults.velocity_window_samples);
+  EXPECT_EQ(loaded.heading_reference, defaults.heading_reference);
   EXPECT_EQ(loaded.start_double_support_samples, defaults.start_double_support_samples);
   EXPECT_EQ(loaded.weight_cop, defaults.weight_cop);
   EXPECT_EQ(loaded.weight_jerk, defaults.weight_jerk);
@@ -303,6 +305,15 @@ TEST(ShippedScenarios, ReplayAndFilterKeys) {
 // Malformed input: one InputError line naming the file and the key
 // ---------------------------------------------------------------------------------------------
 
+TEST(Overrides, HeadingReferenceRoundTrips) {
+  const Scenario s = loadShipped("walk_forward", {"walking.heading_reference=command"});
+  EXPECT_EQ(s.walking.heading_reference, wpg::HeadingReference::kCommand);
+  EXPECT_NE(s.resolved_yaml.find("heading_reference: command"), std::string::npos);
+  const Scenario again =
+      wpg::datasets::loadScenarioText(s.resolved_yaml, "run.h5:/scenario", {}, kRobotsDir);
+  EXPECT_EQ(again.walking.heading_reference, wpg::HeadingReference::kCommand);
+}
+
 TEST_F(ScenarioFiles, ValidBaseLoads) {
   const Scenario s = loadScenario(write("valid.yaml", kValidScenario), {}, kRobotsDir);
   EXPECT_EQ(s.name, "test_case");
@@ -352,6 +363,9 @@ TEST_F(ScenarioFiles, WrongTypes) {
   expectError("walking_int.yaml",
               replaced(kValidScenario, "max_step_yaw_change: 0.17", "horizon_length: 16.5"),
               {"'walking.horizon_length'", "integer"});
+  expectError("walking_heading.yaml",
+              replaced(kValidScenario, "max_step_yaw_change: 0.17", "heading_reference: world"),
+              {"'walking.heading_reference'", "support_foot or command", "got world"});
   expectError("name_slash.yaml", replaced(kValidScenario, "name: test_case", "name: a/b"),
               {"'name'", "got a/b"});
   expectError("not_a_map.yaml", "- just\n- a list\n", {"expected a map"});

@@ -68,6 +68,7 @@ class PatternGenerator {
     return side == FootSide::kLeft ? left_ : right_;
   }
   bool standing() const { return standing_; }
+  double commandedHeading() const { return commanded_heading_; }
   bool starting() const { return start_remaining_ > 0; }
   int phaseSample() const { return phase_sample_; }
   const NmpcModel& model() const { return model_; }
@@ -106,6 +107,9 @@ class PatternGenerator {
   // of J1's windowed velocity (velocity_window_samples - 1 columns).
   Eigen::Matrix<double, 2, Eigen::Dynamic> velocity_history_;
   double time_ = 0.0;
+  // The command's heading at time_ (heading_reference: command): the feet's mean yaw when the
+  // walk started plus the integral of the commanded omega since.
+  double commanded_heading_ = 0.0;
   bool standing_ = true;
   FootSide support_side_ = FootSide::kRight;
   int phase_sample_ = 0;        // 0 .. S-1 within the current step

@@ -13,6 +13,22 @@
 
 namespace wpg {
 
+// The heading that the velocity command is expressed in (J1) and that the step yaws track (J2).
+enum class HeadingReference {
+  // The paper (eq. 8's p^theta and the authors' code): J2 asks each previewed step to turn by
+  // T_step * omega from the current support foot's yaw, and J1 turns the command by the feet's
+  // yaw. Whatever yaw the robot takes (pushed aside by an obstacle, or by the yaw bound) becomes
+  // its new heading: after going round an obstacle it walks on in whatever direction it faces.
+  kSupportFoot,
+  // The command's own heading: the robot's yaw when the walk started plus the integral of the
+  // commanded omega. J2 tracks it and J1 turns the command by it, so a robot that had to turn
+  // returns to the commanded heading (wpg option; used to get round obstacles on the path).
+  kCommand,
+};
+// Parses "support_foot" / "command"; returns false on anything else.
+bool parseHeadingReference(const std::string& name, HeadingReference* out);
+const char* headingReferenceName(HeadingReference reference);
+
 struct WalkingParameters {
   // --- template model (Sec. II) -------------------------------------------------------------
   double com_height = 0.814;           // h [m], CoM height above the ground, eq. (3)
@@ -54,6 +70,7 @@ struct WalkingParameters {
   // charge the lateral sway of every step to the tracking (sideways walking, going around
   // obstacles).
   int velocity_window_samples = 1;
+  HeadingReference heading_reference = HeadingReference::kSupportFoot;  // J1 frame, J2 target
   // Weight of the angular tracking J2. The paper uses alpha for both (Sec. III-B: "a different
   // weight ... was not necessary"); with it the optimum of (5) yaws every other foot to the
   // yaw bound on straight walks to bring the feet closer than the feasibility polygon allows.
