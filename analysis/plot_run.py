@@ -41,6 +41,7 @@ STATUS_STYLE = {
     2: ("fallback", "tab:red", "X"),
     3: ("iteration limit", "tab:purple", "D"),
     4: ("fallen", "black", "v"),
+    5: ("not converged", "tab:olive", "^"),
 }
 FAILED_STATUSES = (2, 3, 4)  # fallback, iteration limit, fallen: the walk failed
 OBSTACLE_COLOUR = "0.35"

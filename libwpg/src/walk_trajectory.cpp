@@ -9,6 +9,7 @@ const char* iterationStatusName(IterationStatus status) {
     case IterationStatus::kFallback: return "fallback";
     case IterationStatus::kIterationLimit: return "iteration_limit";
     case IterationStatus::kFallen: return "fallen";
+    case IterationStatus::kNotConverged: return "not_converged";
   }
   return "unknown";
 }

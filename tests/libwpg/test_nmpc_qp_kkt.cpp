@@ -195,6 +195,32 @@ TEST(NmpcQpKkt, ConvergedSqpIsAKktPointOfTheNonlinearProblem) {
   }
 }
 
+TEST(NmpcQpKkt, SqpStoppedBeforeConvergenceSaysSo) {
+  // The curve needs up to ~17 Gauss-Newton iterations (linear convergence: the Gauss-Newton
+  // Hessian leaves out the curvature of the yaw-dependent constraints); with a budget of 2 some
+  // samples stop early and must be reported, never as "solved".
+  const WalkingParameters w = curveParameters();
+  GeneratorSettings settings;
+  settings.sqp_iterations = 0;
+  settings.max_sqp_iterations = 2;
+  PatternGenerator generator(w, settings);
+  int stopped = 0;
+  for (int k = 0; k < kSamples; ++k) {
+    const auto& log = generator.update(k * w.sampling_period, commandAt(k, Vector3d(0.2, 0, 0.2)));
+    const auto& result = generator.lastSolve();
+    if (result.last_step_norm >= settings.sqp_tolerance) {
+      EXPECT_EQ(log.status, IterationStatus::kNotConverged) << "sample " << k;
+      EXPECT_EQ(result.sqp_iterations, 2) << "sample " << k;
+      ++stopped;
+    } else {
+      EXPECT_EQ(log.status, IterationStatus::kSolved) << "sample " << k;
+    }
+    advance(generator);
+  }
+  EXPECT_GT(stopped, 0);
+  EXPECT_STREQ(wpg::iterationStatusName(IterationStatus::kNotConverged), "not_converged");
+}
+
 // Cost of the real-time iteration against the converged solution of the same problem, at
 // every sample of the RTI walk.
 TEST(NmpcQpKkt, RealTimeIterationSuboptimality) {

@@ -18,6 +18,7 @@ enum class IterationStatus : std::uint8_t {
   kFallback = 2,           // relaxation failed too: the time-shifted previous plan was kept
   kIterationLimit = 3,     // the QP hit its iteration limit; its last iterate was used
   kFallen = 4,             // the capture point left the reach of the feet: the walk ends here
+  kNotConverged = 5,       // SQP to convergence stopped at max_sqp_iterations; last iterate used
 };
 const char* iterationStatusName(IterationStatus status);
 
