@@ -508,7 +508,6 @@ NmpcSolveResult runSqp(const NmpcModel& model, const NmpcProblem& problem,
   ws.relaxed_solver.settings().max_iterations = settings.max_qp_iterations;
 
   const int max_iterations = iterations > 0 ? iterations : settings.max_sqp_iterations;
-  bool converged = false;
   for (int it = 0; it < max_iterations; ++it) {
     // eq. (21b)/(22b): g(U_lin) + G (U - U_lin) <= 0  <=>  G U <= G U_lin - g(U_lin)
     evaluateConstraints(model, problem, ws.linearization, ws.constraints, &ws.jacobian);
@@ -555,13 +554,11 @@ NmpcSolveResult runSqp(const NmpcModel& model, const NmpcProblem& problem,
     }
     result.last_step_norm = (ws.qp_solution - ws.linearization).cwiseAbs().maxCoeff();
     ws.linearization = ws.qp_solution;
-    if (iterations == 0 && result.last_step_norm < settings.sqp_tolerance) {
-      converged = true;
-      break;
-    }
+    if (iterations == 0 && result.last_step_norm < settings.sqp_tolerance) break;
   }
   // To convergence but stopped by max_sqp_iterations: say so (a relaxed or failed QP says more).
-  if (iterations == 0 && !converged && result.status == IterationStatus::kSolved)
+  if (iterations == 0 && result.last_step_norm >= settings.sqp_tolerance &&
+      result.status == IterationStatus::kSolved)
     result.status = IterationStatus::kNotConverged;
   ws.U = ws.linearization;
   result.cost = evaluateCost(model, problem, ws.U);
