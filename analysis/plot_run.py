@@ -37,13 +37,16 @@ PUSH_COLOUR = "tab:purple"
 # mpc/status values (libwpg IterationStatus) and how they are drawn.
 STATUS_STYLE = {
     0: ("solved", "tab:gray", "o"),
-    1: ("relaxed", "tab:orange", "s"),
+    1: ("relaxed obstacle", "tab:orange", "s"),
     2: ("fallback", "tab:red", "X"),
     3: ("iteration limit", "tab:purple", "D"),
     4: ("fallen", "black", "v"),
     5: ("not converged", "tab:olive", "^"),
+    6: ("relaxed kinematics", "tab:brown", "P"),
+    7: ("relaxed balance", "tab:pink", "*"),
 }
-FAILED_STATUSES = (2, 3, 4)  # fallback, iteration limit, fallen: the walk failed
+# fallback, iteration limit, fallen, relaxed kinematics / balance: the walk failed
+FAILED_STATUSES = (2, 3, 4, 6, 7)
 OBSTACLE_COLOUR = "0.35"
 SCHEMA_DATASETS = ("time", "com", "cop", "support", "footsteps", "footstep_side")
 # The multibody replay (optional): datasets of the run group, and the attributes of multibody/.

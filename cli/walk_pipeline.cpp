@@ -68,13 +68,7 @@ void checkFilterSettings(const datasets::Scenario& scenario, const std::string& 
 }
 
 WalkResult generateScenarioWalk(const datasets::Scenario& scenario) {
-#ifdef WPG_CLI_WITH_PLANNING
-  std::optional<planning::World> world;
-  if (!scenario.request.obstacles.empty()) world.emplace(scenario.request.obstacles);
-  return generateWalk(scenario.walking, scenario.request, world ? &*world : nullptr);
-#else
   return generateWalk(scenario.walking, scenario.request);
-#endif
 }
 
 ReplayOutcome replayScenarioWalk(const robots::RobotModel& model,

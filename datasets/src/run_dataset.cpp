@@ -281,7 +281,7 @@ void writeMpcLog(H5::Group& run, const std::vector<MpcIterationLog>& log) {
   writeStringAttribute(status_set, "codes", statusCodes(status));
   writeDoubles(mpc, "cost", column(log, [](const MpcIterationLog& r) { return r.cost; }), 0,
                {"1", nullptr, "value of the NMPC cost (eq. 5) at the applied solution", nullptr});
-  writeDoubles(mpc, "slack", column(log, [](const MpcIterationLog& r) { return r.slack; }), 0,
+  writeDoubles(mpc, "slack", column(log, [](const MpcIterationLog& r) { return r.maxSlack(); }), 0,
                {"m or rad", nullptr,
                 "largest constraint relaxation when the QP was relaxed (status 1), else 0",
                 nullptr});

@@ -225,7 +225,7 @@ StoredRun readFile(const std::string& path, const std::string& run_name) {
     row.sqp_iterations = sqp_iterations[i];
     row.status = static_cast<IterationStatus>(status[i]);
     row.cost = cost[i];
-    row.slack = slack[i];
+    row.slack[0] = slack[i];
     t.mpc.push_back(row);
   }
   return stored;

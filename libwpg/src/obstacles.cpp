@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <utility>
 
 #include "wpg/convex_polygon.hpp"
 
@@ -68,9 +69,16 @@ void boundingCircle(const Obstacle& obstacle, Eigen::Vector2d* center, double* r
   *radius = r;
 }
 
-AnalyticObstacleDistance::AnalyticObstacleDistance(const std::vector<Obstacle>& obstacles)
-    : obstacles_(obstacles) {
-  for (const Obstacle& obstacle : obstacles_) vertices_.push_back(obstacle.worldVertices());
+ObstacleSet::ObstacleSet(std::vector<Obstacle> obstacles) : obstacles_(std::move(obstacles)) {
+  for (std::size_t i = 0; i < obstacles_.size(); ++i) {
+    const Obstacle& obstacle = obstacles_[i];
+    obstacle.validate("obstacles[" + std::to_string(i) + "]");
+    vertices_.push_back(obstacle.worldVertices());
+    Eigen::Vector2d center;
+    double radius = 0.0;
+    boundingCircle(obstacle, &center, &radius);
+    reach_.emplace_back(center.x(), center.y(), radius + obstacle.margin);
+  }
 }
 
 double circleSignedDistance(const Eigen::Vector2d& center, double radius,
@@ -113,7 +121,7 @@ double polygonSignedDistance(const std::vector<Eigen::Vector2d>& v, const Eigen:
   return best_outside;
 }
 
-double AnalyticObstacleDistance::signedDistance(int index, const Eigen::Vector2d& p,
+double ObstacleSet::signedDistance(int index, const Eigen::Vector2d& p,
                                                 Eigen::Vector2d* gradient) const {
   const Obstacle& obstacle = obstacles_[index];
   if (obstacle.type == ObstacleType::kCircle)

@@ -21,33 +21,17 @@ PatternGenerator::PatternGenerator(const WalkingParameters& parameters,
                                    const GeneratorSettings& settings)
     : model_(parameters, settings.max_obstacles_in_qp),
       settings_(settings),
-      workspace_(model_),
+      solver_(model_),
       problem_(model_.makeProblem()),
       velocity_history_(Eigen::Matrix<double, 2, Eigen::Dynamic>::Zero(
           2, std::max(0, parameters.velocity_window_samples - 1))) {
   reset();
 }
 
-void PatternGenerator::setObstacles(const std::vector<Obstacle>* obstacles,
-                                    const ObstacleDistanceOracle* distance) {
-  obstacles_ = obstacles;
-  obstacle_bounds_.clear();
-  analytic_distance_.reset();
-  if (obstacles_ && !distance) {
-    analytic_distance_ = std::make_unique<AnalyticObstacleDistance>(*obstacles_);
-    distance = analytic_distance_.get();
-  }
-  problem_.obstacles = obstacles_;
-  problem_.distance = distance;
-  if (obstacles_) {
-    for (const Obstacle& obstacle : *obstacles_) {
-      Eigen::Vector2d center;
-      double radius = 0.0;
-      boundingCircle(obstacle, &center, &radius);
-      obstacle_bounds_.emplace_back(center.x(), center.y(), radius + obstacle.margin);
-    }
-  }
-  obstacle_order_.assign(obstacle_bounds_.size(), {0.0, 0});
+void PatternGenerator::setObstacles(std::vector<Obstacle> obstacles) {
+  obstacles_ = ObstacleSet(std::move(obstacles));  // validates; the only allocation
+  problem_.obstacles = obstacles_.empty() ? nullptr : &obstacles_;
+  obstacle_order_.assign(obstacles_.obstacleCount(), {0.0, 0});
   problem_.obstacle_slot.setConstant(-1);
 }
 
@@ -56,12 +40,14 @@ void PatternGenerator::setObstacles(const std::vector<Obstacle>* obstacles,
 void PatternGenerator::selectObstacles() {
   const int slots = model_.layout().obstacle_slots;
   problem_.obstacle_slot.setConstant(-1);
-  if (slots == 0 || obstacle_bounds_.empty() || standing_) return;
+  problem_.obstacles = obstacles_.empty() ? nullptr : &obstacles_;  // ours, wherever we live
+  if (slots == 0 || obstacles_.empty() || standing_) return;
   const Eigen::Vector2d support = problem_.phase.support_pose.head<2>();
   int candidates = 0;
-  for (std::size_t i = 0; i < obstacle_bounds_.size(); ++i) {
-    const double gap = (obstacle_bounds_[i].head<2>() - support).norm() - obstacle_bounds_[i].z();
-    if (gap < settings_.obstacle_reach) obstacle_order_[candidates++] = {gap, static_cast<int>(i)};
+  for (int i = 0; i < obstacles_.obstacleCount(); ++i) {
+    const Eigen::Vector3d& reach = obstacles_.reachCircle(i);
+    const double gap = (reach.head<2>() - support).norm() - reach.z();
+    if (gap < settings_.obstacle_reach) obstacle_order_[candidates++] = {gap, i};
   }
   const int kept = std::min(candidates, slots);
   std::partial_sort(obstacle_order_.begin(), obstacle_order_.begin() + kept,
@@ -83,8 +69,8 @@ void PatternGenerator::reset(const Eigen::Vector3d& pose) {
   zero_command_steps_ = 0;
   stop_step_ = false;
   structure_changed_ = true;
-  workspace_.U.setZero();
-  workspace_.active_count = 0;
+  solver_.plan().setZero();
+  solver_.clearActiveSet();
   velocity_history_.setZero();
   plan_ = SamplePlan();
 }
@@ -98,15 +84,15 @@ Eigen::Vector3d PatternGenerator::clampCommand(const Eigen::Vector3d& command) c
 
 Eigen::Vector3d PatternGenerator::stepPose(int step) const {
   const NmpcLayout& L = model_.layout();
-  const Eigen::VectorXd& U = workspace_.U;
+  const Eigen::VectorXd& U = solver_.plan();
   return {U(L.stepX() + step), U(L.stepY() + step), U(L.stepYaw() + step)};
 }
 
 void PatternGenerator::setStepPose(int step, const Eigen::Vector3d& pose) {
   const NmpcLayout& L = model_.layout();
-  workspace_.U(L.stepX() + step) = pose.x();
-  workspace_.U(L.stepY() + step) = pose.y();
-  workspace_.U(L.stepYaw() + step) = pose.z();
+  solver_.plan()(L.stepX() + step) = pose.x();
+  solver_.plan()(L.stepY() + step) = pose.y();
+  solver_.plan()(L.stepYaw() + step) = pose.z();
 }
 
 // Where a step of `side` would land from `previous` when following `command`: an initial
@@ -274,18 +260,18 @@ const MpcIterationLog& PatternGenerator::update(double time, const Eigen::Vector
     }
   }
   if (structure_changed_) {
-    workspace_.active_count = 0;  // the rows change meaning: no warm start across it
+    solver_.clearActiveSet();  // the rows change meaning: no warm start across it
     structure_changed_ = false;
   }
 
   buildProblem(command);
   last_solve_ = settings_.algorithm == GeneratorAlgorithm::kLmpc
-                    ? solveLmpc(model_, problem_, settings_, workspace_)
-                    : solveNmpc(model_, problem_, settings_, workspace_);
+                    ? solver_.solveLmpc(model_, problem_, settings_)
+                    : solver_.solve(model_, problem_, settings_);
 
   const NmpcLayout& L = model_.layout();
-  plan_.jerk_x = workspace_.U(L.jerkX());
-  plan_.jerk_y = workspace_.U(L.jerkY());
+  plan_.jerk_x = solver_.plan()(L.jerkX());
+  plan_.jerk_y = solver_.plan()(L.jerkY());
   plan_.swinging = !standing_ && start_remaining_ == 0 && phase_sample_ <= S - 2;
   plan_.support = plan_.swinging ? (support_side_ == FootSide::kLeft ? SupportState::kLeft
                                                                      : SupportState::kRight)
@@ -301,6 +287,7 @@ const MpcIterationLog& PatternGenerator::update(double time, const Eigen::Vector
   log_.status = last_solve_.status;
   log_.cost = last_solve_.cost;
   log_.slack = last_solve_.slack;
+  log_.relaxed_families = last_solve_.relaxed_families;
   log_.solve_time =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return log_;
@@ -313,7 +300,7 @@ bool PatternGenerator::advance(const Eigen::Vector3d& com_x, const Eigen::Vector
   com_x_ = com_x;
   com_y_ = com_y;
   // Shift the plan one sample (the warm start of the next real-time iteration).
-  Eigen::VectorXd& U = workspace_.U;
+  Eigen::VectorXd& U = solver_.plan();
   for (int axis = 0; axis < 2; ++axis) {
     const int o = axis == 0 ? L.jerkX() : L.jerkY();
     for (int j = 0; j + 1 < L.horizon; ++j) U(o + j) = U(o + j + 1);
@@ -345,7 +332,7 @@ bool PatternGenerator::advance(const Eigen::Vector3d& com_x, const Eigen::Vector
       ++phase_sample_;
     }
   }
-  workspace_.shiftActiveSet(L, step_completed);
+  solver_.shiftActiveSet(model_, step_completed);
   return landed;
 }
 

@@ -8,16 +8,15 @@
 
 namespace wpg {
 
-WalkResult generateWalk(const WalkingParameters& parameters, const WalkRequest& request,
-                        const ObstacleDistanceOracle* world) {
+WalkResult generateWalk(const WalkingParameters& parameters, const WalkRequest& request) {
   parameters.validate();
   request.validate();
   PatternGenerator generator(parameters, request.generator);
-  // Obstacle distances: the world model when given, else libwpg's exact 2-D distance.
+  // Obstacle distances: libwpg's exact 2-D ones, as the NMPC's rows see them.
   const ObstacleDistanceOracle* distance = nullptr;
   if (!request.obstacles.empty()) {
-    generator.setObstacles(&request.obstacles, world);
-    distance = generator.obstacleDistance();
+    generator.setObstacles(request.obstacles);
+    distance = &generator.obstacles();
     // The feet must start clear of every obstacle grown by its margin (and the sole radius).
     for (int o = 0; o < static_cast<int>(request.obstacles.size()); ++o) {
       for (FootSide side : {FootSide::kLeft, FootSide::kRight}) {

@@ -1,17 +1,27 @@
 #include "wpg/walk_trajectory.hpp"
 
+#include <algorithm>
+
 namespace wpg {
 
 const char* iterationStatusName(IterationStatus status) {
   switch (status) {
     case IterationStatus::kSolved: return "solved";
-    case IterationStatus::kRelaxed: return "relaxed";
+    case IterationStatus::kRelaxedObstacle: return "relaxed_obstacle";
     case IterationStatus::kFallback: return "fallback";
     case IterationStatus::kIterationLimit: return "iteration_limit";
     case IterationStatus::kFallen: return "fallen";
     case IterationStatus::kNotConverged: return "not_converged";
+    case IterationStatus::kRelaxedKinematics: return "relaxed_kinematics";
+    case IterationStatus::kRelaxedBalance: return "relaxed_balance";
   }
   return "unknown";
+}
+
+double MpcIterationLog::maxSlack() const {
+  double largest = 0.0;
+  for (double s : slack) largest = std::max(largest, s);
+  return largest;
 }
 
 void WalkTrajectory::reserve(std::size_t samples, std::size_t iterations) {

@@ -16,7 +16,6 @@
 #include "wpg/datasets/scenario.hpp"
 #include "wpg/lipm_prediction.hpp"
 #include "wpg/pattern_generator.hpp"
-#include "wpg/planning/world.hpp"
 #include "wpg/walk_generator.hpp"
 
 namespace {
@@ -32,7 +31,7 @@ void reportPercentiles(benchmark::State& state, std::vector<double>& samples) {
 
 void runIterations(benchmark::State& state, const Eigen::Vector3d& command,
                    wpg::GeneratorAlgorithm algorithm, int sqp_iterations,
-                   const wpg::planning::World* world = nullptr) {
+                   const std::vector<wpg::Obstacle>* world = nullptr) {
   wpg::WalkingParameters parameters;
   parameters.max_step_yaw_change = 0.17;  // turning at 0.2 rad/s needs it (robots/hrp2/README.md)
   wpg::GeneratorSettings settings;
@@ -40,7 +39,7 @@ void runIterations(benchmark::State& state, const Eigen::Vector3d& command,
   settings.sqp_iterations = sqp_iterations;
   if (world) settings.max_obstacles_in_qp = 3;
   wpg::PatternGenerator generator(parameters, settings);
-  if (world) generator.setObstacles(&world->obstacles(), world);
+  if (world) generator.setObstacles(*world);
   const double T = parameters.sampling_period, dt = parameters.control_period;
   Eigen::Vector3d com_x = generator.comX(), com_y = generator.comY();
   double t = 0.0;
@@ -87,7 +86,7 @@ void BM_LmpcIterationCurve(benchmark::State& state) {
   runIterations(state, {0.2, 0.0, 0.2}, wpg::GeneratorAlgorithm::kLmpc, 1);
 }
 // Issue acceptance: three obstacles within reach of the previewed steps at every iteration
-// (a corridor of circles, boxes and polygons on both sides, through the FCL world).
+// (a corridor of circles, boxes and polygons on both sides; libwpg's exact 2-D distances).
 void BM_NmpcIterationThreeObstacles(benchmark::State& state) {
   std::vector<wpg::Obstacle> obstacles;
   for (int i = 0; i < 60; ++i) {
@@ -109,8 +108,7 @@ void BM_NmpcIterationThreeObstacles(benchmark::State& state) {
     }
     obstacles.push_back(o);
   }
-  const wpg::planning::World world(obstacles);
-  runIterations(state, {0.2, 0.0, 0.0}, wpg::GeneratorAlgorithm::kNmpc, 1, &world);
+  runIterations(state, {0.2, 0.0, 0.0}, wpg::GeneratorAlgorithm::kNmpc, 1, &obstacles);
 }
 BENCHMARK(BM_NmpcIterationThreeObstacles)->UseManualTime()->Unit(benchmark::kMicrosecond)->MinTime(1.0);
 

@@ -68,7 +68,7 @@ wpg::WalkResult handMadeResult(std::size_t samples, std::size_t iterations) {
     log.sqp_iterations = static_cast<int>(1 + m % 2);
     log.status = static_cast<wpg::IterationStatus>(m % 4);
     log.cost = 10.0 + m;
-    log.slack = m % 4 == 1 ? 0.01 : 0.0;
+    log.slack[0] = m % 4 == 1 ? 0.01 : 0.0;
     t.mpc.push_back(log);
   }
   result.success = false;

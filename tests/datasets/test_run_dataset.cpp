@@ -66,7 +66,7 @@ wpg::WalkResult handMadeResult(std::size_t samples, std::size_t steps, std::size
     log.sqp_iterations = static_cast<int>(1 + m % 2);
     log.status = static_cast<wpg::IterationStatus>(m % 4);
     log.cost = 10.0 + m;
-    log.slack = m % 4 == 1 ? 0.01 : 0.0;
+    log.slack[0] = m % 4 == 1 ? 0.01 : 0.0;
     t.mpc.push_back(log);
   }
   result.success = true;
@@ -193,7 +193,7 @@ TEST_F(RunDatasetFiles, WritesTheSchemaAndReadsBackTheSameNumbers) {
     EXPECT_EQ(mpc_time[m], t.mpc[m].time);
     EXPECT_EQ(solve_time[m], t.mpc[m].solve_time);
     EXPECT_EQ(cost[m], t.mpc[m].cost);
-    EXPECT_EQ(slack[m], t.mpc[m].slack);
+    EXPECT_EQ(slack[m], t.mpc[m].maxSlack());
     EXPECT_EQ(qp[m], t.mpc[m].qp_iterations);
     EXPECT_EQ(sqp[m], t.mpc[m].sqp_iterations);
     EXPECT_EQ(status[m], static_cast<std::uint8_t>(t.mpc[m].status));

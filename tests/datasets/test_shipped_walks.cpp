@@ -32,7 +32,7 @@ TEST_P(ShippedWalk, KeepsBalanceAndStepFeasibility) {
       EXPECT_EQ(log.status, wpg::IterationStatus::kSolved) << "t = " << log.time;
     else
       EXPECT_TRUE(log.status == wpg::IterationStatus::kSolved ||
-                  log.status == wpg::IterationStatus::kRelaxed) << "t = " << log.time;
+                  log.status == wpg::IterationStatus::kRelaxedObstacle) << "t = " << log.time;
   }
   // No step centre inside an obstacle grown by its margin (eq. 18-19).
   if (!scenario.request.obstacles.empty()) {

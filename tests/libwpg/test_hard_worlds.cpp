@@ -93,7 +93,7 @@ TEST(HardWorlds, EnclosedRobotNeverCrashesAndReportsWhatHappened) {
   } else {
     bool relaxed = false;
     for (const auto& log : result.trajectory.mpc)
-      relaxed = relaxed || log.status == wpg::IterationStatus::kRelaxed;
+      relaxed = relaxed || log.status == wpg::IterationStatus::kRelaxedObstacle;
     EXPECT_TRUE(relaxed);
   }
 }

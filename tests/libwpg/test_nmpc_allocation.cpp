@@ -174,7 +174,7 @@ LoopResult countOverLoop(const WalkingParameters& w, GeneratorAlgorithm algorith
         allocations[n] = allocationsSoFar() - before;
         statuses[n] = static_cast<int>(generator.lastSolve().status);
         patterns[n] = generator.problem().phase.pattern;
-        equalities[n] = static_cast<int>(generator.workspace().solver.equalityMultipliers().size());
+        equalities[n] = static_cast<int>(generator.solver().workspace().solver.equalityMultipliers().size());
       }
     }
   }

@@ -197,8 +197,7 @@ TEST(NmpcJacobian, ObstacleRowsMatchFiniteDifferences) {
       NmpcProblem problem = randomProblem(model, pattern, trial % 2 ? FootSide::kLeft : FootSide::kRight,
                                           trial < 2 ? FixedMode::kNone : FixedMode::kRandom, rng);
       problem.phase.support_pose.head<2>().setZero();
-      problem.obstacles = &obstacles;
-      problem.distance = &distance;
+      problem.obstacles = &distance;
       problem.obstacle_slot.resize(slots);
       problem.obstacle_slot << 0, 1, -1, 2;
       VectorXd U = randomU(model, problem, rng);
@@ -234,7 +233,9 @@ TEST(NmpcJacobian, ObstacleRowsMatchFiniteDifferences) {
         // margins grown by the sole radius (WalkingParameters::obstacle_foot_radius)
         const double foot = model.parameters().obstacle_foot_radius;
         const double r = obstacles[0].radius + obstacles[0].margin + foot;
-        EXPECT_NEAR(g(L.obstacleRow(i, 0)), r * r - (F - obstacles[0].center).squaredNorm(), 1e-12);
+        // the paper's circle form (R + m)^2 - |F - c|^2, scaled by 1 / (2 (R + m)) to metres
+        EXPECT_NEAR(g(L.obstacleRow(i, 0)),
+                    (r * r - (F - obstacles[0].center).squaredNorm()) / (2.0 * r), 1e-12);
         EXPECT_NEAR(g(L.obstacleRow(i, 1)), 0.05 + foot - distance.signedDistance(1, F, nullptr), 1e-12);
         EXPECT_EQ(g(L.obstacleRow(i, 2)), -1.0);
         EXPECT_NEAR(g(L.obstacleRow(i, 3)), 0.02 + foot - distance.signedDistance(2, F, nullptr), 1e-12);

@@ -53,7 +53,7 @@ bool allFinite(const WalkTrajectory& tr) {
   for (const auto& f : tr.footsteps)
     if (!f.pose.allFinite() || !std::isfinite(f.landing_time)) return false;
   for (const auto& m : tr.mpc)
-    if (!std::isfinite(m.time) || !std::isfinite(m.cost) || !std::isfinite(m.slack)) return false;
+    if (!std::isfinite(m.time) || !std::isfinite(m.cost) || !std::isfinite(m.maxSlack())) return false;
   return true;
 }
 

@@ -45,19 +45,33 @@ class ObstacleDistanceOracle {
 
 namespace wpg {
 
-// Exact 2-D signed distance to circles and convex polygons, computed in libwpg: used when no
-// world model is given (embedded use) and as an independent check of the FCL world in tests.
-class AnalyticObstacleDistance : public ObstacleDistanceOracle {
+// The obstacles of a walk with libwpg's exact 2-D signed distances: what the NMPC's obstacle
+// rows read at every sample (allocation-free queries; the FCL world of planning/ serves the
+// route planner and the post-run checks), and an independent check of that world in tests.
+// Owns its obstacles: built once (allocates), read-only afterwards.
+class ObstacleSet : public ObstacleDistanceOracle {
  public:
-  explicit AnalyticObstacleDistance(const std::vector<Obstacle>& obstacles);
+  ObstacleSet() = default;
+  // Throws std::invalid_argument naming 'obstacles[i]' when an obstacle is invalid
+  // (Obstacle::validate).
+  explicit ObstacleSet(std::vector<Obstacle> obstacles);
   int obstacleCount() const override { return static_cast<int>(obstacles_.size()); }
+  bool empty() const { return obstacles_.empty(); }
   double signedDistance(int obstacle, const Eigen::Vector2d& point,
                         Eigen::Vector2d* gradient) const override;
+  const Obstacle& obstacle(int index) const { return obstacles_[index]; }
+  const std::vector<Obstacle>& obstacles() const { return obstacles_; }
+  // Circle enclosing obstacle `index` grown by its margin: (x, y, radius) [m], for the cheap
+  // selection of the obstacles near the previewed steps.
+  const Eigen::Vector3d& reachCircle(int index) const { return reach_[index]; }
 
  private:
   std::vector<Obstacle> obstacles_;
   std::vector<std::vector<Eigen::Vector2d>> vertices_;  // world, counter-clockwise
+  std::vector<Eigen::Vector3d> reach_;
 };
+// The name this class had before it owned the obstacles of the NMPC.
+using AnalyticObstacleDistance = ObstacleSet;
 
 // Exact 2-D signed distances (> 0 outside) with their gradient with respect to the point
 // (optional; a unit vector away from the shape): to a circle, and to a convex polygon given

@@ -28,14 +28,12 @@ class PatternGenerator {
  public:
   PatternGenerator(const WalkingParameters& parameters, const GeneratorSettings& settings);
 
-  // Obstacles to avoid (eq. 18-19), kept by pointer (they must outlive the generator). Shapes
-  // other than circles get their distance from `distance`, or from an internal
-  // AnalyticObstacleDistance when it is null. Allocates (call it before walking).
-  void setObstacles(const std::vector<Obstacle>* obstacles,
-                    const ObstacleDistanceOracle* distance = nullptr);
-  // The distance the obstacle constraints use (the given one, or the internal analytic one);
-  // null without obstacles.
-  const ObstacleDistanceOracle* obstacleDistance() const { return problem_.distance; }
+  // Obstacles to avoid (eq. 18-19), copied and owned; replaces the previous ones. Throws
+  // std::invalid_argument naming 'obstacles[i]' for an invalid obstacle. Allocates (call it
+  // between samples, not in a hard real-time loop).
+  void setObstacles(std::vector<Obstacle> obstacles);
+  // The obstacles with libwpg's exact 2-D distances, as the NMPC's obstacle rows see them.
+  const ObstacleSet& obstacles() const { return obstacles_; }
 
   // Standing with the ankles side by side (initial_foot_separation) about `pose` = (x, y, yaw)
   // of the point between them; CoM at rest above it at com_height.
@@ -73,7 +71,7 @@ class PatternGenerator {
   int phaseSample() const { return phase_sample_; }
   const NmpcModel& model() const { return model_; }
   const NmpcProblem& problem() const { return problem_; }
-  const NmpcWorkspace& workspace() const { return workspace_; }
+  const NmpcSolver& solver() const { return solver_; }
   const NmpcSolveResult& lastSolve() const { return last_solve_; }
   Eigen::Vector3d clampCommand(const Eigen::Vector3d& command) const;
 
@@ -89,15 +87,13 @@ class PatternGenerator {
 
   NmpcModel model_;
   GeneratorSettings settings_;
-  NmpcWorkspace workspace_;
+  NmpcSolver solver_;
   NmpcProblem problem_;
   SamplePlan plan_;
   MpcIterationLog log_;
   NmpcSolveResult last_solve_;
   Footstep last_landing_;
-  const std::vector<Obstacle>* obstacles_ = nullptr;
-  std::unique_ptr<AnalyticObstacleDistance> analytic_distance_;
-  std::vector<Eigen::Vector3d> obstacle_bounds_;  // bounding circle: x, y, radius + margin
+  ObstacleSet obstacles_;
   std::vector<std::pair<double, int>> obstacle_order_;  // scratch, sized once
 
   Eigen::Vector3d com_x_ = Eigen::Vector3d::Zero(), com_y_ = Eigen::Vector3d::Zero();

@@ -19,10 +19,9 @@ struct WalkResult {
   std::string message;  // one line: what went wrong first, empty on success
 };
 
-// Throws std::invalid_argument on invalid parameters or request (validate()). Obstacles
-// other than circles get their signed distance from `world` (planning/'s FCL world); without
-// one, from libwpg's exact 2-D AnalyticObstacleDistance.
-WalkResult generateWalk(const WalkingParameters& parameters, const WalkRequest& request,
-                        const ObstacleDistanceOracle* world = nullptr);
+// Throws std::invalid_argument on invalid parameters or request (validate()). The obstacle
+// rows use libwpg's exact 2-D signed distances (ObstacleSet); planning/'s FCL world checks the
+// footsteps after the run.
+WalkResult generateWalk(const WalkingParameters& parameters, const WalkRequest& request);
 
 }  // namespace wpg

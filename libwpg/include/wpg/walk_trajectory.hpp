@@ -1,24 +1,35 @@
 #pragma once
 // The result of one walk: samples at the control period, the footsteps, and one log row per
 // NMPC iteration. Names and shapes mirror the HDF5 schema (datasets/SCHEMA.md).
+#include <array>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include <Eigen/Core>
 
 namespace wpg {
 
+// At most this many constraint families in one NMPC model (wpg/nmpc/constraint_family.hpp):
+// fixed so that every iteration's log holds one slack per family without allocating.
+constexpr int kMaxConstraintFamilies = 8;
+
 enum class SupportState : std::uint8_t { kDouble = 0, kLeft = 1, kRight = 2 };
 enum class FootSide : std::uint8_t { kLeft = 1, kRight = 2 };
 
-// Outcome of one NMPC iteration, stored per iteration (dataset `mpc/status`).
+// Outcome of one NMPC iteration, stored per iteration (dataset `mpc/status`). What each does
+// to the walk (WalkResult::outcome, the exit status of `wpg run`) is in walk_generator.hpp.
 enum class IterationStatus : std::uint8_t {
   kSolved = 0,             // every QP solved to optimality
-  kRelaxed = 1,            // the QP was infeasible; solved with penalized slacks
+  kRelaxedObstacle = 1,    // the QP was infeasible; only obstacle rows (previewed steps) were
+                           // relaxed, with penalized slacks; balance and kinematics held
   kFallback = 2,           // relaxation failed too: the time-shifted previous plan was kept
-  kIterationLimit = 3,     // the QP hit its iteration limit; its last iterate was used
+  kIterationLimit = 3,     // a QP hit its iteration limit: its iterate (dual- but not primal-
+                           // feasible) was dropped and the time-shifted previous plan kept
   kFallen = 4,             // the capture point left the reach of the feet: the walk ends here
   kNotConverged = 5,       // SQP to convergence stopped at max_sqp_iterations; last iterate used
+  kRelaxedKinematics = 6,  // step feasibility or yaw-bound rows had to be relaxed
+  kRelaxedBalance = 7,     // CoP (balance) rows had to be relaxed: the plan leaves the support
 };
 const char* iterationStatusName(IterationStatus status);
 
@@ -35,7 +46,19 @@ struct MpcIterationLog {
   int sqp_iterations = 0;     // QPs solved in this sample
   IterationStatus status = IterationStatus::kSolved;
   double cost = 0.0;          // value of the NMPC cost (5) at the applied solution
-  double slack = 0.0;         // largest constraint relaxation when status == kRelaxed [m or rad]
+  // Relaxation of an infeasible QP, per constraint family (WalkTrajectory::constraint_families
+  // names them, with their units): bit k of relaxed_families set when family k's rows needed a
+  // positive slack; slack[k] its largest value over the iteration's QPs [family's unit].
+  std::uint32_t relaxed_families = 0;
+  std::array<double, kMaxConstraintFamilies> slack{};
+  double maxSlack() const;  // largest slack of any family (0 when nothing was relaxed)
+};
+
+// A constraint family of the NMPC as the logs see it (wpg/nmpc/constraint_family.hpp).
+struct ConstraintFamilyInfo {
+  std::string name;   // e.g. "cop", "obstacle"
+  std::string unit;   // of its rows and slack: "m" or "rad"
+  std::string group;  // relaxation group: "balance", "kinematics", "obstacle"
 };
 
 struct WalkTrajectory {
@@ -49,6 +72,8 @@ struct WalkTrajectory {
   // landed footsteps in landing order, the two initial feet first (landing_time 0)
   std::vector<Footstep> footsteps;
   std::vector<MpcIterationLog> mpc;
+  // the NMPC's constraint families, in the order of MpcIterationLog::slack
+  std::vector<ConstraintFamilyInfo> constraint_families;
 
   std::size_t size() const { return time.size(); }
   void reserve(std::size_t samples, std::size_t iterations);

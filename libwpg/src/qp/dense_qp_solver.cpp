@@ -277,6 +277,7 @@ QpStatus DenseQpSolver::solve(const HessianFactor& factor,
                               const Eigen::Ref<const Eigen::VectorXd>& d,
                               Eigen::Ref<Eigen::VectorXd> x) {
   iterations_ = 0;
+  warm_start_updates_ = 0;
   objective_ = 0.0;
   warm_start_kept_ = 0;
   active_inequality_count_ = 0;
@@ -380,6 +381,7 @@ QpStatus DenseQpSolver::solve(const HessianFactor& factor,
       appendToWorkingSet(i, 0.0);
       in_working_set_(i) = 1;
       ++warm_start_kept_;
+      ++warm_start_updates_;  // a working-set update like any other: the warm start's work counts
     }
     if (warm_start_kept_ > 0) {
       gradient_.head(n).noalias() = J.transpose() * g;
@@ -411,6 +413,7 @@ QpStatus DenseQpSolver::solve(const HessianFactor& factor,
         in_working_set_(active_(most_negative)) = 0;
         dropFromWorkingSet(n, most_negative);
         --warm_start_kept_;
+        ++warm_start_updates_;
         // The drop rotated columns most_negative..q-1 of J: refresh J'g there.
         gradient_.segment(most_negative, q - most_negative).noalias() =
             J.middleCols(most_negative, q - most_negative).transpose() * g;
@@ -418,7 +421,8 @@ QpStatus DenseQpSolver::solve(const HessianFactor& factor,
     }
   }
 
-  // ---- dual iterations ----
+  // ---- dual iterations (the limit bounds them with the warm start's updates) ----
+  iterations_ = warm_start_updates_;
   bool any_set_aside = false;
   auto release_set_aside = [&]() {
     if (!any_set_aside) return;

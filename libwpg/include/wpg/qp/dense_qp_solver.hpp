@@ -63,7 +63,15 @@ class DenseQpSolver {
   const QpSettings& settings() const { return settings_; }
 
   // --- results of the last solve ---
-  int iterations() const { return iterations_; }  // dual-method adds + drops after the guess
+  // Working-set updates of the last solve: the warm start's (each guessed row loaded, each
+  // dropped for a negative multiplier) plus the dual method's adds and drops. The iteration
+  // limit (settings().max_iterations) bounds this total.
+  int iterations() const { return iterations_; }
+  // The part of iterations() spent loading the guess (rows loaded, rows dropped for a negative
+  // multiplier). Loading a row skips the scan for the most violated constraint (C x), so it
+  // costs less time than a dual iteration, but it is work: a warm start can take more updates
+  // than a cold solve and still be faster.
+  int warmStartUpdates() const { return warm_start_updates_; }
   // Active inequality rows at the solution (indices into C), count = activeInequalityCount().
   const int* activeInequalities() const { return active_inequalities_.data(); }
   int activeInequalityCount() const { return active_inequality_count_; }
@@ -98,6 +106,7 @@ class DenseQpSolver {
   int max_n_, max_me_, max_mi_;
   QpSettings settings_;
   int iterations_ = 0;
+  int warm_start_updates_ = 0;
   double objective_ = 0.0;
   int warm_start_kept_ = 0;
   Eigen::VectorXi active_inequalities_;  // max_mi

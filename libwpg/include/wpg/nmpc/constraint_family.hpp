@@ -1,0 +1,77 @@
+#pragma once
+// One family of the NMPC's nonlinear inequality rows g(U) <= 0 (CoP, step feasibility, yaw
+// bound, obstacles, ...) behind one interface, as residual and constraint models are in
+// crocoddyl: each family gives its rows and their exact Jacobian, says how its rows move when
+// the plan is shifted (the warm start's active set), and to which relaxation group its rows
+// belong (what an infeasible QP may give up, Sec. III-D: the robot may get blocked, never
+// unbalanced). A new family is one new file implementing this interface plus its
+// registration (NmpcModel's constructor for the built-in ones, addConstraintFamily for
+// others), and one finite-difference test (wpg/nmpc/numdiff.hpp).
+#include <memory>
+
+#include <Eigen/Core>
+
+#include "wpg/nmpc/layout.hpp"
+#include "wpg/nmpc/problem.hpp"
+
+namespace wpg {
+
+class NmpcModel;
+
+// What an infeasible QP may relax, in this order (NmpcSolver): obstacles first (the robot
+// stops in front of the obstacle), then everything else. The group of the rows that had to be
+// relaxed is the iteration's status (IterationStatus::kRelaxedObstacle / kRelaxedKinematics /
+// kRelaxedBalance).
+enum class RelaxationGroup : unsigned char {
+  kObstacle = 0,    // steps out of an obstacle's margin (eq. 18-19)
+  kKinematics = 1,  // where and how a foot may land (eq. 14-17, landing bounds)
+  kBalance = 2,     // the CoP inside the support polygon (eq. 9-13)
+};
+const char* relaxationGroupName(RelaxationGroup group);
+
+// The rows of one family inside the model's stacked g(U): a view of the Jacobian rows
+// [first_row, first_row + rows) (no copy, no allocation).
+using JacobianRows = Eigen::Ref<Eigen::MatrixXd>;
+
+class ConstraintFamily {
+ public:
+  virtual ~ConstraintFamily() = default;
+
+  // snake_case name, used in datasets (mpc/slack columns) and messages
+  virtual const char* name() const = 0;
+  // unit of g (and so of its relaxation slack): "m" or "rad"
+  virtual const char* unit() const = 0;
+  virtual RelaxationGroup group() const = 0;
+  // Number of rows for this layout (fixed for the model's lifetime).
+  virtual int rowCount(const NmpcLayout& layout) const = 0;
+  // g(U) of its rows (<= 0 when satisfied) into `g` (rowCount entries) and, when `jacobian`
+  // is not null, dg/dU into its rows; the caller has zeroed them. Inactive rows (of a fixed
+  // step, an empty obstacle slot) are g = -1 with a zero Jacobian row. Must not allocate.
+  virtual void evaluate(const NmpcModel& model, const NmpcProblem& problem,
+                        const Eigen::Ref<const Eigen::VectorXd>& U,
+                        Eigen::Ref<Eigen::VectorXd> g, JacobianRows* jacobian) const = 0;
+  // Warm start: the local row that `row` (local, active at the last sample) becomes once the
+  // plan is shifted one sample forward (and one step when a step was completed), or -1 when
+  // it leaves the horizon or changes meaning.
+  virtual int shiftedRow(const NmpcLayout& layout, int row, bool step_completed) const = 0;
+};
+
+// The built-in families of the paper, in their registration order (rows as NmpcLayout's
+// copRow, feasibilityRow, yawRow, obstacleRow).
+std::unique_ptr<ConstraintFamily> makeCopConstraint();              // eq. (9)-(13)
+std::unique_ptr<ConstraintFamily> makeStepFeasibilityConstraint();  // eq. (14)-(15)
+std::unique_ptr<ConstraintFamily> makeYawBoundConstraint();         // eq. (16)-(17)
+std::unique_ptr<ConstraintFamily> makeObstacleConstraint();         // eq. (18)-(19)
+
+// g(U) of every family of the model, stacked, and when jacobian != nullptr its exact Jacobian
+// dg/dU (every term, including the yaw derivative of the CoP rows through the current CoM
+// state). Does not allocate.
+void evaluateConstraints(const NmpcModel& model, const NmpcProblem& problem,
+                         const Eigen::Ref<const Eigen::VectorXd>& U,
+                         Eigen::Ref<Eigen::VectorXd> g, Eigen::MatrixXd* jacobian);
+
+// Equality rows E U = e fixing the fixed steps (landed, final: x, y, yaw); returns their count.
+int buildStepEqualities(const NmpcModel& model, const NmpcProblem& problem,
+                        Eigen::Ref<Eigen::MatrixXd> E, Eigen::Ref<Eigen::VectorXd> e);
+
+}  // namespace wpg

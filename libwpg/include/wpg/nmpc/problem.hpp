@@ -1,0 +1,56 @@
+#pragma once
+// What changes from one NMPC sample to the next: the walking phase (which support each CoP
+// sample uses, which steps are free), the current CoM state, the references of the cost and
+// the obstacles near the previewed steps.
+#include <Eigen/Core>
+
+#include "wpg/obstacles.hpp"
+#include "wpg/walk_trajectory.hpp"
+
+namespace wpg {
+
+// Shape of the problem at one sample: which support each CoP sample uses, which steps are free.
+struct PhaseStructure {
+  FootSide first_step_side = FootSide::kLeft;  // previewed steps alternate from this side
+  // Fixed reference of the samples on the current support: the support foot (x, y, yaw), or
+  // the point between the feet when standing; and the CoP rectangle there (half sizes).
+  Eigen::Vector3d support_pose = Eigen::Vector3d::Zero();
+  double support_half_length = 0.0;
+  double support_half_width = 0.0;
+  Eigen::VectorXi row_step;        // N: 0 = current support, i = previewed step i (1-based)
+  Eigen::VectorXi step_fixed;      // nf: 1 = pose fixed by equality (landed, or final step)
+  Eigen::Matrix<double, 3, Eigen::Dynamic> fixed_step_pose;  // 3 x nf
+  // Hessian pattern (NmpcModel::rowStepsOf): r = the CoP samples j = 1..r on the current
+  // support while walking, or the standing pattern (every sample on both feet)
+  int pattern = 0;
+
+  FootSide stepSide(int step) const {  // 0-based step index
+    const bool same = (step % 2) == 0;
+    return same ? first_step_side
+                : (first_step_side == FootSide::kLeft ? FootSide::kRight : FootSide::kLeft);
+  }
+  // True when some CoP sample of the horizon stands on previewed step `step` (0-based).
+  bool stepOwnsSamples(int step) const {
+    for (int j = 0; j < row_step.size(); ++j)
+      if (row_step(j) == step + 1) return true;
+    return false;
+  }
+};
+
+struct NmpcProblem {
+  PhaseStructure phase;
+  // Obstacles (eq. 18-19): slot k holds the index of an obstacle of *obstacles, or -1. Their
+  // distances come from libwpg's exact, allocation-free 2-D functions (the FCL world of
+  // planning/ serves the route planner and the post-run checks, not the NMPC's loop).
+  const ObstacleSet* obstacles = nullptr;
+  Eigen::VectorXi obstacle_slot;
+  Eigen::Vector3d com_x = Eigen::Vector3d::Zero();  // [c, c', c''] along world x
+  Eigen::Vector3d com_y = Eigen::Vector3d::Zero();
+  Eigen::VectorXd velocity_x, velocity_y;  // N: world reference velocity per sample (J1)
+  // N: the part of each sample's windowed mean velocity that comes from samples already
+  // walked (0 with the paper's instantaneous tracking, velocity_window_samples = 1)
+  Eigen::VectorXd velocity_past_x, velocity_past_y;
+  Eigen::VectorXd yaw_reference;           // nf: reference yaw of each step (J2)
+};
+
+}  // namespace wpg

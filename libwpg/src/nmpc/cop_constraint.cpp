@@ -1,0 +1,66 @@
+// CoP in the support polygon, paper eq. (9)-(13): 4 rows per sample of the horizon.
+#include "nmpc_internal.hpp"
+#include "wpg/nmpc/model.hpp"
+
+namespace wpg {
+namespace {
+
+using nmpc_internal::PoseRef;
+using nmpc_internal::RotatedEdge;
+
+// Rectangle CoP polygon, Fig. 4: outward normals (+x, -x, +y, -y) of a_e' R(theta)(z - f) <= b_e.
+constexpr double kCopNormal[4][2] = {{1.0, 0.0}, {-1.0, 0.0}, {0.0, 1.0}, {0.0, -1.0}};
+
+class CopConstraint final : public ConstraintFamily {
+ public:
+  const char* name() const override { return "cop"; }
+  const char* unit() const override { return "m"; }
+  RelaxationGroup group() const override { return RelaxationGroup::kBalance; }
+  int rowCount(const NmpcLayout& L) const override { return NmpcLayout::kCopEdges * L.horizon; }
+
+  // a_e' R(theta_j) (z_j - f_j) <= b_e with R(theta) = [c s; -s c] (eq. 11). Writing
+  // w = R(theta)' a_e: g = w_x dx + w_y dy - b_e, d = z_j - f_j = Pzs c_hat + Pzu jerk - f_j,
+  // dg/dtheta = w'_x dx + w'_y dy, which depends on the current CoM state through z_j.
+  void evaluate(const NmpcModel& model, const NmpcProblem& problem,
+                const Eigen::Ref<const Eigen::VectorXd>& U, Eigen::Ref<Eigen::VectorXd> g,
+                JacobianRows* jacobian) const override {
+    const NmpcLayout& L = model.layout();
+    const LipmPrediction& P = model.prediction();
+    const WalkingParameters& w = model.parameters();
+    const PhaseStructure& phase = problem.phase;
+    const auto jerk_x = U.segment(L.jerkX(), L.horizon);
+    const auto jerk_y = U.segment(L.jerkY(), L.horizon);
+    for (int j = 0; j < L.horizon; ++j) {
+      const double zx = P.cop_state.row(j).dot(problem.com_x) +
+                        P.cop_jerk.row(j).head(j + 1).dot(jerk_x.head(j + 1));
+      const double zy = P.cop_state.row(j).dot(problem.com_y) +
+                        P.cop_jerk.row(j).head(j + 1).dot(jerk_y.head(j + 1));
+      const PoseRef f = nmpc_internal::supportOfSample(L, problem, U, j);
+      const double half_length = f.step < 0 ? phase.support_half_length : w.copHalfLength();
+      const double half_width = f.step < 0 ? phase.support_half_width : w.copHalfWidth();
+      const double bound[4] = {half_length, half_length, half_width, half_width};
+      const double dx = zx - f.x, dy = zy - f.y;
+      for (int e = 0; e < NmpcLayout::kCopEdges; ++e) {
+        const RotatedEdge edge(kCopNormal[e][0], kCopNormal[e][1], f.yaw);
+        const int row = L.copRow(j, e);
+        g(row) = edge.value(dx, dy, bound[e]);
+        if (!jacobian) continue;
+        auto G = jacobian->row(row);
+        G.segment(L.jerkX(), j + 1) = edge.wx * P.cop_jerk.row(j).head(j + 1);
+        G.segment(L.jerkY(), j + 1) = edge.wy * P.cop_jerk.row(j).head(j + 1);
+        edge.writeFrameJacobian(*jacobian, row, L, f, dx, dy);
+      }
+    }
+  }
+
+  // Sample j becomes sample j - 1; the first sample's rows leave the horizon.
+  int shiftedRow(const NmpcLayout&, int row, bool) const override {
+    return row - NmpcLayout::kCopEdges;  // < 0 for the first sample
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<ConstraintFamily> makeCopConstraint() { return std::make_unique<CopConstraint>(); }
+
+}  // namespace wpg

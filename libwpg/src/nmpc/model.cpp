@@ -1,0 +1,177 @@
+// The constant part of the NMPC: prediction, Hessians per walking pattern, constraint families.
+#include "wpg/nmpc/model.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <utility>
+
+#include <Eigen/Dense>
+
+#include "nmpc_internal.hpp"
+
+namespace wpg {
+
+const char* relaxationGroupName(RelaxationGroup group) {
+  switch (group) {
+    case RelaxationGroup::kObstacle: return "obstacle";
+    case RelaxationGroup::kKinematics: return "kinematics";
+    case RelaxationGroup::kBalance: return "balance";
+  }
+  return "unknown";
+}
+
+NmpcModel::NmpcModel(const WalkingParameters& parameters, int obstacle_slots)
+    : parameters_(parameters) {
+  if (obstacle_slots < 0) throw std::invalid_argument("obstacle slots: expected >= 0");
+  parameters_.validate();
+  const int N = parameters_.horizon_length;
+  const int nf = parameters_.previewed_steps;
+  std::string why;
+  if (!feasibility_left_.setVertices(parameters_.feasibilityVertices(FootSide::kLeft), &why) ||
+      !feasibility_right_.setVertices(parameters_.feasibilityVertices(FootSide::kRight), &why)) {
+    throw std::invalid_argument("step feasibility polygon is " + why);
+  }
+  layout_.horizon = N;
+  layout_.steps = nf;
+  layout_.feasibility_edges = feasibility_left_.edgeCount();
+  layout_.obstacle_slots = obstacle_slots;
+  prediction_ = LipmPrediction(N, parameters_.sampling_period, parameters_.com_height,
+                               parameters_.gravity);
+
+  // The paper's families, in the row order of NmpcLayout's copRow .. obstacleRow.
+  family_first_row_.push_back(0);
+  addConstraintFamily(makeCopConstraint());
+  addConstraintFamily(makeStepFeasibilityConstraint());
+  addConstraintFamily(makeYawBoundConstraint());
+  addConstraintFamily(makeObstacleConstraint());
+
+  // J1's velocity: the mean over a window of K samples of the predicted velocities (K = 1:
+  // the paper's instantaneous C'_{k+1}); the window of sample j reaches back to j - K + 1.
+  const int K = parameters_.velocity_window_samples;
+  Eigen::MatrixXd window = Eigen::MatrixXd::Zero(N, N);
+  for (int j = 0; j < N; ++j)
+    for (int i = std::max(0, j - K + 1); i <= j; ++i) window(j, i) = 1.0 / K;
+  tracked_velocity_state_ = window * prediction_.velocity_state;
+  tracked_velocity_jerk_ = window * prediction_.velocity_jerk;
+
+  const double alpha = parameters_.weight_velocity;
+  const double beta = parameters_.weight_cop;
+  const double gamma = parameters_.weight_jerk;
+  const int n = layout_.variableCount();
+  const Eigen::MatrixXd& Pvu = tracked_velocity_jerk_;
+  const Eigen::MatrixXd& Pzu = prediction_.cop_jerk;
+  // Jerk block of J1, J3, J4 (eq. 5), the same for both axes and every pattern.
+  const Eigen::MatrixXd jerk_block = alpha * Pvu.transpose() * Pvu +
+                                     beta * Pzu.transpose() * Pzu +
+                                     gamma * Eigen::MatrixXd::Identity(N, N);
+
+  const int pattern_count = parameters_.stepSamples() + 1;
+  hessians_.resize(pattern_count);
+  factors_.resize(pattern_count);
+  Eigen::VectorXi row_step(N);
+  for (int pattern = 0; pattern < pattern_count; ++pattern) {
+    rowStepsOf(pattern, row_step);
+    Eigen::MatrixXd V = Eigen::MatrixXd::Zero(N, nf);  // eq. (4): samples x steps
+    for (int j = 0; j < N; ++j)
+      if (row_step(j) > 0) V(j, row_step(j) - 1) = 1.0;
+    Eigen::MatrixXd step_block = beta * V.transpose() * V;
+    for (int i = 0; i < nf; ++i)
+      if (step_block(i, i) == 0.0) step_block(i, i) = nmpc_internal::kFixedStepRegularization;
+    const Eigen::MatrixXd cross = -beta * Pzu.transpose() * V;  // J3 couples jerks and steps
+
+    Eigen::MatrixXd Q = Eigen::MatrixXd::Zero(n, n);
+    for (int axis = 0; axis < 2; ++axis) {
+      const int oj = axis == 0 ? layout_.jerkX() : layout_.jerkY();
+      const int of = axis == 0 ? layout_.stepX() : layout_.stepY();
+      Q.block(oj, oj, N, N) = jerk_block;
+      Q.block(oj, of, N, nf) = cross;
+      Q.block(of, oj, nf, N) = cross.transpose();
+      Q.block(of, of, nf, nf) = step_block;
+    }
+    Q.block(layout_.stepYaw(), layout_.stepYaw(), nf, nf) =
+        parameters_.weight_yaw * Eigen::MatrixXd::Identity(nf, nf);  // Q^theta of eq. (8)
+    hessians_[pattern] = Q;
+    if (!factors_[pattern].compute(Q))
+      throw std::invalid_argument("NMPC Hessian is not positive definite (check the weights)");
+  }
+}
+
+void NmpcModel::addConstraintFamily(std::shared_ptr<const ConstraintFamily> family) {
+  if (!family) throw std::invalid_argument("constraint family: expected a family, got null");
+  if (familyCount() >= kMaxConstraintFamilies) {
+    throw std::invalid_argument("constraint family '" + std::string(family->name()) +
+                                "': at most " + std::to_string(kMaxConstraintFamilies) +
+                                " families per model");
+  }
+  const int rows = family->rowCount(layout_);
+  if (rows < 0) throw std::invalid_argument("constraint family: negative row count");
+  families_.push_back(std::move(family));
+  family_first_row_.push_back(family_first_row_.back() + rows);
+  layout_.inequality_rows = family_first_row_.back();
+}
+
+int NmpcModel::familyOfRow(int row) const {
+  for (int k = 0; k < familyCount(); ++k)
+    if (row < family_first_row_[k + 1]) return k;
+  return -1;
+}
+
+void NmpcModel::rowStepsOf(int pattern, Eigen::Ref<Eigen::VectorXi> row_step) const {
+  const int S = parameters_.stepSamples();
+  for (int j = 1; j <= layout_.horizon; ++j) {
+    if (pattern == S) {
+      row_step(j - 1) = 0;  // standing: every sample on the fixed double support
+    } else {
+      const int r = pattern;  // samples left on the current support, eq. (4)'s v selection
+      row_step(j - 1) = j <= r ? 0 : (j - r - 1) / S + 1;
+    }
+  }
+}
+
+NmpcProblem NmpcModel::makeProblem() const {
+  NmpcProblem problem;
+  problem.phase.row_step = Eigen::VectorXi::Zero(layout_.horizon);
+  problem.phase.step_fixed = Eigen::VectorXi::Zero(layout_.steps);
+  problem.phase.fixed_step_pose = Eigen::Matrix<double, 3, Eigen::Dynamic>::Zero(3, layout_.steps);
+  problem.velocity_x = Eigen::VectorXd::Zero(layout_.horizon);
+  problem.velocity_y = Eigen::VectorXd::Zero(layout_.horizon);
+  problem.velocity_past_x = Eigen::VectorXd::Zero(layout_.horizon);
+  problem.velocity_past_y = Eigen::VectorXd::Zero(layout_.horizon);
+  problem.yaw_reference = Eigen::VectorXd::Zero(layout_.steps);
+  problem.obstacle_slot = Eigen::VectorXi::Constant(layout_.obstacle_slots, -1);
+  return problem;
+}
+
+void evaluateConstraints(const NmpcModel& model, const NmpcProblem& problem,
+                         const Eigen::Ref<const Eigen::VectorXd>& U,
+                         Eigen::Ref<Eigen::VectorXd> g, Eigen::MatrixXd* jacobian) {
+  if (jacobian) jacobian->setZero();
+  for (int k = 0; k < model.familyCount(); ++k) {
+    const int first = model.familyFirstRow(k), rows = model.familyRowCount(k);
+    if (rows == 0) continue;
+    if (jacobian) {
+      JacobianRows block(jacobian->middleRows(first, rows));
+      model.family(k).evaluate(model, problem, U, g.segment(first, rows), &block);
+    } else {
+      model.family(k).evaluate(model, problem, U, g.segment(first, rows), nullptr);
+    }
+  }
+}
+
+int buildStepEqualities(const NmpcModel& model, const NmpcProblem& problem,
+                        Eigen::Ref<Eigen::MatrixXd> E, Eigen::Ref<Eigen::VectorXd> e) {
+  const NmpcLayout& L = model.layout();
+  int rows = 0;
+  for (int i = 0; i < L.steps; ++i) {
+    if (!problem.phase.step_fixed(i)) continue;
+    const int columns[3] = {L.stepX() + i, L.stepY() + i, L.stepYaw() + i};
+    for (int k = 0; k < 3; ++k, ++rows) {
+      E.row(rows).setZero();
+      E(rows, columns[k]) = 1.0;
+      e(rows) = problem.phase.fixed_step_pose(k, i);
+    }
+  }
+  return rows;
+}
+
+}  // namespace wpg

@@ -1,0 +1,71 @@
+// Obstacle avoidance, paper eq. (18)-(19): one row per previewed step and obstacle slot (the
+// obstacles near the steps, chosen at every sample), with libwpg's exact 2-D distances.
+#include "nmpc_internal.hpp"
+#include "wpg/nmpc/model.hpp"
+
+namespace wpg {
+namespace {
+
+class ObstacleConstraint final : public ConstraintFamily {
+ public:
+  const char* name() const override { return "obstacle"; }
+  const char* unit() const override { return "m"; }
+  RelaxationGroup group() const override { return RelaxationGroup::kObstacle; }
+  int rowCount(const NmpcLayout& L) const override { return L.obstacle_slots * L.steps; }
+
+  void evaluate(const NmpcModel& model, const NmpcProblem& problem,
+                const Eigen::Ref<const Eigen::VectorXd>& U, Eigen::Ref<Eigen::VectorXd> g,
+                JacobianRows* jacobian) const override {
+    const NmpcLayout& L = model.layout();
+    const int base = L.firstObstacleRow();
+    for (int i = 0; i < L.steps; ++i) {
+      for (int k = 0; k < L.obstacle_slots; ++k) {
+        const int row = L.obstacleRow(i, k) - base;
+        const int index = problem.obstacle_slot(k);
+        if (index < 0 || !problem.obstacles || problem.phase.step_fixed(i)) {
+          g(row) = -1.0;  // empty slot, or a step that can no longer move
+          continue;
+        }
+        const Obstacle& obstacle = problem.obstacles->obstacle(index);
+        const Eigen::Vector2d F(U(L.stepX() + i), U(L.stepY() + i));
+        // The step centre keeps the obstacle's margin plus the sole's radius
+        // (obstacle_foot_radius) from the obstacle.
+        const double margin = obstacle.margin + model.parameters().obstacle_foot_radius;
+        Eigen::Vector2d dg;
+        if (obstacle.type == ObstacleType::kCircle) {
+          // eq. (18): (F - c)^2 >= (R + m)^2, written ((R + m)^2 - |F - c|^2) / (2 (R + m))
+          // <= 0: the same feasible set and linearization up to a positive factor, in metres
+          // (to first order the distance missing to the circle), so that the relaxation slack
+          // of this family has one unit whatever the shapes.
+          const Eigen::Vector2d d = F - obstacle.center;
+          const double r = obstacle.radius + margin;
+          g(row) = (r * r - d.squaredNorm()) / (2.0 * r);
+          dg = -d / r;
+        } else {
+          // d(F) >= m  <=>  g = m - d(F) <= 0, with d the signed distance to the convex shape
+          Eigen::Vector2d gradient;
+          g(row) = margin - problem.obstacles->signedDistance(index, F, &gradient);
+          dg = -gradient;
+        }
+        if (jacobian) {
+          (*jacobian)(row, L.stepX() + i) = dg.x();
+          (*jacobian)(row, L.stepY() + i) = dg.y();
+        }
+      }
+    }
+  }
+
+  // Step i becomes step i - 1 when a step was completed (slots keep their obstacle only
+  // approximately: the selection is redone at every sample, a warm-start guess is a guess).
+  int shiftedRow(const NmpcLayout& L, int row, bool step_completed) const override {
+    return step_completed ? row - L.obstacle_slots : row;
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<ConstraintFamily> makeObstacleConstraint() {
+  return std::make_unique<ObstacleConstraint>();
+}
+
+}  // namespace wpg

@@ -1,0 +1,58 @@
+// Step feasibility, paper eq. (14)-(15): each previewed step inside the polygon of reachable
+// placements attached to the step before it (5 rows per step for HRP-2's polygon).
+#include "nmpc_internal.hpp"
+#include "wpg/nmpc/model.hpp"
+
+namespace wpg {
+namespace {
+
+using nmpc_internal::PoseRef;
+using nmpc_internal::RotatedEdge;
+
+class StepFeasibilityConstraint final : public ConstraintFamily {
+ public:
+  const char* name() const override { return "step_feasibility"; }
+  const char* unit() const override { return "m"; }
+  RelaxationGroup group() const override { return RelaxationGroup::kKinematics; }
+  int rowCount(const NmpcLayout& L) const override { return L.feasibility_edges * L.steps; }
+
+  // a_e' R(theta_prev) (F_i - F_prev) <= b_e; rows of fixed steps are inactive.
+  void evaluate(const NmpcModel& model, const NmpcProblem& problem,
+                const Eigen::Ref<const Eigen::VectorXd>& U, Eigen::Ref<Eigen::VectorXd> g,
+                JacobianRows* jacobian) const override {
+    const NmpcLayout& L = model.layout();
+    const PhaseStructure& phase = problem.phase;
+    const int base = L.feasibilityRow(0, 0);
+    for (int i = 0; i < L.steps; ++i) {
+      const ConvexPolygon& polygon = model.feasibilityPolygon(phase.stepSide(i));
+      if (phase.step_fixed(i)) {
+        for (int e = 0; e < L.feasibility_edges; ++e) g(L.feasibilityRow(i, e) - base) = -1.0;
+        continue;
+      }
+      const PoseRef prev = nmpc_internal::previousOfStep(L, problem, U, i);
+      const double dx = U(L.stepX() + i) - prev.x, dy = U(L.stepY() + i) - prev.y;
+      for (int e = 0; e < L.feasibility_edges; ++e) {
+        const RotatedEdge edge(polygon.normals()(e, 0), polygon.normals()(e, 1), prev.yaw);
+        const int row = L.feasibilityRow(i, e) - base;
+        g(row) = edge.value(dx, dy, polygon.offsets()(e));
+        if (!jacobian) continue;
+        (*jacobian)(row, L.stepX() + i) = edge.wx;
+        (*jacobian)(row, L.stepY() + i) = edge.wy;
+        edge.writeFrameJacobian(*jacobian, row, L, prev, dx, dy);
+      }
+    }
+  }
+
+  // Step i becomes step i - 1 when a step was completed.
+  int shiftedRow(const NmpcLayout& L, int row, bool step_completed) const override {
+    return step_completed ? row - L.feasibility_edges : row;
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<ConstraintFamily> makeStepFeasibilityConstraint() {
+  return std::make_unique<StepFeasibilityConstraint>();
+}
+
+}  // namespace wpg

@@ -1,0 +1,54 @@
+// Yaw change between consecutive steps, paper eq. (16)-(17): |theta_i - theta_prev| <= bound
+// (walking parameter max_step_yaw_change), 2 rows per step.
+#include "nmpc_internal.hpp"
+#include "wpg/nmpc/model.hpp"
+
+namespace wpg {
+namespace {
+
+class YawBoundConstraint final : public ConstraintFamily {
+ public:
+  const char* name() const override { return "yaw_bound"; }
+  const char* unit() const override { return "rad"; }
+  RelaxationGroup group() const override { return RelaxationGroup::kKinematics; }
+  int rowCount(const NmpcLayout& L) const override { return 2 * L.steps; }
+
+  void evaluate(const NmpcModel& model, const NmpcProblem& problem,
+                const Eigen::Ref<const Eigen::VectorXd>& U, Eigen::Ref<Eigen::VectorXd> g,
+                JacobianRows* jacobian) const override {
+    const NmpcLayout& L = model.layout();
+    const double bound = model.parameters().max_step_yaw_change;
+    const int base = L.yawRow(0, true);
+    for (int i = 0; i < L.steps; ++i) {
+      const int upper = L.yawRow(i, true) - base, lower = L.yawRow(i, false) - base;
+      if (problem.phase.step_fixed(i)) {
+        g(upper) = -1.0;
+        g(lower) = -1.0;
+        continue;
+      }
+      const nmpc_internal::PoseRef prev = nmpc_internal::previousOfStep(L, problem, U, i);
+      const double yaw_change = U(L.stepYaw() + i) - prev.yaw;
+      g(upper) = yaw_change - bound;
+      g(lower) = -yaw_change - bound;
+      if (!jacobian) continue;
+      (*jacobian)(upper, L.stepYaw() + i) = 1.0;
+      (*jacobian)(lower, L.stepYaw() + i) = -1.0;
+      if (prev.step >= 0) {
+        (*jacobian)(upper, L.stepYaw() + prev.step) = -1.0;
+        (*jacobian)(lower, L.stepYaw() + prev.step) = 1.0;
+      }
+    }
+  }
+
+  int shiftedRow(const NmpcLayout&, int row, bool step_completed) const override {
+    return step_completed ? row - 2 : row;
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<ConstraintFamily> makeYawBoundConstraint() {
+  return std::make_unique<YawBoundConstraint>();
+}
+
+}  // namespace wpg
