@@ -12,6 +12,7 @@
 
 #include "wpg/nmpc.hpp"
 #include "wpg/walking_parameters.hpp"
+#include "nmpc_test_problems.hpp"
 
 namespace {
 
@@ -24,50 +25,14 @@ using wpg::NmpcModel;
 using wpg::NmpcProblem;
 using wpg::WalkingParameters;
 
-struct Rng {
-  explicit Rng(unsigned seed) : engine(seed) {}
-  double uniform(double lo, double hi) {
-    return std::uniform_real_distribution<double>(lo, hi)(engine);
-  }
-  double normal() { return std::normal_distribution<double>(0.0, 1.0)(engine); }
-  std::mt19937 engine;
-};
+using namespace wpg_test;
 
+// A random problem of `pattern`: every step fixed when standing, none while walking.
 NmpcProblem randomProblem(const NmpcModel& model, int pattern, Rng& rng) {
-  const NmpcLayout& L = model.layout();
-  const WalkingParameters& w = model.parameters();
-  NmpcProblem problem = model.makeProblem();
-  auto& phase = problem.phase;
-  phase.pattern = pattern;
   const bool standing = pattern == model.standingPattern();
-  model.rowStepsOf(pattern, phase.row_step);
-  phase.first_step_side = rng.uniform(0, 1) < 0.5 ? FootSide::kLeft : FootSide::kRight;
-  phase.support_pose = Vector3d(rng.uniform(-2, 2), rng.uniform(-2, 2), rng.uniform(-3, 3));
-  phase.support_half_length = w.copHalfLength();
-  phase.support_half_width = w.copHalfWidth();
-  for (int i = 0; i < L.steps; ++i) {
-    phase.step_fixed(i) = standing ? 1 : 0;
-    phase.fixed_step_pose.col(i) = Vector3d(rng.uniform(-2, 2), rng.uniform(-2, 2), rng.uniform(-3, 3));
-  }
-  problem.com_x = Vector3d(rng.uniform(-2, 2), rng.uniform(-1, 1), rng.uniform(-3, 3));
-  problem.com_y = Vector3d(rng.uniform(-2, 2), rng.uniform(-1, 1), rng.uniform(-3, 3));
-  for (int j = 0; j < L.horizon; ++j) {
-    problem.velocity_x(j) = rng.uniform(-0.4, 0.4);
-    problem.velocity_y(j) = rng.uniform(-0.3, 0.3);
-  }
-  for (int i = 0; i < L.steps; ++i) problem.yaw_reference(i) = rng.uniform(-3, 3);
-  return problem;
-}
-
-VectorXd randomU(const NmpcModel& model, const NmpcProblem& problem, Rng& rng) {
-  const NmpcLayout& L = model.layout();
-  VectorXd U(L.variableCount());
-  for (int k = 0; k < U.size(); ++k) U(k) = rng.normal();
-  for (int i = 0; i < L.steps; ++i) {
-    U(L.stepX() + i) += problem.phase.support_pose.x();
-    U(L.stepY() + i) += problem.phase.support_pose.y();
-  }
-  return U;
+  return wpg_test::randomProblem(model, pattern,
+                                 rng.chance(0.5) ? FootSide::kLeft : FootSide::kRight,
+                                 standing ? FixedMode::kAll : FixedMode::kNone, rng);
 }
 
 class NmpcCost : public ::testing::TestWithParam<int> {};

@@ -15,6 +15,7 @@
 #include "wpg/nmpc.hpp"
 #include "wpg/obstacles.hpp"
 #include "wpg/walking_parameters.hpp"
+#include "nmpc_test_problems.hpp"
 
 namespace {
 
@@ -28,98 +29,20 @@ using wpg::NmpcModel;
 using wpg::NmpcProblem;
 using wpg::WalkingParameters;
 
-struct Rng {
-  explicit Rng(unsigned seed) : engine(seed) {}
-  double uniform(double lo, double hi) {
-    return std::uniform_real_distribution<double>(lo, hi)(engine);
-  }
-  double normal() { return std::normal_distribution<double>(0.0, 1.0)(engine); }
-  bool chance(double p) { return uniform(0.0, 1.0) < p; }
-  // Yaws over the whole circle and beyond (+-3.5 rad), with extra weight on large ones.
-  double yaw() { return chance(0.3) ? (chance(0.5) ? 1.0 : -1.0) * uniform(2.8, 3.5) : uniform(-3.5, 3.5); }
-  std::mt19937 engine;
-};
+using namespace wpg_test;
 
-enum class FixedMode { kNone, kFirst, kRandom };
+using wpg::JacobianCheck;
 
-NmpcProblem randomProblem(const NmpcModel& model, int pattern, FootSide first_side, FixedMode mode,
-                          Rng& rng) {
-  const NmpcLayout& L = model.layout();
-  const WalkingParameters& w = model.parameters();
-  NmpcProblem problem = model.makeProblem();
-  auto& phase = problem.phase;
-  phase.pattern = pattern;
-  const bool standing = pattern == model.standingPattern();
-  model.rowStepsOf(pattern, phase.row_step);
-  phase.first_step_side = first_side;
-  phase.support_pose = Vector3d(rng.uniform(-2, 2), rng.uniform(-2, 2), rng.yaw());
-  phase.support_half_length = w.copHalfLength();
-  phase.support_half_width =
-      standing ? 0.5 * w.initial_foot_separation + w.copHalfWidth() : w.copHalfWidth();
-  for (int i = 0; i < L.steps; ++i) {
-    bool fixed = false;
-    if (mode == FixedMode::kFirst) fixed = i == 0;
-    if (mode == FixedMode::kRandom) fixed = rng.chance(0.5);
-    phase.step_fixed(i) = fixed ? 1 : 0;
-    phase.fixed_step_pose.col(i) =
-        Vector3d(rng.uniform(-2, 2), rng.uniform(-2, 2), rng.yaw());
-  }
-  problem.com_x = Vector3d(phase.support_pose.x() + rng.uniform(-0.5, 0.5), rng.uniform(-1, 1),
-                           rng.uniform(-4, 4));
-  problem.com_y = Vector3d(phase.support_pose.y() + rng.uniform(-0.5, 0.5), rng.uniform(-1, 1),
-                           rng.uniform(-4, 4));
-  for (int j = 0; j < L.horizon; ++j) {
-    problem.velocity_x(j) = rng.uniform(-0.4, 0.4);
-    problem.velocity_y(j) = rng.uniform(-0.3, 0.3);
-  }
-  for (int i = 0; i < L.steps; ++i) problem.yaw_reference(i) = rng.yaw();
-  return problem;
-}
-
-VectorXd randomU(const NmpcModel& model, const NmpcProblem& problem, Rng& rng) {
-  const NmpcLayout& L = model.layout();
-  VectorXd U(L.variableCount());
-  for (int j = 0; j < L.horizon; ++j) {
-    U(L.jerkX() + j) = 3.0 * rng.normal();
-    U(L.jerkY() + j) = 3.0 * rng.normal();
-  }
-  for (int i = 0; i < L.steps; ++i) {
-    U(L.stepX() + i) = problem.phase.support_pose.x() + rng.uniform(-0.8, 0.8);
-    U(L.stepY() + i) = problem.phase.support_pose.y() + rng.uniform(-0.8, 0.8);
-    U(L.stepYaw() + i) = rng.yaw();
-  }
-  return U;
-}
-
-struct JacobianCheck {
-  double worst = 0.0;  // max |J - Jfd| / max(1, |J|)
-  int worst_row = -1, worst_col = -1;
-};
-
+// Every family at once (the stacked g of the model) against central differences
+// (wpg::checkConstraintJacobian); evaluateConstraints must also set every Jacobian entry.
 JacobianCheck compareWithFiniteDifferences(const NmpcModel& model, const NmpcProblem& problem,
-                                           const VectorXd& U, MatrixXd* J_out = nullptr) {
+                                           const VectorXd& U) {
   const NmpcLayout& L = model.layout();
-  const int n = L.variableCount(), m = L.inequalityCount();
-  VectorXd g(m), gp(m), gm(m);
-  MatrixXd J(m, n);
-  J.setConstant(12345.0);  // evaluateConstraints must overwrite every entry
+  VectorXd g(L.inequalityCount());
+  MatrixXd J = MatrixXd::Constant(L.inequalityCount(), L.variableCount(), 12345.0);
   wpg::evaluateConstraints(model, problem, U, g, &J);
-  const double h = 1e-6;
-  JacobianCheck check;
-  for (int k = 0; k < n; ++k) {
-    VectorXd Up = U, Um = U;
-    Up(k) += h;
-    Um(k) -= h;
-    wpg::evaluateConstraints(model, problem, Up, gp, nullptr);
-    wpg::evaluateConstraints(model, problem, Um, gm, nullptr);
-    const VectorXd fd = (gp - gm) / (2 * h);
-    for (int r = 0; r < m; ++r) {
-      const double err = std::abs(J(r, k) - fd(r)) / std::max(1.0, std::abs(J(r, k)));
-      if (err > check.worst) check = {err, r, k};
-    }
-  }
-  if (J_out) *J_out = J;
-  return check;
+  EXPECT_LT(J.cwiseAbs().maxCoeff(), 12345.0) << "an entry of the Jacobian was not written";
+  return wpg::checkConstraintJacobian(model, problem, U);
 }
 
 std::string describeRow(const NmpcLayout& L, int row) {
@@ -156,7 +79,7 @@ TEST(NmpcJacobian, MatchesCentralFiniteDifferencesEverywhere) {
           EXPECT_LE(check.worst, 1e-6)
               << "pattern " << pattern << " side " << static_cast<int>(side) << " mode "
               << static_cast<int>(mode) << " trial " << trial << ": row " << check.worst_row
-              << " (" << describeRow(L, check.worst_row) << "), column " << check.worst_col;
+              << " (" << describeRow(L, check.worst_row) << "), column " << check.worst_column;
         }
       }
     }
@@ -219,7 +142,7 @@ TEST(NmpcJacobian, ObstacleRowsMatchFiniteDifferences) {
       ++points;
       EXPECT_LE(check.worst, 1e-6) << "pattern " << pattern << " trial " << trial << ": row "
                                    << check.worst_row << " (" << describeRow(L, check.worst_row)
-                                   << "), column " << check.worst_col;
+                                   << "), column " << check.worst_column;
       // Values: the circle's squared form, the others' margin - distance; -1 for the empty
       // slot and for fixed steps.
       VectorXd g(L.inequalityCount());

@@ -1,0 +1,328 @@
+// The constraint families behind one interface (wpg/nmpc/constraint_family.hpp): each built-in
+// family against central differences on its own rows, a family added by a test (one class and
+// one registration, as a new family of the library is one file and one line), and the staged
+// relaxation of infeasible QPs with one slack per family, forced by families that cannot hold.
+#include <gtest/gtest.h>
+
+#include <Eigen/Core>
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "nmpc_test_problems.hpp"
+#include "wpg/nmpc.hpp"
+#include "wpg/pattern_generator.hpp"
+
+namespace {
+
+using Eigen::MatrixXd;
+using Eigen::Vector2d;
+using Eigen::Vector3d;
+using Eigen::VectorXd;
+using wpg::ConstraintFamily;
+using wpg::IterationStatus;
+using wpg::JacobianRows;
+using wpg::NmpcLayout;
+using wpg::NmpcModel;
+using wpg::NmpcProblem;
+using wpg::NmpcSolver;
+using wpg::RelaxationGroup;
+using wpg::WalkingParameters;
+using namespace wpg_test;
+
+// A test-only nonlinear family: every free previewed step within `radius` of the current
+// support, |F_i - f_support|^2 <= radius^2, written (|d|^2 - r^2) / (2 r) <= 0 [m].
+class StepReach final : public ConstraintFamily {
+ public:
+  explicit StepReach(double radius) : radius_(radius) {}
+  const char* name() const override { return "step_reach"; }
+  const char* unit() const override { return "m"; }
+  RelaxationGroup group() const override { return RelaxationGroup::kKinematics; }
+  int rowCount(const NmpcLayout& L) const override { return L.steps; }
+  void evaluate(const NmpcModel& model, const NmpcProblem& problem,
+                const Eigen::Ref<const VectorXd>& U, Eigen::Ref<VectorXd> g,
+                JacobianRows* jacobian) const override {
+    const NmpcLayout& L = model.layout();
+    for (int i = 0; i < L.steps; ++i) {
+      if (problem.phase.step_fixed(i)) {
+        g(i) = -1.0;
+        continue;
+      }
+      const Vector2d d(U(L.stepX() + i) - problem.phase.support_pose.x(),
+                       U(L.stepY() + i) - problem.phase.support_pose.y());
+      g(i) = (d.squaredNorm() - radius_ * radius_) / (2.0 * radius_);
+      if (!jacobian) continue;
+      (*jacobian)(i, L.stepX() + i) = d.x() / radius_;
+      (*jacobian)(i, L.stepY() + i) = d.y() / radius_;
+    }
+  }
+  int shiftedRow(const NmpcLayout&, int row, bool step_completed) const override {
+    return step_completed ? row - 1 : row;
+  }
+
+ private:
+  double radius_;
+};
+
+// A family that cannot hold: one row g = 1 with a zero Jacobian, in the given group. Its
+// linearized row 0'U <= -1 makes every QP infeasible; its slack must be exactly 1.
+class NeverHolds final : public ConstraintFamily {
+ public:
+  explicit NeverHolds(RelaxationGroup group) : group_(group) {}
+  const char* name() const override { return "never_holds"; }
+  const char* unit() const override { return "m"; }
+  RelaxationGroup group() const override { return group_; }
+  int rowCount(const NmpcLayout&) const override { return 1; }
+  void evaluate(const NmpcModel&, const NmpcProblem&, const Eigen::Ref<const VectorXd>&,
+                Eigen::Ref<VectorXd> g, JacobianRows*) const override {
+    g(0) = 1.0;
+  }
+  int shiftedRow(const NmpcLayout&, int row, bool) const override { return row; }
+
+ private:
+  RelaxationGroup group_;
+};
+
+std::vector<wpg::Obstacle> threeObstacles() {
+  std::vector<wpg::Obstacle> obstacles(3);
+  obstacles[0].center = Vector2d(0.6, 0.2);
+  obstacles[0].radius = 0.15;
+  obstacles[0].margin = 0.1;
+  obstacles[1].type = wpg::ObstacleType::kBox;
+  obstacles[1].center = Vector2d(-0.5, -0.4);
+  obstacles[1].size = Vector2d(0.4, 0.2);
+  obstacles[1].yaw = 0.6;
+  obstacles[1].margin = 0.05;
+  obstacles[2].type = wpg::ObstacleType::kPolygon;
+  obstacles[2].vertices = {{0.3, -0.9}, {0.7, -0.8}, {0.5, -0.5}};
+  obstacles[2].margin = 0.02;
+  return obstacles;
+}
+
+TEST(ConstraintFamilies, BuiltInFamiliesInTheLayoutsOrder) {
+  const NmpcModel model(WalkingParameters(), 3);
+  const NmpcLayout& L = model.layout();
+  ASSERT_EQ(model.familyCount(), 4);
+  const char* names[4] = {"cop", "step_feasibility", "yaw_bound", "obstacle"};
+  const int first[4] = {L.copRow(0, 0), L.feasibilityRow(0, 0), L.yawRow(0, true),
+                        L.firstObstacleRow()};
+  for (int k = 0; k < 4; ++k) {
+    EXPECT_STREQ(model.family(k).name(), names[k]);
+    EXPECT_EQ(model.familyFirstRow(k), first[k]);
+  }
+  EXPECT_EQ(model.familyFirstRow(3) + model.familyRowCount(3), L.inequalityCount());
+  EXPECT_EQ(model.family(0).group(), RelaxationGroup::kBalance);
+  EXPECT_EQ(model.family(1).group(), RelaxationGroup::kKinematics);
+  EXPECT_EQ(model.family(2).group(), RelaxationGroup::kKinematics);
+  EXPECT_EQ(model.family(3).group(), RelaxationGroup::kObstacle);
+  EXPECT_STREQ(model.family(2).unit(), "rad");
+}
+
+// Each family on its own rows (wpg::checkConstraintJacobian), at random points of every
+// walking pattern, with obstacles in three of four slots.
+TEST(ConstraintFamilies, EachFamilyMatchesFiniteDifferences) {
+  WalkingParameters w;
+  w.max_step_yaw_change = 0.17;
+  const NmpcModel model(w, 4);
+  const NmpcLayout& L = model.layout();
+  const wpg::ObstacleSet obstacles(threeObstacles());
+  Rng rng(77);
+  int points = 0;
+  for (int pattern = 0; pattern < model.patternCount(); ++pattern) {
+    for (FixedMode mode : {FixedMode::kNone, FixedMode::kFirst, FixedMode::kRandom}) {
+      NmpcProblem problem = randomProblem(model, pattern, FootSide::kLeft, mode, rng);
+      problem.obstacles = &obstacles;
+      problem.obstacle_slot << 2, -1, 0, 1;
+      VectorXd U = randomU(model, problem, rng);
+      for (int i = 0; i < L.steps; ++i) {  // steps 2 cm clear of every obstacle boundary
+        for (int attempt = 0;; ++attempt) {
+          ASSERT_LT(attempt, 1000);
+          const Vector2d F(rng.uniform(-1.2, 1.2), rng.uniform(-1.2, 1.2));
+          bool clear = true;
+          for (int o = 0; o < 3; ++o)
+            if (std::abs(obstacles.signedDistance(o, F, nullptr)) < 0.02) clear = false;
+          if (!clear) continue;
+          U(L.stepX() + i) = F.x();
+          U(L.stepY() + i) = F.y();
+          break;
+        }
+      }
+      for (int k = 0; k < model.familyCount(); ++k) {
+        const wpg::JacobianCheck check = wpg::checkConstraintJacobian(model, problem, U, k);
+        EXPECT_LE(check.worst, 1e-6) << model.family(k).name() << ", pattern " << pattern
+                                     << ": row " << check.worst_row << ", column "
+                                     << check.worst_column;
+        ++points;
+      }
+    }
+  }
+  EXPECT_EQ(points, 4 * 3 * model.patternCount());
+}
+
+// A new family is one class and one registration: its rows come after the built-in ones, the
+// finite-difference checker works on it, and the SQP to convergence satisfies it.
+TEST(ConstraintFamilies, AddedFamilyIsEnforced) {
+  const WalkingParameters w;
+  NmpcModel model(w);
+  // Compatible with the feasibility polygon (the next step lands 0.2 m to 0.4 m aside) but
+  // tighter: at 0.3 m/s the step after next wants to land ~0.5 m ahead of the support.
+  const double reach = 0.3;
+  model.addConstraintFamily(std::make_shared<StepReach>(reach));
+  ASSERT_EQ(model.familyCount(), 5);
+  EXPECT_EQ(model.familyFirstRow(4), model.layout().builtinRowCount());
+  EXPECT_EQ(model.layout().inequalityCount(), model.layout().builtinRowCount() + w.previewed_steps);
+  Rng rng(5);
+  for (int trial = 0; trial < 10; ++trial) {
+    const NmpcProblem problem = randomProblem(model, trial % 8, FootSide::kRight, FixedMode::kNone, rng);
+    const VectorXd U = randomU(model, problem, rng);
+    EXPECT_LE(wpg::checkConstraintJacobian(model, problem, U, 4).worst, 1e-6);
+  }
+
+  // Walk forward with the paper's families, then solve the same samples with the added one.
+  wpg::GeneratorSettings settings;
+  wpg::PatternGenerator generator(w, settings);
+  settings.sqp_iterations = 8;  // Gauss-Newton iterations: the nonlinear rows themselves hold
+  NmpcSolver solver(model);
+  VectorXd g(model.layout().inequalityCount());
+  int binding = 0;
+  for (int k = 0; k < 40; ++k) {
+    generator.update(k * w.sampling_period, Vector3d(0.3, 0.0, 0.0));
+    if (!generator.standing() && !generator.starting()) {
+      solver.plan() = generator.solver().plan();
+      solver.clearActiveSet();
+      const wpg::NmpcSolveResult result = solver.solve(model, generator.problem(), settings);
+      ASSERT_EQ(result.status, IterationStatus::kSolved) << "sample " << k;
+      wpg::evaluateConstraints(model, generator.problem(), solver.plan(), g, nullptr);
+      const auto rows = g.segment(model.familyFirstRow(4), model.familyRowCount(4));
+      EXPECT_LE(rows.maxCoeff(), 1e-8) << "sample " << k;
+      if (rows.maxCoeff() > -1e-8) ++binding;
+      EXPECT_LE(g.maxCoeff(), 1e-8) << "sample " << k;
+    }
+    Vector3d cx = generator.comX(), cy = generator.comY();
+    for (int i = 0; i < 20; ++i) {
+      wpg::integrateJerk(cx, generator.plan().jerk_x, w.control_period);
+      wpg::integrateJerk(cy, generator.plan().jerk_y, w.control_period);
+    }
+    generator.advance(cx, cy);
+  }
+  EXPECT_GT(binding, 10);
+}
+
+// Collects the samples of a forward walk (problems and the generator's shifted plans).
+struct Samples {
+  std::vector<NmpcProblem> problems;
+  std::vector<VectorXd> guesses;
+};
+
+Samples walkingSamples(const WalkingParameters& w, int count) {
+  wpg::PatternGenerator generator(w, wpg::GeneratorSettings());
+  Samples samples;
+  for (int k = 0; k < 30 + count; ++k) {
+    const VectorXd guess = generator.solver().plan();
+    generator.update(k * w.sampling_period, Vector3d(0.2, 0.0, 0.0));
+    if (k >= 30) {
+      samples.problems.push_back(generator.problem());
+      samples.guesses.push_back(guess);
+    }
+    Vector3d cx = generator.comX(), cy = generator.comY();
+    for (int i = 0; i < 20; ++i) {
+      wpg::integrateJerk(cx, generator.plan().jerk_x, w.control_period);
+      wpg::integrateJerk(cy, generator.plan().jerk_y, w.control_period);
+    }
+    generator.advance(cx, cy);
+  }
+  return samples;
+}
+
+// Infeasible QPs relax in stages (obstacle, kinematics, balance), one slack per family: a family
+// that cannot hold in group G gets slack 1, every other family slack 0 and its rows satisfied,
+// and the status names G.
+TEST(ConstraintFamilies, StagedRelaxationNamesTheGroupThatGaveWay) {
+  const WalkingParameters w;
+  const Samples samples = walkingSamples(w, 8);
+  const struct {
+    RelaxationGroup group;
+    IterationStatus status;
+  } cases[] = {{RelaxationGroup::kObstacle, IterationStatus::kRelaxedObstacle},
+               {RelaxationGroup::kKinematics, IterationStatus::kRelaxedKinematics},
+               {RelaxationGroup::kBalance, IterationStatus::kRelaxedBalance}};
+  for (const auto& c : cases) {
+    NmpcModel model(w);
+    model.addConstraintFamily(std::make_shared<NeverHolds>(c.group));
+    const int never = model.familyCount() - 1;
+    NmpcSolver solver(model);
+    for (std::size_t i = 0; i < samples.problems.size(); ++i) {
+      solver.plan() = samples.guesses[i];
+      const wpg::NmpcSolveResult result =
+          solver.solve(model, samples.problems[i], wpg::GeneratorSettings());
+      SCOPED_TRACE(std::string(wpg::relaxationGroupName(c.group)) + " sample " + std::to_string(i));
+      EXPECT_EQ(result.status, c.status);
+      EXPECT_EQ(result.relaxed_families, 1u << never);
+      EXPECT_NEAR(result.slack[never], 1.0, 1e-9);
+      for (int k = 0; k < never; ++k) EXPECT_LE(result.slack[k], 1e-12) << model.family(k).name();
+      // The paper's rows hold in the QP that was solved (their linearization at the sample,
+      // eq. 21b): the relaxation gave up only the family that cannot hold.
+      const wpg::NmpcWorkspace& ws = solver.workspace();
+      const int rows = model.layout().builtinRowCount();
+      const VectorXd residual = ws.jacobian.topRows(rows) * solver.plan() - ws.upper.head(rows);
+      EXPECT_LE(residual.maxCoeff(), 1e-9);
+    }
+  }
+}
+
+// Obstacle rows give way before the others: an obstacle family that cannot hold is relaxed at
+// the first stage, with the balance and kinematics rows kept hard.
+TEST(ConstraintFamilies, ObstacleRowsRelaxFirst) {
+  const WalkingParameters w;
+  const Samples samples = walkingSamples(w, 4);
+  NmpcModel model(w);
+  model.addConstraintFamily(std::make_shared<NeverHolds>(RelaxationGroup::kObstacle));
+  model.addConstraintFamily(std::make_shared<StepReach>(0.3));  // binding, kinematics
+  NmpcSolver solver(model);
+  for (std::size_t i = 0; i < samples.problems.size(); ++i) {
+    solver.plan() = samples.guesses[i];
+    const wpg::NmpcSolveResult result =
+        solver.solve(model, samples.problems[i], wpg::GeneratorSettings());
+    EXPECT_EQ(result.status, IterationStatus::kRelaxedObstacle) << i;
+    EXPECT_EQ(result.relaxed_families, 1u << 4) << i;
+    EXPECT_LE(result.slack[5], 1e-12) << i;
+    for (int k = 0; k < 4; ++k) EXPECT_LE(result.slack[k], 1e-12) << i;
+  }
+}
+
+// A QP stopped by its iteration limit is not executed: the plan stays the shifted previous one.
+TEST(ConstraintFamilies, CappedQpKeepsTheShiftedPlan) {
+  const WalkingParameters w;
+  const Samples samples = walkingSamples(w, 8);
+  const NmpcModel model(w);
+  NmpcSolver solver(model);
+  wpg::GeneratorSettings settings;
+  settings.max_qp_iterations = 2;
+  int capped = 0;
+  for (std::size_t i = 0; i < samples.problems.size(); ++i) {
+    solver.plan() = samples.guesses[i];
+    solver.clearActiveSet();  // cold: the QP needs more than two working-set updates
+    const wpg::NmpcSolveResult result = solver.solve(model, samples.problems[i], settings);
+    if (result.status != IterationStatus::kIterationLimit) {
+      EXPECT_EQ(result.status, IterationStatus::kSolved) << i;
+      continue;
+    }
+    ++capped;
+    EXPECT_EQ((solver.plan() - samples.guesses[i]).cwiseAbs().maxCoeff(), 0.0) << i;
+    EXPECT_GE(result.qp_iterations, settings.max_qp_iterations) << i;
+    EXPECT_TRUE(std::isfinite(result.cost));
+  }
+  EXPECT_GE(capped, 2);
+}
+
+TEST(ConstraintFamilies, RegistrationIsChecked) {
+  NmpcModel model{WalkingParameters()};
+  EXPECT_THROW(model.addConstraintFamily(nullptr), std::invalid_argument);
+  for (int k = model.familyCount(); k < wpg::kMaxConstraintFamilies; ++k)
+    model.addConstraintFamily(std::make_shared<StepReach>(0.3));
+  EXPECT_THROW(model.addConstraintFamily(std::make_shared<StepReach>(0.3)), std::invalid_argument);
+}
+
+}  // namespace
