@@ -151,15 +151,17 @@ long allocationsSoFar() {
 #endif
 }
 
-// Warms up with `warmup`, then counts allocations over `counted`.
-LoopResult countOverLoop(const WalkingParameters& w, GeneratorAlgorithm algorithm,
-                         const std::vector<Segment>& warmup, const std::vector<Segment>& counted) {
-  GeneratorSettings settings;
-  settings.algorithm = algorithm;
+// Warms up with `warmup`, calls `before_counting` (e.g. to give new obstacles: that allocates),
+// then counts allocations over `counted`.
+template <typename BeforeCounting>
+LoopResult countOverLoop(const WalkingParameters& w, const GeneratorSettings& settings,
+                         const std::vector<Segment>& warmup, const std::vector<Segment>& counted,
+                         BeforeCounting before_counting, std::vector<int>* status_counts = nullptr) {
   PatternGenerator generator(w, settings);
   int k = 0;
   for (const Segment& s : warmup)
     for (int i = 0; i < s.samples; ++i, ++k) runSample(generator, k * w.sampling_period, s.command);
+  before_counting(generator);
   LoopResult result;
   constexpr int kMax = 512;
   int statuses[kMax] = {0}, patterns[kMax] = {0}, equalities[kMax] = {0};
@@ -180,6 +182,11 @@ LoopResult countOverLoop(const WalkingParameters& w, GeneratorAlgorithm algorith
   }
   result.counts = stopCounting();
   for (int i = 0; i < n && i < kMax; ++i) {
+    if (status_counts) {
+      if (status_counts->size() <= static_cast<std::size_t>(statuses[i]))
+        status_counts->resize(statuses[i] + 1, 0);
+      ++(*status_counts)[statuses[i]];
+    }
     result.patterns_seen |= 1 << patterns[i];
     if (statuses[i] != 0) ++result.non_solved;
     if (allocations[i] > 0 && result.where.size() < 400) {
@@ -189,6 +196,13 @@ LoopResult countOverLoop(const WalkingParameters& w, GeneratorAlgorithm algorith
     }
   }
   return result;
+}
+
+LoopResult countOverLoop(const WalkingParameters& w, GeneratorAlgorithm algorithm,
+                         const std::vector<Segment>& warmup, const std::vector<Segment>& counted) {
+  GeneratorSettings settings;
+  settings.algorithm = algorithm;
+  return countOverLoop(w, settings, warmup, counted, [](PatternGenerator&) {});
 }
 
 bool counterAvailable() {
@@ -286,6 +300,83 @@ TEST(NmpcAllocation, StartStopCycle) {
     expectNoAllocation(r, algorithm == GeneratorAlgorithm::kNmpc ? "NMPC start/stop"
                                                                  : "LMPC start/stop");
   }
+}
+
+// Obstacle runs (issue: the NMPC's obstacle rows once went through the FCL world, ~10 mallocs
+// a query): a corridor of circles, boxes and polygons on both sides, several in the QP at every
+// sample, read through libwpg's exact 2-D distances.
+std::vector<wpg::Obstacle> corridor() {
+  std::vector<wpg::Obstacle> obstacles;
+  for (int i = 0; i < 40; ++i) {
+    wpg::Obstacle o;
+    const double x = 0.5 * i, y = (i % 2 ? 0.9 : -0.9);
+    o.margin = 0.1;
+    if (i % 3 == 0) {
+      o.center = Eigen::Vector2d(x, y);
+      o.radius = 0.15;
+    } else if (i % 3 == 1) {
+      o.type = wpg::ObstacleType::kBox;
+      o.center = Eigen::Vector2d(x, y);
+      o.size = Eigen::Vector2d(0.3, 0.2);
+      o.yaw = 0.3;
+    } else {
+      o.type = wpg::ObstacleType::kPolygon;
+      o.vertices = {{x - 0.15, y - 0.1}, {x + 0.15, y - 0.1}, {x + 0.05, y + 0.15},
+                    {x - 0.1, y + 0.12}};
+    }
+    obstacles.push_back(o);
+  }
+  return obstacles;
+}
+
+TEST(NmpcAllocation, ObstacleWalkWithBoxesAndPolygons) {
+  if (!counterAvailable()) GTEST_SKIP() << "the allocation counter needs glibc (and no sanitizer)";
+  const WalkingParameters w;
+  GeneratorSettings settings;
+  settings.max_obstacles_in_qp = 4;
+  const Vector3d forward(0.2, 0.0, 0.0);
+  int with_obstacles = 0;
+  // The obstacles are given (that allocates) and walked among before the counted samples.
+  const LoopResult warm = countOverLoop(
+      w, settings, {{5, Vector3d::Zero()}}, {{40, forward}}, [&](PatternGenerator& generator) {
+        generator.setObstacles(corridor());
+        for (int k = 0; k < 40; ++k) runSample(generator, (5 + k) * w.sampling_period, forward);
+        with_obstacles = static_cast<int>((generator.problem().obstacle_slot.array() >= 0).count());
+      });
+  EXPECT_GE(with_obstacles, 2) << "the corridor should put obstacles in the QP";
+  expectNoAllocation(warm, "NMPC, corridor of circles, boxes and polygons");
+}
+
+// Relaxed iterations too: a large obstacle given on the landing spot of the swing foot makes
+// the QP infeasible, the obstacle rows are relaxed (three relaxation stages are tried at most).
+TEST(NmpcAllocation, RelaxedObstacleIterations) {
+  if (!counterAvailable()) GTEST_SKIP() << "the allocation counter needs glibc (and no sanitizer)";
+  const WalkingParameters w;
+  GeneratorSettings settings;
+  const Vector3d forward(0.2, 0.0, 0.0);
+  auto block_the_landing = [&](PatternGenerator& generator) {
+    std::vector<wpg::Obstacle> obstacles = corridor();
+    wpg::Obstacle wall;
+    wall.center = generator.plan().swing_target.head<2>() + Eigen::Vector2d(0.25, 0.0);
+    wall.radius = 0.3;
+    wall.margin = 0.05;
+    obstacles.push_back(wall);
+    generator.setObstacles(obstacles);
+  };
+  // Warm-up: the same situation once (every buffer of the relaxed solves touched), then again.
+  std::vector<int> statuses;
+  const LoopResult r = countOverLoop(
+      w, settings, {{40, forward}}, {{30, forward}},
+      [&](PatternGenerator& generator) {
+        block_the_landing(generator);
+        for (int k = 0; k < 30; ++k) runSample(generator, (40 + k) * w.sampling_period, forward);
+        block_the_landing(generator);
+      },
+      &statuses);
+  statuses.resize(8, 0);
+  EXPECT_GT(statuses[static_cast<int>(wpg::IterationStatus::kRelaxedObstacle)], 0)
+      << "the test should force relaxed iterations";
+  EXPECT_EQ(r.counts.allocations, 0) << "samples that allocated:" << r.where;
 }
 
 }  // namespace
