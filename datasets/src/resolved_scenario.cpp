@@ -11,6 +11,25 @@
 #include "yaml_input.hpp"
 
 namespace wpg::datasets::detail {
+namespace {
+
+// `key:` and the list `items`, one flow map per item (written by emit_item), so that each entry
+// stays on one line; an empty list is written `[]`.
+template <typename Item, typename EmitItem>
+void emitList(YAML::Emitter& out, const char* key, const std::vector<Item>& items,
+              EmitItem emit_item) {
+  out << YAML::Key << key << YAML::Value;
+  if (items.empty()) out << YAML::Flow;
+  out << YAML::BeginSeq;
+  for (const Item& item : items) {
+    out << YAML::Flow << YAML::BeginMap;
+    emit_item(item);
+    out << YAML::EndMap;
+  }
+  out << YAML::EndSeq;
+}
+
+}  // namespace
 
 std::string emitResolved(const Scenario& scenario) {
   const WalkRequest& request = scenario.request;
@@ -27,36 +46,18 @@ std::string emitResolved(const Scenario& scenario) {
   emitSettingFields(out, generatorSettingFields(), generator);
   out << YAML::EndMap;
 
-  out << YAML::Key << "reference" << YAML::Value;
-  if (request.reference.empty()) out << YAML::Flow;
-  out << YAML::BeginSeq;
-  for (const VelocityCommand& command : request.reference) {
-    out << YAML::Flow << YAML::BeginMap;
+  emitList(out, "reference", request.reference, [&out](const VelocityCommand& command) {
     out << YAML::Key << "t" << YAML::Value << formatNumber(command.t);
     out << YAML::Key << "v" << YAML::Value;
     emitNumbers(out, command.velocity.data(), 3);
-    out << YAML::EndMap;
-  }
-  out << YAML::EndSeq;
-
-  out << YAML::Key << "pushes" << YAML::Value;
-  if (request.pushes.empty()) out << YAML::Flow;
-  out << YAML::BeginSeq;
-  for (const Push& push : request.pushes) {
-    out << YAML::Flow << YAML::BeginMap;
+  });
+  emitList(out, "pushes", request.pushes, [&out](const Push& push) {
     out << YAML::Key << "t" << YAML::Value << formatNumber(push.t);
     out << YAML::Key << "force" << YAML::Value;
     emitNumbers(out, push.force.data(), 2);
     out << YAML::Key << "duration" << YAML::Value << formatNumber(push.duration);
-    out << YAML::EndMap;
-  }
-  out << YAML::EndSeq;
-
-  out << YAML::Key << "obstacles" << YAML::Value;
-  if (request.obstacles.empty()) out << YAML::Flow;
-  out << YAML::BeginSeq;
-  for (const Obstacle& obstacle : request.obstacles) {
-    out << YAML::Flow << YAML::BeginMap;
+  });
+  emitList(out, "obstacles", request.obstacles, [&out](const Obstacle& obstacle) {
     out << YAML::Key << "type" << YAML::Value << obstacleTypeName(obstacle.type);
     if (obstacle.type == ObstacleType::kPolygon) {
       out << YAML::Key << "vertices" << YAML::Value << YAML::Flow << YAML::BeginSeq;
@@ -75,9 +76,7 @@ std::string emitResolved(const Scenario& scenario) {
       out << YAML::Key << "yaw" << YAML::Value << formatNumber(obstacle.yaw);
     }
     out << YAML::Key << "margin" << YAML::Value << formatNumber(obstacle.margin);
-    out << YAML::EndMap;
-  }
-  out << YAML::EndSeq;
+  });
 
   out << YAML::Key << "replay" << YAML::Value << scenario.replay;
   out << YAML::Key << "filter" << YAML::Value << scenario.filter;
