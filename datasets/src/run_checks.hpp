@@ -16,8 +16,10 @@ namespace wpg::datasets::detail {
 
 // The landed footsteps against the obstacles, one entry per row of WalkTrajectory::footsteps.
 struct FootstepObstacleChecks {
-  // The step centres, with libwpg's exact 2-D distance: min over obstacles of
-  // sd(ankle, obstacle) - margin [m]; the obstacle of that minimum (-1 without obstacles).
+  // The step centres against the NMPC's obstacle constraint (eq. 18-19, the margin grown by the
+  // sole radius), with libwpg's exact 2-D distance: min over obstacles of
+  // sd(ankle, obstacle) - margin - parameters.obstacle_foot_radius [m], >= 0 when the constraint
+  // holds; the obstacle of that minimum (-1 without obstacles).
   std::vector<double> step_centre_clearance;
   std::vector<int> step_centre_clearance_obstacle;
   double min_step_centre_clearance = 0.0;  // +inf without footsteps

@@ -229,7 +229,9 @@ void writeObstacles(H5::Group& run, const std::vector<Obstacle>& obstacles) {
   writeDoubles(group, "yaw", yaws, 0, {"rad", "world", "orientation of a box", nullptr});
   writeDoubles(
       group, "margin", margins, 0,
-      {"m", nullptr, "security margin: no step centre closer than this to the obstacle (eq. 18-19)",
+      {"m", nullptr,
+       "security margin (eq. 18-19): the NMPC keeps step centres margin + the walking parameter "
+       "obstacle_foot_radius away from the obstacle",
        nullptr});
   writeDoubles(group, "vertices", vertices, 2,
                {"m", "world",
@@ -249,7 +251,8 @@ void writeObstacleChecks(H5::Group& checks, const FootstepObstacleChecks& steps,
   writeDoubles(checks, "step_centre_clearance", steps.step_centre_clearance, 0,
                {"m", nullptr,
                 "per footstep, min over obstacles of (signed distance of the ankle point to the "
-                "obstacle - margin): the NMPC's obstacle constraint, >= 0 when it holds",
+                "obstacle - margin - obstacle_foot_radius): the margin of the NMPC's obstacle "
+                "constraint (eq. 18-19), >= 0 when it holds",
                 nullptr});
   writeInts(checks, "step_centre_clearance_obstacle", steps.step_centre_clearance_obstacle,
             {"1", nullptr, "index (row of obstacles/) of the obstacle of step_centre_clearance",

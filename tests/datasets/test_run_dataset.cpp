@@ -129,7 +129,7 @@ TEST_F(RunDatasetFiles, WritesTheSchemaAndReadsBackTheSameNumbers) {
   EXPECT_TRUE(temporaryFiles().empty());
 
   const H5::H5File file(path, H5F_ACC_RDONLY);
-  EXPECT_EQ(intAttribute(file, "schema_version"), 1);
+  EXPECT_EQ(intAttribute(file, "schema_version"), 2);  // 2: step_centre_clearance redefined
   EXPECT_EQ(stringAttribute(file, "wpg_version"), WPG_VERSION_STRING);
   EXPECT_EQ(stringAttribute(file, "scenario"), scenario.resolved_yaml);
   EXPECT_EQ(stringAttribute(file, "created_by"), "wpg");
