@@ -3,7 +3,6 @@
 // naming the file and the key; the dataset stores the obstacles as a table under
 // /runs/<name>/obstacles/ and the footstep clearances under /runs/<name>/checks/, read back
 // with the plain HDF5 C++ API.
-#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
@@ -15,6 +14,7 @@
 #include <H5Cpp.h>
 
 #include "hdf5_read.hpp"
+#include "test_support.hpp"
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -30,9 +30,8 @@ using wpg::datasets::Scenario;
 
 namespace {
 
-const std::string kSourceDir = WPG_SOURCE_DIR;
-const std::string kRobotsDir = kSourceDir + "/robots";
-const std::string kScenariosDir = kSourceDir + "/datasets/scenarios";
+using wpg_test::kRobotsDir;
+using wpg_test::kScenariosDir;
 
 const char* const kHeader =
     "name: obstacle_test\n"
@@ -48,18 +47,9 @@ const char* const kExampleObstacles =
     "  - {type: box, center: [3.0, 1.0], size: [0.4, 0.6], yaw: 0.3, margin: 0.1}\n"
     "  - {type: polygon, vertices: [[4.0, -0.5], [4.6, -0.4], [4.3, 0.2]], margin: 0.1}\n";
 
-class ObstacleFiles : public ::testing::Test {
+class ObstacleFiles : public wpg_test::ScratchDirectoryTest {
  protected:
-  void SetUp() override {
-    static std::atomic<int> counter{0};
-    directory_ = fs::temp_directory_path() / ("wpg_test_obstacles_" + std::to_string(::getpid()) +
-                                              "_" + std::to_string(counter++));
-    fs::create_directories(directory_);
-  }
-  void TearDown() override {
-    std::error_code ec;
-    fs::remove_all(directory_, ec);
-  }
+  ObstacleFiles() : ScratchDirectoryTest("wpg_test_obstacles") {}
 
   std::string write(const std::string& text, const std::string& name = "scenario.yaml") {
     const std::string path = (directory_ / name).string();
@@ -86,8 +76,6 @@ class ObstacleFiles : public ::testing::Test {
     ADD_FAILURE() << "loaded without an error:\n" << obstacles_text;
     return "";
   }
-
-  fs::path directory_;
 };
 
 TEST_F(ObstacleFiles, ExampleOfTheIssueLoads) {
@@ -270,12 +258,6 @@ TEST(ShippedObstacleScenarios, LoadAndRoundTrip) {
 // --- the dataset ------------------------------------------------------------------------------
 
 using namespace wpg_test;  // HDF5 readers (hdf5_read.hpp)
-
-int intAttribute(const H5::H5Object& object, const std::string& name) {
-  int value = 0;
-  object.openAttribute(name).read(H5::PredType::NATIVE_INT, &value);
-  return value;
-}
 
 const std::vector<Eigen::Vector3d> kHandMadeSteps = {
     Eigen::Vector3d(0.0, 0.095, 0.0), Eigen::Vector3d(0.0, -0.095, 0.0),
