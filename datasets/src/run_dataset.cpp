@@ -1,15 +1,15 @@
 // Writing one run to HDF5 (layout and attribute names: datasets/SCHEMA.md). Written so that
 // h5py reads everything without code of ours: plain numeric datasets, time-major, with
 // `units` / `frame` / `description` attributes and variable-length UTF-8 string attributes.
+// This file lays out the groups and writes the file atomically; the HDF5 helpers are in
+// hdf5_writing.cpp, the values of the `checks` group and the timing summaries are computed in
+// run_checks.cpp.
 #include "wpg/datasets/run_dataset.hpp"
 
-#include <algorithm>
 #include <cerrno>
-#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
-#include <limits>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -17,8 +17,9 @@
 
 #include <H5Cpp.h>
 
+#include "hdf5_writing.hpp"
+#include "run_checks.hpp"
 #include "wpg/obstacles.hpp"
-#include "wpg/walk_checks.hpp"
 #include <unistd.h>
 
 #ifndef WPG_VERSION_STRING
@@ -35,112 +36,7 @@ std::mutex& hdf5Mutex() {
 namespace {
 
 namespace fs = std::filesystem;
-
-constexpr int kDeflateLevel = 4;
-constexpr hsize_t kChunkBytes = 64 * 1024;  // ~64 KiB per chunk: small files, fast reads
-
-// --- attributes -----------------------------------------------------------------------------
-
-void writeStringAttribute(H5::H5Object& object, const std::string& name,
-                          const std::string& value) {
-  H5::StrType type(H5::PredType::C_S1, H5T_VARIABLE);
-  type.setCset(H5T_CSET_UTF8);
-  H5::Attribute attribute = object.createAttribute(name, type, H5::DataSpace(H5S_SCALAR));
-  attribute.write(type, value);
-}
-
-void writeIntAttribute(H5::H5Object& object, const std::string& name, int value) {
-  H5::Attribute attribute =
-      object.createAttribute(name, H5::PredType::STD_I32LE, H5::DataSpace(H5S_SCALAR));
-  attribute.write(H5::PredType::NATIVE_INT, &value);
-}
-
-// A 1-D attribute of variable-length UTF-8 strings (h5py: an array of str).
-void writeStringListAttribute(H5::H5Object& object, const std::string& name,
-                              const std::vector<std::string>& values) {
-  H5::StrType type(H5::PredType::C_S1, H5T_VARIABLE);
-  type.setCset(H5T_CSET_UTF8);
-  const hsize_t count = values.size();
-  H5::Attribute attribute = object.createAttribute(name, type, H5::DataSpace(1, &count));
-  std::vector<const char*> pointers;
-  for (const std::string& value : values) pointers.push_back(value.c_str());
-  if (count > 0) attribute.write(type, pointers.data());
-}
-
-// --- datasets -------------------------------------------------------------------------------
-
-struct DatasetInfo {
-  const char* units;        // "s", "m", "m, m, m, rad" (one per column when they differ), "1"
-  const char* frame;        // "world", or nullptr where no frame applies
-  const char* description;  // one sentence
-  const char* columns;      // column names of a 2-D dataset, nullptr for 1-D
-};
-
-void describeDataset(H5::DataSet& dataset, const DatasetInfo& info) {
-  writeStringAttribute(dataset, "units", info.units);
-  if (info.frame) writeStringAttribute(dataset, "frame", info.frame);
-  writeStringAttribute(dataset, "description", info.description);
-  if (info.columns) writeStringAttribute(dataset, "columns", info.columns);
-}
-
-// rows x columns, row-major (time-major); columns == 0 makes a 1-D dataset of `rows`.
-// Chunked and compressed when it has rows; a 0-row dataset is contiguous (a chunk cannot be
-// larger than a fixed-size dataset) and nothing is written into it.
-H5::DataSet writeDataset(H5::Group& group, const std::string& name, const void* data,
-                         hsize_t rows, hsize_t columns, const H5::PredType& memory_type,
-                         const H5::PredType& file_type, const DatasetInfo& info) {
-  const int rank = columns == 0 ? 1 : 2;
-  const hsize_t dimensions[2] = {rows, columns};
-  const H5::DataSpace space(rank, dimensions);
-  H5::DSetCreatPropList properties;
-  if (rows > 0) {
-    const hsize_t row_bytes = std::max<hsize_t>(1, columns) * file_type.getSize();
-    const hsize_t chunk[2] = {std::min(rows, std::max<hsize_t>(1, kChunkBytes / row_bytes)),
-                              columns};
-    properties.setChunk(rank, chunk);
-    properties.setShuffle();
-    properties.setDeflate(kDeflateLevel);
-  }
-  H5::DataSet dataset = group.createDataSet(name, file_type, space, properties);
-  if (rows > 0) dataset.write(data, memory_type);
-  describeDataset(dataset, info);
-  return dataset;
-}
-
-void writeDoubles(H5::Group& group, const std::string& name, const std::vector<double>& values,
-                  hsize_t columns, const DatasetInfo& info) {
-  const hsize_t rows = columns == 0 ? values.size() : values.size() / columns;
-  writeDataset(group, name, values.data(), rows, columns, H5::PredType::NATIVE_DOUBLE,
-               H5::PredType::IEEE_F64LE, info);
-}
-
-void writeInts(H5::Group& group, const std::string& name, const std::vector<int>& values,
-               const DatasetInfo& info) {
-  writeDataset(group, name, values.data(), values.size(), 0, H5::PredType::NATIVE_INT,
-               H5::PredType::STD_I32LE, info);
-}
-
-H5::DataSet writeCodes(H5::Group& group, const std::string& name,
-                       const std::vector<std::uint8_t>& values, const DatasetInfo& info) {
-  return writeDataset(group, name, values.data(), values.size(), 0, H5::PredType::NATIVE_UINT8,
-                      H5::PredType::STD_U8LE, info);
-}
-
-template <int Size>
-std::vector<double> flatten(const std::vector<Eigen::Matrix<double, Size, 1>>& rows) {
-  std::vector<double> values;
-  values.reserve(rows.size() * Size);
-  for (const auto& row : rows) values.insert(values.end(), row.data(), row.data() + Size);
-  return values;
-}
-
-template <typename Row, typename Get>
-std::vector<double> column(const std::vector<Row>& rows, Get get) {
-  std::vector<double> values;
-  values.reserve(rows.size());
-  for (const Row& row : rows) values.push_back(get(row));
-  return values;
-}
+using namespace detail;  // NOLINT: the HDF5 helpers and the checks of this writer
 
 // "0=solved, 1=relaxed, ..." for every status libwpg names (iterationStatusName answers
 // "unknown" for codes outside the enum), plus any other code present in the data.
@@ -159,16 +55,22 @@ std::string statusCodes(const std::vector<std::uint8_t>& present) {
   return text;
 }
 
-// --- the file -------------------------------------------------------------------------------
+// --- the inputs, checked before anything is written -----------------------------------------
+
+// "writeRunDataset: <array> has <count> <unit>, expected <expected> (one per <per>)"
+void requireCount(const std::string& array, std::size_t count, std::size_t expected,
+                  const char* unit, const char* per) {
+  if (count != expected) {
+    throw std::invalid_argument("writeRunDataset: " + array + " has " + std::to_string(count) +
+                                " " + unit + ", expected " + std::to_string(expected) +
+                                " (one per " + per + ")");
+  }
+}
 
 void checkSizes(const WalkTrajectory& trajectory) {
   const std::size_t n = trajectory.time.size();
   const auto check = [n](const char* name, std::size_t rows) {
-    if (rows != n) {
-      throw std::invalid_argument("writeRunDataset: trajectory." + std::string(name) + " has " +
-                                  std::to_string(rows) + " rows, expected " + std::to_string(n) +
-                                  " (one per trajectory.time sample)");
-    }
+    requireCount(std::string("trajectory.") + name, rows, n, "rows", "trajectory.time sample");
   };
   check("com", trajectory.com.size());
   check("com_vel", trajectory.com_vel.size());
@@ -178,16 +80,18 @@ void checkSizes(const WalkTrajectory& trajectory) {
   check("right_foot", trajectory.right_foot.size());
   check("free_flyer_yaw", trajectory.free_flyer_yaw.size());
   check("support", trajectory.support.size());
+  if (trajectory.constraint_families.size() > static_cast<std::size_t>(kMaxConstraintFamilies)) {
+    throw std::invalid_argument("trajectory.constraint_families: expected at most " +
+                                std::to_string(kMaxConstraintFamilies) + " families, got " +
+                                std::to_string(trajectory.constraint_families.size()));
+  }
 }
 
 void checkClearanceSizes(const FootstepClearances& clearances, const WalkTrajectory& trajectory) {
   const std::size_t m = trajectory.footsteps.size();
   const auto check = [m](const char* name, std::size_t rows) {
-    if (rows != m) {
-      throw std::invalid_argument("writeRunDataset: clearances." + std::string(name) + " has " +
-                                  std::to_string(rows) + " entries, expected " + std::to_string(m) +
-                                  " (one per trajectory.footsteps row)");
-    }
+    requireCount(std::string("clearances.") + name, rows, m, "entries",
+                 "trajectory.footsteps row");
   };
   check("clearance", clearances.clearance.size());
   check("clearance_obstacle", clearances.clearance_obstacle.size());
@@ -256,7 +160,15 @@ void writeTrajectory(H5::Group& run, const WalkTrajectory& trajectory) {
   writeStringAttribute(side_set, "codes", "1=left, 2=right");
 }
 
-void writeMpcLog(H5::Group& run, const std::vector<MpcIterationLog>& log) {
+// The NMPC's constraint families as the per-iteration slacks name them; a trajectory made by
+// hand without them gets one column named "unknown".
+std::vector<ConstraintFamilyInfo> slackColumns(const WalkTrajectory& trajectory) {
+  if (!trajectory.constraint_families.empty()) return trajectory.constraint_families;
+  return {ConstraintFamilyInfo{"unknown", "m or rad", "unknown"}};
+}
+
+void writeMpcLog(H5::Group& run, const WalkTrajectory& trajectory) {
+  const std::vector<MpcIterationLog>& log = trajectory.mpc;
   H5::Group mpc = run.createGroup("mpc");
   writeDoubles(mpc, "time", column(log, [](const MpcIterationLog& r) { return r.time; }), 0,
                {"s", nullptr, "time of each NMPC iteration (one per sampling period)", nullptr});
@@ -281,16 +193,34 @@ void writeMpcLog(H5::Group& run, const std::vector<MpcIterationLog>& log) {
   writeStringAttribute(status_set, "codes", statusCodes(status));
   writeDoubles(mpc, "cost", column(log, [](const MpcIterationLog& r) { return r.cost; }), 0,
                {"1", nullptr, "value of the NMPC cost (eq. 5) at the applied solution", nullptr});
-  writeDoubles(mpc, "slack", column(log, [](const MpcIterationLog& r) { return r.maxSlack(); }), 0,
-               {"m or rad", nullptr,
-                "largest constraint relaxation when the QP was relaxed (status 1), else 0",
-                nullptr});
-}
-
-void writeDoubleAttribute(H5::H5Object& object, const std::string& name, double value) {
-  H5::Attribute attribute =
-      object.createAttribute(name, H5::PredType::IEEE_F64LE, H5::DataSpace(H5S_SCALAR));
-  attribute.write(H5::PredType::NATIVE_DOUBLE, &value);
+  // One slack column per constraint family, each in its family's unit (relaxation stages:
+  // libwpg/include/wpg/nmpc/solver.hpp), and the bit mask of the families that gave way.
+  const std::vector<ConstraintFamilyInfo> families = slackColumns(trajectory);
+  std::string names, units, groups;
+  for (const ConstraintFamilyInfo& family : families) {
+    names += (names.empty() ? "" : ", ") + family.name;
+    units += (units.empty() ? "" : ", ") + family.unit;
+    groups += (groups.empty() ? "" : ", ") + family.group;
+  }
+  std::vector<double> slack;
+  std::vector<std::uint8_t> relaxed;
+  slack.reserve(log.size() * families.size());
+  for (const MpcIterationLog& row : log) {
+    for (std::size_t k = 0; k < families.size(); ++k) slack.push_back(row.slack[k]);
+    relaxed.push_back(static_cast<std::uint8_t>(row.relaxed_families));
+  }
+  H5::DataSet slack_set = writeDataset(
+      mpc, "slack", slack.data(), log.size(), families.size(), H5::PredType::NATIVE_DOUBLE,
+      H5::PredType::IEEE_F64LE,
+      {units.c_str(), nullptr,
+       "relaxation slack of each constraint family when the QP was infeasible (one column per "
+       "family, in its unit), else 0",
+       names.c_str()});
+  writeStringAttribute(slack_set, "groups", groups);
+  writeCodes(mpc, "relaxed_families", relaxed,
+             {"1", nullptr,
+              "bit k set when constraint family k (column k of slack) had to be relaxed",
+              nullptr});
 }
 
 // The scenario's obstacles as a table (one row per obstacle, in the scenario's order), so that
@@ -336,7 +266,9 @@ void writeObstacles(H5::Group& run, const std::vector<Obstacle>& obstacles) {
   writeDoubles(group, "yaw", yaws, 0, {"rad", "world", "orientation of a box", nullptr});
   writeDoubles(
       group, "margin", margins, 0,
-      {"m", nullptr, "security margin: no step centre closer than this to the obstacle (eq. 18-19)",
+      {"m", nullptr,
+       "security margin (eq. 18-19): the NMPC keeps step centres margin + the walking parameter "
+       "obstacle_foot_radius away from the obstacle",
        nullptr});
   writeDoubles(group, "vertices", vertices, 2,
                {"m", "world",
@@ -349,37 +281,20 @@ void writeObstacles(H5::Group& run, const std::vector<Obstacle>& obstacles) {
             {"1", nullptr, "rows of each obstacle's outline in vertices (0 for circles)", nullptr});
 }
 
-// Footsteps against the obstacles (when there are any): the step centres here, with libwpg's
-// exact 2-D distance (the constraint the NMPC enforces); the soles from the caller's FCL world.
-void writeObstacleChecks(H5::Group& checks, const std::vector<Obstacle>& obstacles,
-                         const WalkTrajectory& trajectory, const FootstepClearances* clearances) {
-  if (obstacles.empty()) return;
-  const AnalyticObstacleDistance distance(obstacles);
-  const double infinity = std::numeric_limits<double>::infinity();
-  std::vector<double> centre(trajectory.footsteps.size(), infinity);
-  std::vector<int> centre_obstacle(trajectory.footsteps.size(), -1);
-  double min_centre = infinity;
-  for (std::size_t s = 0; s < trajectory.footsteps.size(); ++s) {
-    const Eigen::Vector2d ankle = trajectory.footsteps[s].pose.head<2>();
-    for (int i = 0; i < distance.obstacleCount(); ++i) {
-      const double value = distance.signedDistance(i, ankle, nullptr) -
-                           obstacles[static_cast<std::size_t>(i)].margin;
-      if (value < centre[s]) {
-        centre[s] = value;
-        centre_obstacle[s] = i;
-      }
-    }
-    min_centre = std::min(min_centre, centre[s]);
-  }
-  writeDoubles(checks, "step_centre_clearance", centre, 0,
+// Footsteps against the obstacles (when there are any): the step centres computed by
+// run_checks.cpp with libwpg's exact 2-D distance; the soles from the caller's FCL world.
+void writeObstacleChecks(H5::Group& checks, const FootstepObstacleChecks& steps,
+                         const FootstepClearances* clearances) {
+  writeDoubles(checks, "step_centre_clearance", steps.step_centre_clearance, 0,
                {"m", nullptr,
                 "per footstep, min over obstacles of (signed distance of the ankle point to the "
-                "obstacle - margin): the NMPC's obstacle constraint, >= 0 when it holds",
+                "obstacle - margin - obstacle_foot_radius): the margin of the NMPC's obstacle "
+                "constraint (eq. 18-19), >= 0 when it holds",
                 nullptr});
-  writeInts(checks, "step_centre_clearance_obstacle", centre_obstacle,
+  writeInts(checks, "step_centre_clearance_obstacle", steps.step_centre_clearance_obstacle,
             {"1", nullptr, "index (row of obstacles/) of the obstacle of step_centre_clearance",
              nullptr});
-  writeDoubleAttribute(checks, "min_step_centre_clearance", min_centre);
+  writeDoubleAttribute(checks, "min_step_centre_clearance", steps.min_step_centre_clearance);
   if (!clearances) return;
   writeDoubles(checks, "step_clearance", clearances->clearance, 0,
                {"m", nullptr,
@@ -393,20 +308,14 @@ void writeObstacleChecks(H5::Group& checks, const std::vector<Obstacle>& obstacl
                 "per footstep, min over obstacles of the signed distance between the sole "
                 "rectangle and the obstacle itself (margin not counted); < 0: the foot touches it",
                 nullptr});
-  const auto minimum = [infinity](const std::vector<double>& values) {
-    double value = infinity;
-    for (const double v : values) value = std::min(value, v);
-    return value;
-  };
-  writeDoubleAttribute(checks, "min_step_clearance", minimum(clearances->clearance));
-  writeDoubleAttribute(checks, "min_step_foot_distance", minimum(clearances->foot_distance));
+  writeDoubleAttribute(checks, "min_step_clearance", steps.min_step_clearance);
+  writeDoubleAttribute(checks, "min_step_foot_distance", steps.min_step_foot_distance);
 }
 
-// Physical invariants of the walk (libwpg/walk_checks.hpp), so that a dataset says whether
-// it is sound without any code of ours.
-void writeChecks(H5::Group& run, const Scenario& scenario, const WalkTrajectory& trajectory,
-                 const FootstepClearances* clearances) {
-  const WalkCheckReport report = checkWalk(scenario.walking, trajectory);
+// Physical invariants of the walk (run_checks.hpp), so that a dataset says whether it is sound
+// without any code of ours.
+void writeChecks(H5::Group& run, const RunChecks& checked, const FootstepClearances* clearances) {
+  const WalkCheckReport& report = checked.walk;
   H5::Group checks = run.createGroup("checks");
   writeStringAttribute(checks, "description",
                        "invariants of the walk; distances in m (<= 0: inside), yaw in rad, "
@@ -420,15 +329,7 @@ void writeChecks(H5::Group& run, const Scenario& scenario, const WalkTrajectory&
   writeDoubleAttribute(checks, "max_step_yaw_change", report.max_step_yaw_change);
   writeIntAttribute(checks, "landed_steps", report.landed_steps);
   writeDoubleAttribute(checks, "speed_after_two_steps", report.speed_after_two_steps);
-  writeObstacleChecks(checks, scenario.request.obstacles, trajectory, clearances);
-}
-
-// An Eigen matrix as a time-major (row-major) vector; a 1-column matrix stays 2-D.
-std::vector<double> rowMajor(const Eigen::MatrixXd& matrix) {
-  std::vector<double> values(static_cast<std::size_t>(matrix.size()));
-  Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
-      values.data(), matrix.rows(), matrix.cols()) = matrix;
-  return values;
+  if (checked.has_obstacles) writeObstacleChecks(checks, checked.footsteps, clearances);
 }
 
 std::string joined(const std::vector<std::string>& names) {
@@ -537,15 +438,11 @@ void writeMultibody(H5::Group& run, const Scenario& scenario, const MultibodyVal
   writeDoubles(timing, "chain_stage_time", rowMajor(mb.chain_stage_time), 4,
                {"s", nullptr, "wall time of each stage of the chain in each NMPC iteration",
                 "nmpc, ik, multibody_zmp, filter"});
-  const Eigen::Index k = chain.size();
-  const double average = k > 0 ? chain.mean() : 0.0;
-  const double std_dev =
-      k > 1 ? std::sqrt((chain.array() - average).square().sum() / static_cast<double>(k - 1))
-            : 0.0;
-  writeDoubleAttribute(timing, "chain_time_average", average);
-  writeDoubleAttribute(timing, "chain_time_std", std_dev);
-  writeDoubleAttribute(timing, "chain_time_min", k > 0 ? chain.minCoeff() : 0.0);
-  writeDoubleAttribute(timing, "chain_time_max", k > 0 ? chain.maxCoeff() : 0.0);
+  const TimeStatistics statistics = timeStatistics(chain);
+  writeDoubleAttribute(timing, "chain_time_average", statistics.average);
+  writeDoubleAttribute(timing, "chain_time_std", statistics.std_dev);
+  writeDoubleAttribute(timing, "chain_time_min", statistics.min);
+  writeDoubleAttribute(timing, "chain_time_max", statistics.max);
 }
 
 void writeFile(const std::string& file_path, const Scenario& scenario, const WalkResult& result,
@@ -564,9 +461,9 @@ void writeFile(const std::string& file_path, const Scenario& scenario, const Wal
   writeStringAttribute(run, "message", result.message);
   writeStringAttribute(run, "robot", scenario.robot);
   writeTrajectory(run, result.trajectory);
-  writeMpcLog(run, result.trajectory.mpc);
+  writeMpcLog(run, result.trajectory);
   writeObstacles(run, scenario.request.obstacles);
-  writeChecks(run, scenario, result.trajectory, clearances);
+  writeChecks(run, computeRunChecks(scenario, result.trajectory, clearances), clearances);
   if (multibody) writeMultibody(run, scenario, *multibody);
   file.close();  // inside the try of the caller: a failed flush is an error, not a warning
 }

@@ -207,7 +207,38 @@ StoredRun readFile(const std::string& path, const std::string& run_name) {
   };
   const std::vector<double> solve_time = per_iteration("solve_time");
   const std::vector<double> cost = per_iteration("cost");
-  const std::vector<double> slack = per_iteration("slack");
+  // slack: one column per constraint family, named by its `columns` attribute (with `units`
+  // and `groups` in the same order)
+  const auto split = [](const std::string& text) {
+    std::vector<std::string> items;
+    std::size_t start = 0;
+    while (start <= text.size()) {
+      const std::size_t end = std::min(text.find(", ", start), text.size());
+      items.push_back(text.substr(start, end - start));
+      start = end + 2;
+    }
+    return items;
+  };
+  if (!mpc.nameExists("slack")) log_reader.fail("dataset " + run_path + "/mpc/slack is missing");
+  const H5::DataSet slack_set = mpc.openDataSet("slack");
+  const std::string where = run_path + "/mpc/slack ";
+  const std::vector<std::string> columns = split(log_reader.stringAttribute(slack_set, "columns", where));
+  const std::vector<std::string> units = split(log_reader.stringAttribute(slack_set, "units", where));
+  const std::vector<std::string> groups = split(log_reader.stringAttribute(slack_set, "groups", where));
+  if (columns.size() > static_cast<std::size_t>(kMaxConstraintFamilies) ||
+      units.size() != columns.size() || groups.size() != columns.size()) {
+    log_reader.fail("dataset " + run_path + "/mpc/slack: expected 1 to " +
+                    std::to_string(kMaxConstraintFamilies) +
+                    " columns with as many units and groups");
+  }
+  const std::size_t families = columns.size();
+  std::vector<double> slack = log_reader.doubles("slack", families, &rows);
+  log_reader.expectRows("slack", rows, k);
+  if (!(families == 1 && columns[0] == "unknown")) {
+    for (std::size_t f = 0; f < families; ++f)
+      t.constraint_families.push_back({columns[f], units[f], groups[f]});
+  }
+  const std::vector<int> relaxed = log_reader.codes("relaxed_families", k, 0, 255);
   const std::vector<int> qp_iterations = log_reader.integers("qp_iterations", &rows);
   log_reader.expectRows("qp_iterations", rows, k);
   const std::vector<int> sqp_iterations = log_reader.integers("sqp_iterations", &rows);
@@ -225,7 +256,8 @@ StoredRun readFile(const std::string& path, const std::string& run_name) {
     row.sqp_iterations = sqp_iterations[i];
     row.status = static_cast<IterationStatus>(status[i]);
     row.cost = cost[i];
-    row.slack[0] = slack[i];
+    for (std::size_t f = 0; f < families; ++f) row.slack[f] = slack[i * families + f];
+    row.relaxed_families = static_cast<std::uint32_t>(relaxed[i]);
     t.mpc.push_back(row);
   }
   return stored;

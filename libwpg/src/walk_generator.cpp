@@ -43,6 +43,7 @@ WalkResult generateWalk(const WalkingParameters& parameters, const WalkRequest& 
   WalkResult result;
   WalkTrajectory& out = result.trajectory;
   out.reserve(static_cast<std::size_t>(iterations) * sub_samples + 1, iterations);
+  out.constraint_families = generator.model().familyInfo();
   out.footsteps.push_back({0.0, generator.footPose(FootSide::kLeft), FootSide::kLeft});
   out.footsteps.push_back({0.0, generator.footPose(FootSide::kRight), FootSide::kRight});
 

@@ -12,7 +12,10 @@ import numpy as np
 SAMPLES = {"time": (), "com": (3,), "com_vel": (3,), "com_acc": (3,), "cop": (2,),
            "left_foot": (4,), "right_foot": (4,), "free_flyer_yaw": (), "support": ()}
 STEPS = {"footsteps": (4,), "footstep_side": ()}
-MPC = ("time", "solve_time", "qp_iterations", "sqp_iterations", "status", "cost", "slack")
+MPC = ("time", "solve_time", "qp_iterations", "sqp_iterations", "status", "cost",
+       "relaxed_families")
+# the NMPC's constraint families, one slack column each (libwpg/include/wpg/nmpc.hpp)
+FAMILIES = "cop, step_feasibility, yaw_bound, obstacle"
 ROOT_ATTRS = ("schema_version", "wpg_version", "scenario")
 
 errors = []
@@ -70,6 +73,18 @@ def main():
                     if check(key in mpc, "%s/mpc/%s missing" % (where, key)):
                         check(mpc[key].shape == (k,), "%s/mpc/%s shape %s, expected %s"
                               % (where, key, mpc[key].shape, (k,)))
+                slack = mpc.get("slack")
+                if check(slack is not None, where + "/mpc/slack missing"):
+                    check(slack.attrs.get("columns") == FAMILIES,
+                          "%s/mpc/slack columns %r, expected %r"
+                          % (where, slack.attrs.get("columns"), FAMILIES))
+                    check(slack.shape == (k, 4), "%s/mpc/slack shape %s, expected %s"
+                          % (where, slack.shape, (k, 4)))
+                    check(np.all(slack[()] >= 0), where + "/mpc/slack negative")
+                    relaxed = mpc["relaxed_families"][()]
+                    # a family's bit is set exactly when its slack is positive (above rounding)
+                    check(np.array_equal((slack[()] > 1e-9).any(axis=1), relaxed != 0),
+                          where + "/mpc/relaxed_families disagrees with slack")
 
 
 if __name__ == "__main__":

@@ -2,7 +2,6 @@
 // identical with the plain HDF5 C++ API, with units, descriptions and the summary attributes;
 // inconsistent sizes are rejected before writing; and readRunDataset gives back the walk that
 // was written, or a one-line InputError for a bad file.
-#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
@@ -13,8 +12,9 @@
 #include <H5Cpp.h>
 
 #include "hdf5_read.hpp"
+#include "hand_made_run.hpp"
+#include "test_support.hpp"
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include "wpg/datasets/run_dataset.hpp"
 #include "wpg/datasets/run_dataset_reader.hpp"
@@ -37,40 +37,9 @@ Scenario handMadeScenario() {
   return scenario;
 }
 
-// Distinct values everywhere, so that a swapped column or a transposition shows.
+// Distinct values everywhere (hand_made_run.hpp), five footsteps, a failed walk.
 wpg::WalkResult handMadeResult(std::size_t samples, std::size_t iterations) {
-  wpg::WalkResult result;
-  wpg::WalkTrajectory& t = result.trajectory;
-  for (std::size_t i = 0; i < samples; ++i) {
-    const double k = static_cast<double>(i);
-    t.time.push_back(0.005 * k);
-    t.com.emplace_back(k + 0.1, k + 0.2, 0.814 + k * 1e-3);
-    t.com_vel.emplace_back(k + 1.1, k + 1.2, k + 1.3);
-    t.com_acc.emplace_back(k + 2.1, k + 2.2, k + 2.3);
-    t.cop.emplace_back(k + 3.1, k + 3.2);
-    t.left_foot.emplace_back(k + 4.1, k + 4.2, k + 4.3, k + 4.4);
-    t.right_foot.emplace_back(k + 5.1, k + 5.2, k + 5.3, k + 5.4);
-    t.free_flyer_yaw.push_back(k + 6.1);
-    t.support.push_back(static_cast<wpg::SupportState>(i % 3));
-  }
-  for (std::size_t j = 0; j < 5; ++j) {
-    wpg::Footstep step;
-    step.landing_time = 0.8 * static_cast<double>(j);
-    step.pose = Eigen::Vector3d(0.1 * j, j % 2 ? -0.095 : 0.095, 0.01 * j);
-    step.side = j % 2 ? wpg::FootSide::kRight : wpg::FootSide::kLeft;
-    t.footsteps.push_back(step);
-  }
-  for (std::size_t m = 0; m < iterations; ++m) {
-    wpg::MpcIterationLog log;
-    log.time = 0.1 * static_cast<double>(m);
-    log.solve_time = 1e-3 * (1.0 + m);
-    log.qp_iterations = static_cast<int>(3 + m);
-    log.sqp_iterations = static_cast<int>(1 + m % 2);
-    log.status = static_cast<wpg::IterationStatus>(m % 4);
-    log.cost = 10.0 + m;
-    log.slack[0] = m % 4 == 1 ? 0.01 : 0.0;
-    t.mpc.push_back(log);
-  }
+  wpg::WalkResult result = wpg_test::handMadeResult(samples, 5, iterations);
   result.success = false;
   result.message = "iteration 2: fallback";
   return result;
@@ -121,35 +90,15 @@ void expectMatrix(const Eigen::MatrixXd& expected, const H5::Group& group,
 }
 
 
-class MultibodyDatasetFiles : public ::testing::Test {
+class MultibodyDatasetFiles : public wpg_test::ScratchDirectoryTest {
  protected:
-  void SetUp() override {
-    static std::atomic<int> counter{0};
-    directory_ = fs::temp_directory_path() /
-                 ("wpg_test_multibody_dataset_" + std::to_string(::getpid()) + "_" +
-                  std::to_string(counter++));
-    fs::create_directories(directory_);
-  }
-  void TearDown() override {
-    std::error_code ec;
-    fs::remove_all(directory_, ec);
-  }
+  MultibodyDatasetFiles() : ScratchDirectoryTest("wpg_test_multibody_dataset") {}
   std::string path(const std::string& name) const { return (directory_ / name).string(); }
 
   // Loading `file` must throw one InputError line holding the file and `part`.
   static void expectBadFile(const std::string& file, const std::string& part) {
-    try {
-      readRunDataset(file);
-      ADD_FAILURE() << "no InputError for " << file;
-    } catch (const InputError& error) {
-      const std::string message = error.what();
-      EXPECT_NE(message.find(file), std::string::npos) << message;
-      EXPECT_NE(message.find(part), std::string::npos) << "'" << part << "' missing in: " << message;
-      EXPECT_EQ(message.find('\n'), std::string::npos) << message;
-    }
+    wpg_test::expectInputError([&] { readRunDataset(file); }, file, {part});
   }
-
-  fs::path directory_;
 };
 
 TEST_F(MultibodyDatasetFiles, FilteredReplayReadsBackWithUnitsAndSummary) {
@@ -293,6 +242,13 @@ TEST_F(MultibodyDatasetFiles, ReaderGivesBackTheWalk) {
     EXPECT_EQ(b.mpc[m].status, a.mpc[m].status);
     EXPECT_EQ(b.mpc[m].cost, a.mpc[m].cost);
     EXPECT_EQ(b.mpc[m].slack, a.mpc[m].slack);
+    EXPECT_EQ(b.mpc[m].relaxed_families, a.mpc[m].relaxed_families);
+  }
+  ASSERT_EQ(b.constraint_families.size(), a.constraint_families.size());
+  for (std::size_t f = 0; f < a.constraint_families.size(); ++f) {
+    EXPECT_EQ(b.constraint_families[f].name, a.constraint_families[f].name);
+    EXPECT_EQ(b.constraint_families[f].unit, a.constraint_families[f].unit);
+    EXPECT_EQ(b.constraint_families[f].group, a.constraint_families[f].group);
   }
   // Written again from what was read: the same file content (the walk round-trips).
   writeRunDataset(path("again.h5"), handMadeScenario(), stored.result, nullptr, &v);

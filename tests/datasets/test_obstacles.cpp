@@ -3,7 +3,6 @@
 // naming the file and the key; the dataset stores the obstacles as a table under
 // /runs/<name>/obstacles/ and the footstep clearances under /runs/<name>/checks/, read back
 // with the plain HDF5 C++ API.
-#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
@@ -15,6 +14,7 @@
 #include <H5Cpp.h>
 
 #include "hdf5_read.hpp"
+#include "test_support.hpp"
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -30,9 +30,8 @@ using wpg::datasets::Scenario;
 
 namespace {
 
-const std::string kSourceDir = WPG_SOURCE_DIR;
-const std::string kRobotsDir = kSourceDir + "/robots";
-const std::string kScenariosDir = kSourceDir + "/datasets/scenarios";
+using wpg_test::kRobotsDir;
+using wpg_test::kScenariosDir;
 
 const char* const kHeader =
     "name: obstacle_test\n"
@@ -48,18 +47,9 @@ const char* const kExampleObstacles =
     "  - {type: box, center: [3.0, 1.0], size: [0.4, 0.6], yaw: 0.3, margin: 0.1}\n"
     "  - {type: polygon, vertices: [[4.0, -0.5], [4.6, -0.4], [4.3, 0.2]], margin: 0.1}\n";
 
-class ObstacleFiles : public ::testing::Test {
+class ObstacleFiles : public wpg_test::ScratchDirectoryTest {
  protected:
-  void SetUp() override {
-    static std::atomic<int> counter{0};
-    directory_ = fs::temp_directory_path() / ("wpg_test_obstacles_" + std::to_string(::getpid()) +
-                                              "_" + std::to_string(counter++));
-    fs::create_directories(directory_);
-  }
-  void TearDown() override {
-    std::error_code ec;
-    fs::remove_all(directory_, ec);
-  }
+  ObstacleFiles() : ScratchDirectoryTest("wpg_test_obstacles") {}
 
   std::string write(const std::string& text, const std::string& name = "scenario.yaml") {
     const std::string path = (directory_ / name).string();
@@ -86,8 +76,6 @@ class ObstacleFiles : public ::testing::Test {
     ADD_FAILURE() << "loaded without an error:\n" << obstacles_text;
     return "";
   }
-
-  fs::path directory_;
 };
 
 TEST_F(ObstacleFiles, ExampleOfTheIssueLoads) {
@@ -271,14 +259,12 @@ TEST(ShippedObstacleScenarios, LoadAndRoundTrip) {
 
 using namespace wpg_test;  // HDF5 readers (hdf5_read.hpp)
 
-int intAttribute(const H5::H5Object& object, const std::string& name) {
-  int value = 0;
-  object.openAttribute(name).read(H5::PredType::NATIVE_INT, &value);
-  return value;
-}
+const std::vector<Eigen::Vector3d> kHandMadeSteps = {
+    Eigen::Vector3d(0.0, 0.095, 0.0), Eigen::Vector3d(0.0, -0.095, 0.0),
+    Eigen::Vector3d(1.0, 0.1, 0.0), Eigen::Vector3d(2.8, 0.9, 0.2)};
 
-// A short hand-made walk: four footsteps at known places, samples of matching length.
-wpg::WalkResult handMadeWalk() {
+// A short hand-made walk: footsteps at known places (x, y, yaw), samples of matching length.
+wpg::WalkResult handMadeWalk(const std::vector<Eigen::Vector3d>& steps = kHandMadeSteps) {
   wpg::WalkResult result;
   wpg::WalkTrajectory& t = result.trajectory;
   for (int i = 0; i < 10; ++i) {
@@ -292,9 +278,7 @@ wpg::WalkResult handMadeWalk() {
     t.free_flyer_yaw.push_back(0.0);
     t.support.push_back(wpg::SupportState::kDouble);
   }
-  for (const Eigen::Vector3d pose :
-       {Eigen::Vector3d(0.0, 0.095, 0.0), Eigen::Vector3d(0.0, -0.095, 0.0),
-        Eigen::Vector3d(1.0, 0.1, 0.0), Eigen::Vector3d(2.8, 0.9, 0.2)}) {
+  for (const Eigen::Vector3d& pose : steps) {
     wpg::Footstep step;
     step.pose = pose;
     t.footsteps.push_back(step);
@@ -352,20 +336,51 @@ TEST_F(ObstacleFiles, DatasetHoldsTheObstacleTableAndTheFootstepChecks) {
   EXPECT_EQ(readDoubles(checks, "step_foot_distance"), clearances.foot_distance);
   EXPECT_EQ(doubleAttribute(checks, "min_step_clearance"), -0.05);
   EXPECT_EQ(doubleAttribute(checks, "min_step_foot_distance"), 0.11);
-  // Centres computed by the writer: the initial feet and (1, 0.1) are nearest to the circle,
-  // (2.8, 0.9) to the box (0.2 m from its centre along its short axis... inside it).
+  // Centres computed by the writer against the NMPC's constraint, d >= margin + the sole radius:
+  // the initial feet and (1, 0.1) are nearest to the circle, (2.8, 0.9) to the box (0.2 m from
+  // its centre along its short axis... inside it).
+  const double foot = scenario.walking.obstacle_foot_radius;
+  ASSERT_GT(foot, 0.0);  // HRP-2's sole half diagonal
   const wpg::AnalyticObstacleDistance exact(scenario.request.obstacles);
   const std::vector<double> centre = readDoubles(checks, "step_centre_clearance");
   const std::vector<int> centre_obstacle = readInts(checks, "step_centre_clearance_obstacle");
   ASSERT_EQ(centre.size(), 4u);
-  EXPECT_NEAR(centre[0], std::hypot(1.5, 0.095) - 0.3 - 0.2, 1e-12);
-  EXPECT_NEAR(centre[2], std::hypot(0.5, 0.1) - 0.3 - 0.2, 1e-12);
+  EXPECT_NEAR(centre[0], std::hypot(1.5, 0.095) - 0.3 - 0.2 - foot, 1e-12);
+  EXPECT_NEAR(centre[2], std::hypot(0.5, 0.1) - 0.3 - 0.2 - foot, 1e-12);
   EXPECT_EQ(centre_obstacle[2], 0);
-  EXPECT_NEAR(centre[3], exact.signedDistance(1, {2.8, 0.9}, nullptr) - 0.1, 1e-12);
+  EXPECT_NEAR(centre[3], exact.signedDistance(1, {2.8, 0.9}, nullptr) - 0.1 - foot, 1e-12);
   EXPECT_LT(centre[3], 0.0);
   EXPECT_EQ(centre_obstacle[3], 1);
   EXPECT_EQ(doubleAttribute(checks, "min_step_centre_clearance"), centre[3]);
   EXPECT_EQ(stringAttribute(checks.openDataSet("step_clearance"), "units"), "m");
+}
+
+// The NMPC keeps a step centre margin + obstacle_foot_radius from an obstacle (nmpc.cpp's
+// obstacle rows): a step between the two distances violates the constraint and must read < 0
+// (schema 1 stored sd - margin, which read such a step as "holds").
+TEST_F(ObstacleFiles, StepCentreClearanceIsTheMarginOfTheNmpcConstraint) {
+  // One circle at (1.5, 0), radius 0.3, margin 0.2: its margin ends 0.5 m from the centre.
+  const Scenario scenario =
+      load("obstacles:\n  - {type: circle, center: [1.5, 0.0], radius: 0.3, margin: 0.2}\n");
+  const double foot = scenario.walking.obstacle_foot_radius;
+  ASSERT_GT(foot, 0.05);
+  const double inside = 0.5 + 0.5 * foot;   // past the margin, inside margin + foot radius
+  const double outside = 0.5 + foot + 0.03;  // clear of both
+  const std::vector<Eigen::Vector3d> steps = {
+      Eigen::Vector3d(0.0, 0.095, 0.0), Eigen::Vector3d(0.0, -0.095, 0.0),
+      Eigen::Vector3d(1.5 - inside, 0.0, 0.0), Eigen::Vector3d(1.5, outside, 0.0)};
+  const std::string path = (directory_ / "run.h5").string();
+  wpg::datasets::writeRunDataset(path, scenario, handMadeWalk(steps));
+
+  const H5::H5File file(path, H5F_ACC_RDONLY);
+  const H5::Group checks = file.openGroup("/runs/obstacle_test/checks");
+  const std::vector<double> centre = readDoubles(checks, "step_centre_clearance");
+  ASSERT_EQ(centre.size(), 4u);
+  EXPECT_NEAR(centre[2], -0.5 * foot, 1e-12);  // sd - margin = +0.5 foot: "holds" in schema 1
+  EXPECT_LT(centre[2], 0.0);
+  EXPECT_NEAR(centre[3], 0.03, 1e-12);
+  EXPECT_EQ(doubleAttribute(checks, "min_step_centre_clearance"), centre[2]);
+  EXPECT_EQ(intAttribute(file, "schema_version"), 2);  // the field's meaning changed in 2
 }
 
 TEST_F(ObstacleFiles, WithoutClearancesOnlyTheCentresAreChecked) {

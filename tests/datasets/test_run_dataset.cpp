@@ -1,7 +1,6 @@
 // Run datasets: a hand-made WalkResult written to HDF5 reads back identical with the HDF5 C++
 // API (no code of ours in the reader), with the contract's names, units and attributes; the
 // write is atomic and cleans up after itself.
-#include <atomic>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -11,8 +10,9 @@
 #include <H5Cpp.h>
 
 #include "hdf5_read.hpp"
+#include "hand_made_run.hpp"
+#include "test_support.hpp"
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include "wpg/datasets/run_dataset.hpp"
 
@@ -24,6 +24,8 @@ namespace {
 
 // --- a hand-made run (no generateWalk: libwpg's NMPC is not needed here) ---------------------
 
+using wpg_test::handMadeResult;
+
 Scenario handMadeScenario() {
   Scenario scenario;
   scenario.name = "hand_made";
@@ -34,63 +36,13 @@ Scenario handMadeScenario() {
   return scenario;
 }
 
-// Distinct values everywhere, so that a swapped column or a transposition shows.
-wpg::WalkResult handMadeResult(std::size_t samples, std::size_t steps, std::size_t iterations,
-                               double offset = 0.0) {
-  wpg::WalkResult result;
-  wpg::WalkTrajectory& t = result.trajectory;
-  for (std::size_t i = 0; i < samples; ++i) {
-    const double k = static_cast<double>(i) + offset;
-    t.time.push_back(0.005 * static_cast<double>(i));
-    t.com.emplace_back(k + 0.1, k + 0.2, 0.814 + k * 1e-3);
-    t.com_vel.emplace_back(k + 1.1, k + 1.2, k + 1.3);
-    t.com_acc.emplace_back(k + 2.1, k + 2.2, k + 2.3);
-    t.cop.emplace_back(k + 3.1, k + 3.2);
-    t.left_foot.emplace_back(k + 4.1, k + 4.2, k + 4.3, k + 4.4);
-    t.right_foot.emplace_back(k + 5.1, k + 5.2, k + 5.3, k + 5.4);
-    t.free_flyer_yaw.push_back(k + 6.1);
-    t.support.push_back(static_cast<wpg::SupportState>(i % 3));
-  }
-  for (std::size_t j = 0; j < steps; ++j) {
-    wpg::Footstep step;
-    step.landing_time = 0.8 * static_cast<double>(j) + offset;
-    step.pose = Eigen::Vector3d(0.1 * j, j % 2 ? -0.095 : 0.095, 0.01 * j);
-    step.side = j % 2 ? wpg::FootSide::kRight : wpg::FootSide::kLeft;
-    t.footsteps.push_back(step);
-  }
-  for (std::size_t m = 0; m < iterations; ++m) {
-    wpg::MpcIterationLog log;
-    log.time = 0.1 * static_cast<double>(m);
-    log.solve_time = 1e-3 * (1.0 + m) + offset;
-    log.qp_iterations = static_cast<int>(3 + m);
-    log.sqp_iterations = static_cast<int>(1 + m % 2);
-    log.status = static_cast<wpg::IterationStatus>(m % 4);
-    log.cost = 10.0 + m;
-    log.slack[0] = m % 4 == 1 ? 0.01 : 0.0;
-    t.mpc.push_back(log);
-  }
-  result.success = true;
-  result.message = "";
-  return result;
-}
-
 // --- reading with the plain HDF5 C++ API -----------------------------------------------------
 
 using namespace wpg_test;  // HDF5 readers (hdf5_read.hpp)
 
-class RunDatasetFiles : public ::testing::Test {
+class RunDatasetFiles : public wpg_test::ScratchDirectoryTest {
  protected:
-  void SetUp() override {
-    static std::atomic<int> counter{0};
-    directory_ = fs::temp_directory_path() /
-                 ("wpg_test_run_dataset_" + std::to_string(::getpid()) + "_" +
-                  std::to_string(counter++));
-    fs::create_directories(directory_);
-  }
-  void TearDown() override {
-    std::error_code ec;
-    fs::remove_all(directory_, ec);
-  }
+  RunDatasetFiles() : ScratchDirectoryTest("wpg_test_run_dataset") {}
 
   // Files whose name holds ".tmp-" anywhere below the test directory.
   std::vector<std::string> temporaryFiles() const {
@@ -102,8 +54,6 @@ class RunDatasetFiles : public ::testing::Test {
     }
     return found;
   }
-
-  fs::path directory_;
 };
 
 // Compares a Vector-of-Eigen column block with what was read.
@@ -129,7 +79,7 @@ TEST_F(RunDatasetFiles, WritesTheSchemaAndReadsBackTheSameNumbers) {
   EXPECT_TRUE(temporaryFiles().empty());
 
   const H5::H5File file(path, H5F_ACC_RDONLY);
-  EXPECT_EQ(intAttribute(file, "schema_version"), 1);
+  EXPECT_EQ(intAttribute(file, "schema_version"), 2);  // 2: step_centre_clearance redefined
   EXPECT_EQ(stringAttribute(file, "wpg_version"), WPG_VERSION_STRING);
   EXPECT_EQ(stringAttribute(file, "scenario"), scenario.resolved_yaml);
   EXPECT_EQ(stringAttribute(file, "created_by"), "wpg");
@@ -181,6 +131,13 @@ TEST_F(RunDatasetFiles, WritesTheSchemaAndReadsBackTheSameNumbers) {
   const std::vector<double> solve_time = readDoubles(mpc, "solve_time", &dims);
   const std::vector<double> cost = readDoubles(mpc, "cost", &dims);
   const std::vector<double> slack = readDoubles(mpc, "slack", &dims);
+  EXPECT_EQ(dims[1], 4u);  // one column per constraint family
+  EXPECT_EQ(stringAttribute(mpc.openDataSet("slack"), "columns"),
+            "cop, step_feasibility, yaw_bound, obstacle");
+  EXPECT_EQ(stringAttribute(mpc.openDataSet("slack"), "groups"),
+            "balance, kinematics, kinematics, obstacle");
+  const std::vector<std::uint8_t> relaxed =
+      readAll<std::uint8_t>(mpc, "relaxed_families", H5::PredType::NATIVE_UINT8, &dims);
   const std::vector<int> qp =
       readAll<int>(mpc, "qp_iterations", H5::PredType::NATIVE_INT, &dims);
   const std::vector<int> sqp =
@@ -193,7 +150,8 @@ TEST_F(RunDatasetFiles, WritesTheSchemaAndReadsBackTheSameNumbers) {
     EXPECT_EQ(mpc_time[m], t.mpc[m].time);
     EXPECT_EQ(solve_time[m], t.mpc[m].solve_time);
     EXPECT_EQ(cost[m], t.mpc[m].cost);
-    EXPECT_EQ(slack[m], t.mpc[m].maxSlack());
+    for (std::size_t f = 0; f < 4; ++f) EXPECT_EQ(slack[4 * m + f], t.mpc[m].slack[f]);
+    EXPECT_EQ(relaxed[m], t.mpc[m].relaxed_families);
     EXPECT_EQ(qp[m], t.mpc[m].qp_iterations);
     EXPECT_EQ(sqp[m], t.mpc[m].sqp_iterations);
     EXPECT_EQ(status[m], static_cast<std::uint8_t>(t.mpc[m].status));
@@ -257,7 +215,7 @@ TEST_F(RunDatasetFiles, EveryDatasetHasUnitsFrameAndDescription) {
   const H5::Group mpc = run.openGroup("mpc");
   const std::pair<const char*, const char*> mpc_sets[] = {
       {"time", "s"}, {"solve_time", "s"}, {"qp_iterations", "1"}, {"sqp_iterations", "1"},
-      {"status", "1"}, {"cost", "1"}, {"slack", "m or rad"}};
+      {"status", "1"}, {"cost", "1"}, {"slack", "m, m, rad, m"}, {"relaxed_families", "1"}};
   for (const auto& [name, units] : mpc_sets) {
     SCOPED_TRACE(name);
     const H5::DataSet dataset = mpc.openDataSet(name);

@@ -1,7 +1,6 @@
 // Scenario files: the shipped ones load with the expected values, every malformed input is
 // an InputError naming the file and the key, --set overrides work, the resolved YAML
 // reproduces the scenario.
-#include <atomic>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -12,6 +11,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include "test_support.hpp"
 #include "wpg/datasets/scenario.hpp"
 
 namespace fs = std::filesystem;
@@ -21,9 +21,8 @@ using wpg::datasets::Scenario;
 
 namespace {
 
-const std::string kSourceDir = WPG_SOURCE_DIR;
-const std::string kRobotsDir = kSourceDir + "/robots";
-const std::string kScenariosDir = kSourceDir + "/datasets/scenarios";
+using wpg_test::kRobotsDir;
+using wpg_test::kScenariosDir;
 
 std::string shipped(const std::string& name) { return kScenariosDir + "/" + name + ".yaml"; }
 
@@ -50,19 +49,9 @@ std::string replaced(std::string text, const std::string& from, const std::strin
   return text.replace(at, from.size(), to);
 }
 
-class ScenarioFiles : public ::testing::Test {
+class ScenarioFiles : public wpg_test::ScratchDirectoryTest {
  protected:
-  void SetUp() override {
-    static std::atomic<int> counter{0};
-    directory_ = fs::temp_directory_path() /
-                 ("wpg_test_scenario_" + std::to_string(::getpid()) + "_" +
-                  std::to_string(counter++));
-    fs::create_directories(directory_);
-  }
-  void TearDown() override {
-    std::error_code ec;
-    fs::remove_all(directory_, ec);
-  }
+  ScenarioFiles() : ScratchDirectoryTest("wpg_test_scenario") {}
 
   std::string write(const std::string& file_name, const std::string& text) {
     const fs::path path = directory_ / file_name;
@@ -83,21 +72,8 @@ class ScenarioFiles : public ::testing::Test {
   static void expectErrorAt(const std::string& path, std::initializer_list<std::string> parts,
                             const std::vector<std::string>& overrides,
                             const std::string& robots_dir) {
-    try {
-      loadScenario(path, overrides, robots_dir);
-      ADD_FAILURE() << "no InputError for " << path;
-    } catch (const InputError& error) {
-      const std::string message = error.what();
-      EXPECT_NE(message.find(path), std::string::npos) << "file missing in: " << message;
-      for (const std::string& part : parts) {
-        EXPECT_NE(message.find(part), std::string::npos)
-            << "'" << part << "' missing in: " << message;
-      }
-      EXPECT_EQ(message.find('\n'), std::string::npos) << "not one line: " << message;
-    }
+    wpg_test::expectInputError([&] { loadScenario(path, overrides, robots_dir); }, path, parts);
   }
-
-  fs::path directory_;
 };
 
 // ---------------------------------------------------------------------------------------------

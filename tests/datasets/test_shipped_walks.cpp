@@ -34,14 +34,16 @@ TEST_P(ShippedWalk, KeepsBalanceAndStepFeasibility) {
       EXPECT_TRUE(log.status == wpg::IterationStatus::kSolved ||
                   log.status == wpg::IterationStatus::kRelaxedObstacle) << "t = " << log.time;
   }
-  // No step centre inside an obstacle grown by its margin (eq. 18-19).
+  // No step centre inside an obstacle grown by its margin and the sole radius (eq. 18-19, the
+  // NMPC's obstacle rows).
   if (!scenario.request.obstacles.empty()) {
     const wpg::AnalyticObstacleDistance distance(scenario.request.obstacles);
     for (const wpg::Footstep& step : result.trajectory.footsteps) {
       if (step.landing_time <= 0.0) continue;
       for (int o = 0; o < distance.obstacleCount(); ++o) {
         const double clearance = distance.signedDistance(o, step.pose.head<2>(), nullptr) -
-                                 scenario.request.obstacles[o].margin;
+                                 scenario.request.obstacles[o].margin -
+                                 scenario.walking.obstacle_foot_radius;
         EXPECT_GE(clearance, -1e-4) << "step landing at t = " << step.landing_time
                                     << " inside obstacle " << o << "'s margin";
       }

@@ -395,16 +395,20 @@ TEST(ObstacleChecks, PerStepMinimaAndSummary) {
   const wpg::planning::FootstepObstacleReport report =
       wpg::planning::checkFootsteps(world, parameters, trajectory);
   ASSERT_EQ(report.clearance.size(), 4u);
-  // Step 2 at (0.6, 0): centre 0.4 - 0.2 - 0.1 = 0.1 from the circle's margin; its front edge
+  // Step 2 at (0.6, 0): centre 0.4 - 0.2 - 0.1 = 0.1 from the circle's margin, 0.1 - 0.1287 < 0
+  // from the NMPC's constraint (margin grown by obstacle_foot_radius); its front edge
   // 0.6 + 0.1086 is 0.2914 from the circle, 0.1914 from the margin.
+  const double foot = parameters.obstacle_foot_radius;
+  ASSERT_GT(foot, 0.1);
   EXPECT_EQ(report.centre_clearance_obstacle[2], 0);
-  EXPECT_NEAR(report.centre_clearance[2], 0.1, 1e-9);
+  EXPECT_NEAR(report.centre_clearance[2], 0.1 - foot, 1e-9);
+  EXPECT_LT(report.centre_clearance[2], 0.0);
   EXPECT_EQ(report.clearance_obstacle[2], 0);
   EXPECT_NEAR(report.clearance[2], 1.0 - 0.2 - (0.6 + 0.5 * parameters.foot_length) - 0.1, 1e-7);
   EXPECT_NEAR(report.foot_distance[2], report.clearance[2] + 0.1, 1e-12);
-  // Step 3 at (0, 0.5): box from y = 0.8; centre 0.3 - 0.05, sole 0.3 - 0.069 - 0.05.
+  // Step 3 at (0, 0.5): box from y = 0.8; centre 0.3 - 0.05 - foot, sole 0.3 - 0.069 - 0.05.
   EXPECT_EQ(report.centre_clearance_obstacle[3], 1);
-  EXPECT_NEAR(report.centre_clearance[3], 0.25, 1e-9);
+  EXPECT_NEAR(report.centre_clearance[3], 0.25 - foot, 1e-9);
   EXPECT_NEAR(report.clearance[3], 0.3 - 0.5 * parameters.foot_width - 0.05, 1e-9);
   EXPECT_EQ(report.min_clearance_step, 2);
   EXPECT_DOUBLE_EQ(report.min_clearance, report.clearance[2]);

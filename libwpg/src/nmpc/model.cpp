@@ -110,6 +110,13 @@ void NmpcModel::addConstraintFamily(std::shared_ptr<const ConstraintFamily> fami
   layout_.inequality_rows = family_first_row_.back();
 }
 
+std::vector<ConstraintFamilyInfo> NmpcModel::familyInfo() const {
+  std::vector<ConstraintFamilyInfo> info;
+  for (const auto& family : families_)
+    info.push_back({family->name(), family->unit(), relaxationGroupName(family->group())});
+  return info;
+}
+
 int NmpcModel::familyOfRow(int row) const {
   for (int k = 0; k < familyCount(); ++k)
     if (row < family_first_row_[k + 1]) return k;

@@ -10,13 +10,15 @@
 
 namespace wpg::datasets {
 
-// The HDF5 schema version written in the root attribute `schema_version`.
-constexpr int kRunDatasetSchemaVersion = 1;
+// The HDF5 schema version written in the root attribute `schema_version` (its history:
+// datasets/SCHEMA.md).
+constexpr int kRunDatasetSchemaVersion = 2;
 
 // The sole rectangles of the landed footsteps against the obstacles, one entry per row of
 // WalkTrajectory::footsteps, as computed by the caller with the FCL world (planning/:
 // wpg::planning::checkFootsteps returns these columns under the same names). datasets/ does
-// not link FCL; the step centres' clearances it computes itself (libwpg's exact 2-D distance).
+// not link FCL; the step centres' clearances it computes itself (libwpg's exact 2-D distance,
+// against the NMPC's constraint: sd(ankle, obstacle) - margin - obstacle_foot_radius).
 struct FootstepClearances {
   std::vector<double> clearance;        // min over obstacles of sd(sole, obstacle) - margin [m]
   std::vector<int> clearance_obstacle;  // index of the obstacle of that minimum

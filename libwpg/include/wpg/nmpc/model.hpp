@@ -60,6 +60,8 @@ class NmpcModel {
 
   // Allocates a problem with the right sizes (not for the hot loop).
   NmpcProblem makeProblem() const;
+  // Name, unit and relaxation group of each family, in row order (for logs and datasets).
+  std::vector<ConstraintFamilyInfo> familyInfo() const;
 
  private:
   WalkingParameters parameters_;

@@ -1,12 +1,14 @@
 #pragma once
 // After a run: every landed footstep checked with FCL against every obstacle (issue 3). Two
 // numbers per step, because the NMPC and the robot see obstacles differently:
-//  - the step centre (ankle) against the obstacle grown by its margin: the constraint the NMPC
-//    enforces (eq. 18-19 generalized: d(f) - m >= 0), so it must never be negative;
+//  - the step centre (ankle) against the obstacle grown by its margin and by the sole radius
+//    obstacle_foot_radius: the constraint the NMPC enforces (eq. 18-19 generalized:
+//    d(f) - m - obstacle_foot_radius >= 0), so it must never be negative;
 //  - the sole rectangle against the obstacle grown by its margin: what the foot really
-//    occupies. Steps on the edge of the margin make it negative by up to the sole's half
-//    diagonal (0.129 m for HRP-2) while the centre constraint holds; and against the obstacle
-//    itself (margin not counted), which is negative only when the foot touches the obstacle.
+//    occupies. With obstacle_foot_radius below the sole's half diagonal (0.129 m for HRP-2;
+//    the paper's point footsteps: 0) it can be negative while the centre constraint holds; and
+//    against the obstacle itself (margin not counted), which is negative only when the foot
+//    touches the obstacle.
 // The columns match the dataset's /runs/<name>/checks/step_* (datasets/SCHEMA.md), so that the
 // caller passes them to wpg::datasets::writeRunDataset as they are.
 #include <vector>
@@ -25,8 +27,9 @@ struct FootstepObstacleReport {
   std::vector<int> clearance_obstacle;  // the obstacle of that minimum
   // min over obstacles of signed_distance(sole rectangle, obstacle) [m], margin not counted
   std::vector<double> foot_distance;
-  // min over obstacles of signed_distance(ankle point, obstacle) - margin [m]: the NMPC's
-  // constraint on the step centre
+  // min over obstacles of signed_distance(ankle point, obstacle) - margin -
+  // parameters.obstacle_foot_radius [m]: the margin of the NMPC's constraint on the step
+  // centre, >= 0 when it holds
   std::vector<double> centre_clearance;
   std::vector<int> centre_clearance_obstacle;
 

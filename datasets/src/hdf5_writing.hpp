@@ -1,0 +1,70 @@
+#pragma once
+// Writing plain HDF5 that h5py reads without code of ours (conventions: datasets/SCHEMA.md):
+// scalar and string-list attributes, time-major numeric datasets that carry `units`,
+// `frame`, `description` and `columns` attributes, chunked and compressed.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+#include <H5Cpp.h>
+
+namespace wpg::datasets::detail {
+
+// --- attributes ------------------------------------------------------------------------------
+
+void writeStringAttribute(H5::H5Object& object, const std::string& name,
+                          const std::string& value);  // variable-length UTF-8
+void writeIntAttribute(H5::H5Object& object, const std::string& name, int value);
+void writeDoubleAttribute(H5::H5Object& object, const std::string& name, double value);
+// A 1-D attribute of variable-length UTF-8 strings (h5py: an array of str).
+void writeStringListAttribute(H5::H5Object& object, const std::string& name,
+                              const std::vector<std::string>& values);
+
+// --- datasets --------------------------------------------------------------------------------
+
+struct DatasetInfo {
+  const char* units;        // "s", "m", "m, m, m, rad" (one per column when they differ), "1"
+  const char* frame;        // "world", or nullptr where no frame applies
+  const char* description;  // one sentence
+  const char* columns;      // column names of a 2-D dataset, nullptr for 1-D
+};
+
+// rows x columns, row-major (time-major); columns == 0 makes a 1-D dataset of `rows`.
+// Chunked and compressed when it has rows; a 0-row dataset is contiguous (a chunk cannot be
+// larger than a fixed-size dataset) and nothing is written into it.
+H5::DataSet writeDataset(H5::Group& group, const std::string& name, const void* data,
+                         hsize_t rows, hsize_t columns, const H5::PredType& memory_type,
+                         const H5::PredType& file_type, const DatasetInfo& info);
+// float64; rows = values.size() / columns (1-D when columns == 0).
+void writeDoubles(H5::Group& group, const std::string& name, const std::vector<double>& values,
+                  hsize_t columns, const DatasetInfo& info);
+void writeInts(H5::Group& group, const std::string& name, const std::vector<int>& values,
+               const DatasetInfo& info);  // int32, 1-D
+H5::DataSet writeCodes(H5::Group& group, const std::string& name,
+                       const std::vector<std::uint8_t>& values,
+                       const DatasetInfo& info);  // uint8, 1-D; the caller adds `codes`
+
+// --- rows to the flat, time-major layout ------------------------------------------------------
+
+template <int Size>
+std::vector<double> flatten(const std::vector<Eigen::Matrix<double, Size, 1>>& rows) {
+  std::vector<double> values;
+  values.reserve(rows.size() * Size);
+  for (const auto& row : rows) values.insert(values.end(), row.data(), row.data() + Size);
+  return values;
+}
+
+// get(row) for every row.
+template <typename Row, typename Get>
+std::vector<double> column(const std::vector<Row>& rows, Get get) {
+  std::vector<double> values;
+  values.reserve(rows.size());
+  for (const Row& row : rows) values.push_back(get(row));
+  return values;
+}
+
+// An Eigen matrix as a time-major (row-major) vector; a 1-column matrix stays 2-D.
+std::vector<double> rowMajor(const Eigen::MatrixXd& matrix);
+
+}  // namespace wpg::datasets::detail

@@ -1,0 +1,77 @@
+// The computations behind a run dataset's checks and timing summaries (run_checks.hpp).
+#include "run_checks.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace wpg::datasets::detail {
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+double minimum(const std::vector<double>& values) {
+  double value = kInfinity;
+  for (const double v : values) value = std::min(value, v);
+  return value;
+}
+
+}  // namespace
+
+FootstepObstacleChecks checkFootstepsAgainstObstacles(const WalkingParameters& parameters,
+                                                      const std::vector<Obstacle>& obstacles,
+                                                      const WalkTrajectory& trajectory,
+                                                      const FootstepClearances* clearances) {
+  FootstepObstacleChecks checks;
+  const std::size_t steps = trajectory.footsteps.size();
+  checks.step_centre_clearance.assign(steps, kInfinity);
+  checks.step_centre_clearance_obstacle.assign(steps, -1);
+  if (!obstacles.empty()) {
+    const AnalyticObstacleDistance distance(obstacles);
+    for (std::size_t s = 0; s < steps; ++s) {
+      const Eigen::Vector2d ankle = trajectory.footsteps[s].pose.head<2>();
+      for (int i = 0; i < distance.obstacleCount(); ++i) {
+        // The NMPC's obstacle row (nmpc.cpp, eq. 18-19): d(f) >= margin + obstacle_foot_radius.
+        const double value = distance.signedDistance(i, ankle, nullptr) -
+                             obstacles[static_cast<std::size_t>(i)].margin -
+                             parameters.obstacle_foot_radius;
+        if (value < checks.step_centre_clearance[s]) {
+          checks.step_centre_clearance[s] = value;
+          checks.step_centre_clearance_obstacle[s] = i;
+        }
+      }
+    }
+  }
+  checks.min_step_centre_clearance = minimum(checks.step_centre_clearance);
+  checks.min_step_clearance = clearances ? minimum(clearances->clearance) : kInfinity;
+  checks.min_step_foot_distance = clearances ? minimum(clearances->foot_distance) : kInfinity;
+  return checks;
+}
+
+RunChecks computeRunChecks(const Scenario& scenario, const WalkTrajectory& trajectory,
+                           const FootstepClearances* clearances) {
+  RunChecks checks;
+  checks.walk = checkWalk(scenario.walking, trajectory);
+  checks.has_obstacles = !scenario.request.obstacles.empty();
+  if (checks.has_obstacles) {
+    checks.footsteps = checkFootstepsAgainstObstacles(scenario.walking, scenario.request.obstacles,
+                                                      trajectory, clearances);
+  }
+  return checks;
+}
+
+TimeStatistics timeStatistics(const Eigen::VectorXd& times) {
+  TimeStatistics statistics;
+  const Eigen::Index k = times.size();
+  if (k == 0) return statistics;
+  statistics.average = times.mean();
+  statistics.std_dev =
+      k > 1 ? std::sqrt((times.array() - statistics.average).square().sum() /
+                        static_cast<double>(k - 1))
+            : 0.0;
+  statistics.min = times.minCoeff();
+  statistics.max = times.maxCoeff();
+  return statistics;
+}
+
+}  // namespace wpg::datasets::detail
