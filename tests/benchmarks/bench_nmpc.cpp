@@ -40,7 +40,7 @@ void runIterations(benchmark::State& state, const Eigen::Vector3d& command,
   settings.sqp_iterations = sqp_iterations;
   if (world) settings.max_obstacles_in_qp = 3;
   wpg::PatternGenerator generator(parameters, settings);
-  if (world) generator.setObstacles(&world->obstacles(), world);
+  if (world) generator.setObstacles(world->obstacles(), world);
   const double T = parameters.sampling_period, dt = parameters.control_period;
   Eigen::Vector3d com_x = generator.comX(), com_y = generator.comY();
   double t = 0.0;

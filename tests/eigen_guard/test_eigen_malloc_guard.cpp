@@ -35,7 +35,7 @@ void walk(wpg::GeneratorAlgorithm algorithm, const Eigen::Vector3d& command) {
     return std::vector<wpg::Obstacle>{circle, box};
   }();
   wpg::PatternGenerator generator(parameters, settings);
-  generator.setObstacles(&obstacles);
+  generator.setObstacles(obstacles);
   Eigen::Vector3d com_x = generator.comX(), com_y = generator.comY();
   auto sample = [&](int k) {
     generator.update(k * parameters.sampling_period, command);
