@@ -2,6 +2,10 @@
 // cycle is run with (a) Eigen's runtime malloc guard when wpg_core is built with
 // EIGEN_RUNTIME_NO_MALLOC and (b) a process-wide count of malloc / calloc / realloc calls.
 //
+// The same for OnlineWalkingGenerator::step(), the per-control-period API (NMPC every 20th
+// period, CoM and feet interpolation, command and push set every period), without and with
+// obstacles (circle, box, polygon measured by libwpg's AnalyticObstacleDistance).
+//
 // The counter interposes the C allocator of the executable with definitions forwarding to
 // glibc's __libc_* entry points (malloc to __libc_memalign with malloc's own alignment) (operator new of libstdc++ and Eigen's aligned_malloc go
 // through malloc). The definitions are weak because another test TU of the same executable
@@ -19,13 +23,16 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Core>
+#include <cmath>
 #include <cstddef>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "wpg/lipm_prediction.hpp"
+#include "wpg/online_walking_generator.hpp"
 #include "wpg/pattern_generator.hpp"
 
 // Not with sanitizers, which replace the allocator themselves.
@@ -141,6 +148,7 @@ struct LoopResult {
   int patterns_seen = 0;  // bit mask of Hessian patterns solved in the counted region
   int non_solved = 0;
   std::string where;      // samples that allocated: "sample (pattern, equality rows): count"
+  int obstacles_in_qp = 0;  // bit mask of the obstacles that entered the QP (online loop)
 };
 
 long allocationsSoFar() {
@@ -286,6 +294,98 @@ TEST(NmpcAllocation, StartStopCycle) {
     expectNoAllocation(r, algorithm == GeneratorAlgorithm::kNmpc ? "NMPC start/stop"
                                                                  : "LMPC start/stop");
   }
+}
+
+// --- OnlineWalkingGenerator: warmed-up control periods ----------------------------------
+
+// Warms up with `warmup`, then counts allocations over `counted` (segments in NMPC samples of
+// 20 control periods; the command is set at every period, a push in two of them, opposite).
+LoopResult countOverOnlineLoop(const WalkingParameters& w, std::vector<wpg::Obstacle> obstacles,
+                               const std::vector<Segment>& warmup,
+                               const std::vector<Segment>& counted) {
+  GeneratorSettings settings;
+  if (!obstacles.empty()) settings.max_obstacles_in_qp = static_cast<int>(obstacles.size());
+  wpg::OnlineWalkingGenerator generator(w, settings);
+  generator.setObstacles(std::move(obstacles));
+  const int periods = static_cast<int>(std::lround(w.sampling_period / w.control_period));
+  const Eigen::Vector2d push(0.0, 0.3);
+  auto sample = [&](const Vector3d& command) {
+    for (int i = 0; i < periods; ++i) {
+      generator.setCommand(command);
+      if (i == 3 || i == 13) generator.setPushAcceleration(i == 3 ? push : Eigen::Vector2d(-push));
+      generator.step();
+    }
+  };
+  for (const Segment& s : warmup)
+    for (int i = 0; i < s.samples; ++i) sample(s.command);
+  LoopResult result;
+  constexpr int kMax = 512;
+  int statuses[kMax] = {0}, patterns[kMax] = {0};
+  long allocations[kMax] = {0};
+  int n = 0;
+  startCounting();
+  for (const Segment& s : counted) {
+    for (int i = 0; i < s.samples; ++i, ++n) {
+      const long before = allocationsSoFar();
+      sample(s.command);
+      if (n < kMax) {
+        allocations[n] = allocationsSoFar() - before;
+        statuses[n] = static_cast<int>(generator.lastIteration().status);
+        patterns[n] = generator.patternGenerator().problem().phase.pattern;
+      }
+      const Eigen::VectorXi& slots = generator.patternGenerator().problem().obstacle_slot;
+      for (int k = 0; k < slots.size(); ++k)
+        if (slots(k) >= 0) result.obstacles_in_qp |= 1 << slots(k);
+    }
+  }
+  result.counts = stopCounting();
+  for (int i = 0; i < n && i < kMax; ++i) {
+    result.patterns_seen |= 1 << patterns[i];
+    if (statuses[i] != 0) ++result.non_solved;
+    if (allocations[i] > 0 && result.where.size() < 400) {
+      result.where += " " + std::to_string(i) + " (pattern " + std::to_string(patterns[i]) +
+                      "): " + std::to_string(allocations[i]) + ";";
+    }
+  }
+  EXPECT_FALSE(generator.fallen());
+  return result;
+}
+
+TEST(NmpcAllocation, OnlineStepStartStopCycle) {
+  if (!counterAvailable()) GTEST_SKIP() << "the allocation counter needs glibc (and no sanitizer)";
+  WalkingParameters w;
+  w.max_step_yaw_change = 0.17;
+  const Vector3d zero = Vector3d::Zero(), forward(0.2, 0.0, 0.0), curve(0.2, 0.0, 0.2);
+  const std::vector<Segment> cycle{{5, zero}, {25, forward}, {10, curve}, {30, zero}};
+  const LoopResult r = countOverOnlineLoop(w, {}, cycle, cycle);
+  EXPECT_EQ(r.patterns_seen, (1 << (w.stepSamples() + 1)) - 1);  // walking 0..S-1, standing S
+  expectNoAllocation(r, "OnlineWalkingGenerator::step(), start/walk/curve/stop");
+}
+
+TEST(NmpcAllocation, OnlineStepWithCircleBoxAndPolygon) {
+  if (!counterAvailable()) GTEST_SKIP() << "the allocation counter needs glibc (and no sanitizer)";
+  WalkingParameters w;
+  w.max_step_yaw_change = 0.17;
+  wpg::Obstacle circle;
+  circle.center = Eigen::Vector2d(1.5, 0.9);
+  circle.radius = 0.2;
+  circle.margin = 0.1;
+  wpg::Obstacle box;
+  box.type = wpg::ObstacleType::kBox;
+  box.center = Eigen::Vector2d(2.5, -0.9);
+  box.size = Eigen::Vector2d(0.3, 0.4);
+  box.yaw = 0.3;
+  box.margin = 0.1;
+  wpg::Obstacle polygon;
+  polygon.type = wpg::ObstacleType::kPolygon;
+  polygon.vertices = {{3.5, 0.7}, {4.0, 0.8}, {3.8, 1.2}, {3.4, 1.1}};
+  polygon.margin = 0.05;
+  const Vector3d forward(0.2, 0.0, 0.0);
+  const LoopResult r =
+      countOverOnlineLoop(w, {circle, box, polygon}, {{30, forward}}, {{100, forward}});
+  EXPECT_EQ(r.patterns_seen & maskOf(kAllWalkingPatterns), maskOf(kAllWalkingPatterns));
+  EXPECT_EQ(r.obstacles_in_qp, 7) << "each obstacle must enter the QP in the counted loop";
+  expectNoAllocation(r, "OnlineWalkingGenerator::step() with a circle, a box and a polygon");
 }
 
 }  // namespace
