@@ -159,6 +159,48 @@ long allocationsSoFar() {
 #endif
 }
 
+// What one counted sample did.
+struct SampleRecord {
+  long allocations = 0;
+  int status = 0;       // IterationStatus
+  int pattern = 0;      // Hessian pattern
+  int equalities = -1;  // equality rows of the QP (-1: not recorded)
+};
+
+// Counts allocations over the samples of `counted`: run(command) runs one NMPC sample,
+// describe() says what it was (status, pattern, equalities) without allocating.
+template <class Run, class Describe>
+LoopResult countOverSamples(const std::vector<Segment>& counted, Run run, Describe describe) {
+  constexpr int kMax = 512;
+  SampleRecord records[kMax];
+  int n = 0;
+  startCounting();
+  for (const Segment& s : counted) {
+    for (int i = 0; i < s.samples; ++i, ++n) {
+      const long before = allocationsSoFar();
+      run(s.command);
+      if (n < kMax) {
+        const long allocations = allocationsSoFar() - before;
+        records[n] = describe();
+        records[n].allocations = allocations;
+      }
+    }
+  }
+  LoopResult result;
+  result.counts = stopCounting();
+  for (int i = 0; i < n && i < kMax; ++i) {
+    const SampleRecord& r = records[i];
+    result.patterns_seen |= 1 << r.pattern;
+    if (r.status != 0) ++result.non_solved;
+    if (r.allocations > 0 && result.where.size() < 400) {
+      result.where += " " + std::to_string(i) + " (pattern " + std::to_string(r.pattern) +
+                      ", me " + std::to_string(r.equalities) + "): " +
+                      std::to_string(r.allocations) + ";";
+    }
+  }
+  return result;
+}
+
 // Warms up with `warmup`, then counts allocations over `counted`.
 LoopResult countOverLoop(const WalkingParameters& w, GeneratorAlgorithm algorithm,
                          const std::vector<Segment>& warmup, const std::vector<Segment>& counted) {
@@ -168,35 +210,16 @@ LoopResult countOverLoop(const WalkingParameters& w, GeneratorAlgorithm algorith
   int k = 0;
   for (const Segment& s : warmup)
     for (int i = 0; i < s.samples; ++i, ++k) runSample(generator, k * w.sampling_period, s.command);
-  LoopResult result;
-  constexpr int kMax = 512;
-  int statuses[kMax] = {0}, patterns[kMax] = {0}, equalities[kMax] = {0};
-  long allocations[kMax] = {0};
-  int n = 0;
-  startCounting();
-  for (const Segment& s : counted) {
-    for (int i = 0; i < s.samples; ++i, ++k, ++n) {
-      const long before = allocationsSoFar();
-      runSample(generator, k * w.sampling_period, s.command);
-      if (n < kMax) {
-        allocations[n] = allocationsSoFar() - before;
-        statuses[n] = static_cast<int>(generator.lastSolve().status);
-        patterns[n] = generator.problem().phase.pattern;
-        equalities[n] = static_cast<int>(generator.workspace().solver.equalityMultipliers().size());
-      }
-    }
-  }
-  result.counts = stopCounting();
-  for (int i = 0; i < n && i < kMax; ++i) {
-    result.patterns_seen |= 1 << patterns[i];
-    if (statuses[i] != 0) ++result.non_solved;
-    if (allocations[i] > 0 && result.where.size() < 400) {
-      result.where += " " + std::to_string(i) + " (pattern " + std::to_string(patterns[i]) +
-                      ", me " + std::to_string(equalities[i]) + "): " +
-                      std::to_string(allocations[i]) + ";";
-    }
-  }
-  return result;
+  return countOverSamples(
+      counted,
+      [&](const Vector3d& command) { runSample(generator, k++ * w.sampling_period, command); },
+      [&] {
+        SampleRecord r;
+        r.status = static_cast<int>(generator.lastSolve().status);
+        r.pattern = generator.problem().phase.pattern;
+        r.equalities = static_cast<int>(generator.workspace().solver.equalityMultipliers().size());
+        return r;
+      });
 }
 
 bool counterAvailable() {
@@ -318,35 +341,17 @@ LoopResult countOverOnlineLoop(const WalkingParameters& w, std::vector<wpg::Obst
   };
   for (const Segment& s : warmup)
     for (int i = 0; i < s.samples; ++i) sample(s.command);
-  LoopResult result;
-  constexpr int kMax = 512;
-  int statuses[kMax] = {0}, patterns[kMax] = {0};
-  long allocations[kMax] = {0};
-  int n = 0;
-  startCounting();
-  for (const Segment& s : counted) {
-    for (int i = 0; i < s.samples; ++i, ++n) {
-      const long before = allocationsSoFar();
-      sample(s.command);
-      if (n < kMax) {
-        allocations[n] = allocationsSoFar() - before;
-        statuses[n] = static_cast<int>(generator.lastIteration().status);
-        patterns[n] = generator.patternGenerator().problem().phase.pattern;
-      }
-      const Eigen::VectorXi& slots = generator.patternGenerator().problem().obstacle_slot;
-      for (int k = 0; k < slots.size(); ++k)
-        if (slots(k) >= 0) result.obstacles_in_qp |= 1 << slots(k);
-    }
-  }
-  result.counts = stopCounting();
-  for (int i = 0; i < n && i < kMax; ++i) {
-    result.patterns_seen |= 1 << patterns[i];
-    if (statuses[i] != 0) ++result.non_solved;
-    if (allocations[i] > 0 && result.where.size() < 400) {
-      result.where += " " + std::to_string(i) + " (pattern " + std::to_string(patterns[i]) +
-                      "): " + std::to_string(allocations[i]) + ";";
-    }
-  }
+  int obstacles_in_qp = 0;
+  LoopResult result = countOverSamples(counted, sample, [&] {
+    SampleRecord r;
+    r.status = static_cast<int>(generator.lastIteration().status);
+    r.pattern = generator.patternGenerator().problem().phase.pattern;
+    const Eigen::VectorXi& slots = generator.patternGenerator().problem().obstacle_slot;
+    for (int k = 0; k < slots.size(); ++k)
+      if (slots(k) >= 0) obstacles_in_qp |= 1 << slots(k);
+    return r;
+  });
+  result.obstacles_in_qp = obstacles_in_qp;
   EXPECT_FALSE(generator.fallen());
   return result;
 }
