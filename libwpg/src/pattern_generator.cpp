@@ -1,7 +1,7 @@
 #include "wpg/pattern_generator.hpp"
 
 #include <algorithm>
-#include <cassert>
+#include <chrono>
 #include <utility>
 
 namespace wpg {
@@ -52,8 +52,7 @@ const MpcIterationLog& PatternGenerator::update(double time, const Eigen::Vector
 
   const GaitScheduler::SampleStart phase_start = gait_.beginSample(command);
   if (phase_start.started) {
-    references_.restartHeading(0.5 * (gait_.footPose(FootSide::kLeft).z() +
-                                      gait_.footPose(FootSide::kRight).z()));
+    references_.restartHeading(gait_.feetMeanYaw());
     seedPlanFromStanding(command, phase_start.first_swing);
   }
   if (phase_start.structure_changed || obstacles_changed_) dropWarmStart();
@@ -61,8 +60,7 @@ const MpcIterationLog& PatternGenerator::update(double time, const Eigen::Vector
 
   // The problem of this sample: phase structure, cost references, CoM state, obstacles.
   gait_.fillPhase(model_, problem_.phase);
-  references_.build(command, gait_.phaseSample(),
-                    0.5 * (gait_.footPose(FootSide::kLeft).z() + gait_.footPose(FootSide::kRight).z()),
+  references_.build(command, gait_.phaseSample(), gait_.feetMeanYaw(),
                     Eigen::Vector2d(com_x_(1), com_y_(1)), problem_);
   problem_.com_x = com_x_;
   problem_.com_y = com_y_;

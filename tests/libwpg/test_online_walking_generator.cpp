@@ -111,9 +111,10 @@ TEST(OnlineWalkingGenerator, CoMAndFeetAreContinuousBetweenControlPeriods) {
       EXPECT_GE(b(2), -1e-12);
     }
   }
-  for (std::size_t k = 0; k < s.size(); ++k) landings += s[k].support != wpg::SupportState::kDouble &&
-                                                          k + 1 < s.size() &&
-                                                          s[k + 1].support == wpg::SupportState::kDouble;
+  for (std::size_t k = 0; k + 1 < s.size(); ++k) {  // single support followed by double
+    if (s[k].support != wpg::SupportState::kDouble && s[k + 1].support == wpg::SupportState::kDouble)
+      ++landings;
+  }
   RecordProperty("max_foot_speed", std::to_string(max_foot_speed));
   RecordProperty("max_foot_acceleration", std::to_string(max_foot_acceleration));
   EXPECT_GE(landings, 6);
@@ -189,13 +190,13 @@ TEST(OnlineWalkingGenerator, ACommandTakesEffectAtTheNextNmpcSample) {
   EXPECT_EQ(a.com_position, b.com_position);
   const wpg::NmpcProblem& problem = changed.patternGenerator().problem();
   const wpg::PatternGenerator& pg = changed.patternGenerator();
-  const double heading = 0.5 * (pg.footPose(FootSide::kLeft).z() + pg.footPose(FootSide::kRight).z());
+  const double heading = pg.gait().feetMeanYaw();  // J1's frame (heading_reference: support_foot)
   for (int j = 0; j < w.horizon_length; ++j) {
     const double yaw = heading + turn.z() * (j + 1) * w.sampling_period;
     EXPECT_NEAR(problem.velocity_x(j), std::cos(yaw) * turn.x() - std::sin(yaw) * turn.y(), 1e-12);
     EXPECT_NEAR(problem.velocity_y(j), std::sin(yaw) * turn.x() + std::cos(yaw) * turn.y(), 1e-12);
   }
-  EXPECT_NEAR(reference.patternGenerator().problem().velocity_x(0), 0.2 * std::cos(heading + 0.0), 1e-12);
+  EXPECT_NEAR(reference.patternGenerator().problem().velocity_x(0), 0.2 * std::cos(heading), 1e-12);
   // From the instant on, the planned jerk differs.
   EXPECT_NE(pg.plan().jerk_y, reference.patternGenerator().plan().jerk_y);
   const ControlSample a1 = changed.step(), b1 = reference.step();
@@ -210,15 +211,15 @@ wpg::Obstacle circle(double x, double y, double radius, double margin) {
   return o;
 }
 
-double clearance(const wpg::ObstacleDistanceOracle& distance, const std::vector<wpg::Obstacle>& obstacles,
-                 const WalkingParameters& w, const Vector2d& step, int* nearest = nullptr) {
+// The smallest distance of a step centre to an obstacle grown by its margin and the sole
+// radius (>= 0: the NMPC's constraint (18)-(19) holds).
+double clearance(const wpg::ObstacleDistanceOracle& distance,
+                 const std::vector<wpg::Obstacle>& obstacles, const WalkingParameters& w,
+                 const Vector2d& step) {
   double worst = 1e9;
   for (int o = 0; o < static_cast<int>(obstacles.size()); ++o) {
-    const double c = distance.signedDistance(o, step, nullptr) - obstacles[o].margin - w.obstacle_foot_radius;
-    if (c < worst) {
-      worst = c;
-      if (nearest) *nearest = o;
-    }
+    worst = std::min(worst, distance.signedDistance(o, step, nullptr) - obstacles[o].margin -
+                                w.obstacle_foot_radius);
   }
   return worst;
 }
@@ -259,7 +260,8 @@ TEST(OnlineWalkingGenerator, ObstaclesGivenMidWalkAreRespected) {
   walk(true, &avoiding_steps);
   const wpg::AnalyticObstacleDistance distance(kept);
   double worst_free = 1e9, worst_avoiding = 1e9;
-  for (const Vector3d& step : free_steps) worst_free = std::min(worst_free, clearance(distance, kept, w, step.head<2>()));
+  for (const Vector3d& step : free_steps)
+    worst_free = std::min(worst_free, clearance(distance, kept, w, step.head<2>()));
   for (const Vector3d& step : avoiding_steps)
     worst_avoiding = std::min(worst_avoiding, clearance(distance, kept, w, step.head<2>()));
   RecordProperty("worst_clearance_without_obstacles", std::to_string(worst_free));

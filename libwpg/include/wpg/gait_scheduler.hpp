@@ -67,7 +67,9 @@ class GaitScheduler {
   bool standing() const { return standing_; }
   bool starting() const { return start_remaining_ > 0; }
   // The swing foot is in the air during the period that starts at this sample.
-  bool swinging() const { return !standing_ && start_remaining_ == 0 && phase_sample_ <= samples_per_step_ - 2; }
+  bool swinging() const {
+    return !standing_ && start_remaining_ == 0 && phase_sample_ <= samples_per_step_ - 2;
+  }
   SupportState supportState() const;
   FootSide supportSide() const { return support_side_; }
   int phaseSample() const { return phase_sample_; }
@@ -75,6 +77,8 @@ class GaitScheduler {
   const Eigen::Vector3d& footPose(FootSide side) const {
     return side == FootSide::kLeft ? left_ : right_;
   }
+  // The free-flyer yaw of the feet on the ground: the mean of their yaws [rad].
+  double feetMeanYaw() const { return 0.5 * (left_.z() + right_.z()); }
   const Footstep& lastLanding() const { return last_landing_; }
 
  private:

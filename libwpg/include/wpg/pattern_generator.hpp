@@ -8,7 +8,6 @@
 // the NMPC (or LMPC) solve, and the shift of the plan to the next sample (warm start).
 // OnlineWalkingGenerator (online_walking_generator.hpp) adds the control-period
 // interpolation of the CoM and the feet on top of it.
-#include <chrono>
 #include <vector>
 
 #include <Eigen/Core>
