@@ -1,7 +1,8 @@
 #pragma once
 // One whole walk, offline: the NMPC (or the LMPC baseline) every sampling period, the
 // interpolation at the control period, perturbations applied to the CoM. This is what
-// `wpg run` calls.
+// `wpg run` calls: a loop over OnlineWalkingGenerator (online_walking_generator.hpp) that
+// feeds it the request's commands and pushes and records every control period.
 #include <string>
 
 #include "wpg/obstacles.hpp"
