@@ -75,7 +75,11 @@ void WalkRequest::validate() const {
   }
   for (std::size_t i = 0; i < obstacles.size(); ++i)
     obstacles[i].validate("obstacles[" + std::to_string(i) + "]");
-  const GeneratorSettings& g = generator;
+  generator.validate();
+}
+
+void GeneratorSettings::validate() const {
+  const GeneratorSettings& g = *this;
   if (g.max_obstacles_in_qp < 0 || g.max_obstacles_in_qp > 32)
     fail("generator.max_obstacles_in_qp", "an integer in [0, 32]", str(g.max_obstacles_in_qp));
   if (!(g.obstacle_reach > 0.0) || !std::isfinite(g.obstacle_reach))

@@ -18,6 +18,10 @@ const char* iterationStatusName(IterationStatus status) {
   return "unknown";
 }
 
+bool iterationStatusFailsWalk(IterationStatus status) {
+  return status != IterationStatus::kSolved && status != IterationStatus::kRelaxedObstacle;
+}
+
 double MpcIterationLog::maxSlack() const {
   double largest = 0.0;
   for (double s : slack) largest = std::max(largest, s);

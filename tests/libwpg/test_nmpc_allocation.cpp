@@ -2,6 +2,10 @@
 // cycle is run with (a) Eigen's runtime malloc guard when wpg_core is built with
 // EIGEN_RUNTIME_NO_MALLOC and (b) a process-wide count of malloc / calloc / realloc calls.
 //
+// The same for OnlineWalkingGenerator::step(), the per-control-period API (NMPC every 20th
+// period, CoM and feet interpolation, command and push set every period), without and with
+// obstacles (circle, box, polygon measured by libwpg's AnalyticObstacleDistance).
+//
 // The counter interposes the C allocator of the executable with definitions forwarding to
 // glibc's __libc_* entry points (malloc to __libc_memalign with malloc's own alignment) (operator new of libstdc++ and Eigen's aligned_malloc go
 // through malloc). The definitions are weak because another test TU of the same executable
@@ -19,13 +23,16 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Core>
+#include <cmath>
 #include <cstddef>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "wpg/lipm_prediction.hpp"
+#include "wpg/online_walking_generator.hpp"
 #include "wpg/pattern_generator.hpp"
 
 // Not with sanitizers, which replace the allocator themselves.
@@ -141,6 +148,7 @@ struct LoopResult {
   int patterns_seen = 0;  // bit mask of Hessian patterns solved in the counted region
   int non_solved = 0;
   std::string where;      // samples that allocated: "sample (pattern, equality rows): count"
+  int obstacles_in_qp = 0;  // bit mask of the obstacles that entered the QP (online loop)
 };
 
 long allocationsSoFar() {
@@ -151,50 +159,74 @@ long allocationsSoFar() {
 #endif
 }
 
+// What one counted sample did.
+struct SampleRecord {
+  long allocations = 0;
+  int status = 0;       // IterationStatus
+  int pattern = 0;      // Hessian pattern
+  int equalities = -1;  // equality rows of the QP (-1: not recorded)
+};
+
+// Counts allocations over the samples of `counted`: run(command) runs one NMPC sample,
+// describe() says what it was (status, pattern, equalities) without allocating.
+template <class Run, class Describe>
+LoopResult countOverSamples(const std::vector<Segment>& counted, Run run, Describe describe) {
+  constexpr int kMax = 512;
+  SampleRecord records[kMax];
+  int n = 0;
+  startCounting();
+  for (const Segment& s : counted) {
+    for (int i = 0; i < s.samples; ++i, ++n) {
+      const long before = allocationsSoFar();
+      run(s.command);
+      if (n < kMax) {
+        const long allocations = allocationsSoFar() - before;
+        records[n] = describe();
+        records[n].allocations = allocations;
+      }
+    }
+  }
+  LoopResult result;
+  result.counts = stopCounting();
+  for (int i = 0; i < n && i < kMax; ++i) {
+    const SampleRecord& r = records[i];
+    result.patterns_seen |= 1 << r.pattern;
+    if (r.status != 0) ++result.non_solved;
+    if (r.allocations > 0 && result.where.size() < 400) {
+      result.where += " " + std::to_string(i) + " (pattern " + std::to_string(r.pattern) +
+                      ", me " + std::to_string(r.equalities) + "): " +
+                      std::to_string(r.allocations) + ";";
+    }
+  }
+  return result;
+}
+
 // Warms up with `warmup`, calls `before_counting` (e.g. to give new obstacles: that allocates),
-// then counts allocations over `counted`.
-template <typename BeforeCounting>
+// then counts allocations over `counted`; `statuses` (when given) gets the status of each
+// counted sample.
+template <class BeforeCounting>
 LoopResult countOverLoop(const WalkingParameters& w, const GeneratorSettings& settings,
                          const std::vector<Segment>& warmup, const std::vector<Segment>& counted,
-                         BeforeCounting before_counting, std::vector<int>* status_counts = nullptr) {
+                         BeforeCounting before_counting, std::vector<int>* statuses = nullptr) {
   PatternGenerator generator(w, settings);
   int k = 0;
   for (const Segment& s : warmup)
     for (int i = 0; i < s.samples; ++i, ++k) runSample(generator, k * w.sampling_period, s.command);
-  before_counting(generator);
-  LoopResult result;
-  constexpr int kMax = 512;
-  int statuses[kMax] = {0}, patterns[kMax] = {0}, equalities[kMax] = {0};
-  long allocations[kMax] = {0};
-  int n = 0;
-  startCounting();
-  for (const Segment& s : counted) {
-    for (int i = 0; i < s.samples; ++i, ++k, ++n) {
-      const long before = allocationsSoFar();
-      runSample(generator, k * w.sampling_period, s.command);
-      if (n < kMax) {
-        allocations[n] = allocationsSoFar() - before;
-        statuses[n] = static_cast<int>(generator.lastSolve().status);
-        patterns[n] = generator.problem().phase.pattern;
-        equalities[n] = static_cast<int>(generator.solver().workspace().solver.equalityMultipliers().size());
-      }
-    }
-  }
-  result.counts = stopCounting();
-  for (int i = 0; i < n && i < kMax; ++i) {
-    if (status_counts) {
-      if (status_counts->size() <= static_cast<std::size_t>(statuses[i]))
-        status_counts->resize(statuses[i] + 1, 0);
-      ++(*status_counts)[statuses[i]];
-    }
-    result.patterns_seen |= 1 << patterns[i];
-    if (statuses[i] != 0) ++result.non_solved;
-    if (allocations[i] > 0 && result.where.size() < 400) {
-      result.where += " " + std::to_string(i) + " (pattern " + std::to_string(patterns[i]) +
-                      ", me " + std::to_string(equalities[i]) + "): " +
-                      std::to_string(allocations[i]) + ";";
-    }
-  }
+  before_counting(generator, k);
+  int status_seen[256] = {0};
+  const LoopResult result = countOverSamples(
+      counted,
+      [&](const Vector3d& command) { runSample(generator, k++ * w.sampling_period, command); },
+      [&] {
+        SampleRecord r;
+        r.status = static_cast<int>(generator.lastSolve().status);
+        r.pattern = generator.problem().phase.pattern;
+        r.equalities = static_cast<int>(
+            generator.solver().workspace().solver.equalityMultipliers().size());
+        ++status_seen[r.status];
+        return r;
+      });
+  if (statuses) statuses->assign(status_seen, status_seen + 256);
   return result;
 }
 
@@ -202,7 +234,7 @@ LoopResult countOverLoop(const WalkingParameters& w, GeneratorAlgorithm algorith
                          const std::vector<Segment>& warmup, const std::vector<Segment>& counted) {
   GeneratorSettings settings;
   settings.algorithm = algorithm;
-  return countOverLoop(w, settings, warmup, counted, [](PatternGenerator&) {});
+  return countOverLoop(w, settings, warmup, counted, [](PatternGenerator&, int&) {});
 }
 
 bool counterAvailable() {
@@ -302,9 +334,7 @@ TEST(NmpcAllocation, StartStopCycle) {
   }
 }
 
-// Obstacle runs (issue: the NMPC's obstacle rows once went through the FCL world, ~10 mallocs
-// a query): a corridor of circles, boxes and polygons on both sides, several in the QP at every
-// sample, read through libwpg's exact 2-D distances.
+// A corridor of circles, boxes and polygons on both sides, several in the QP at every sample.
 std::vector<wpg::Obstacle> corridor() {
   std::vector<wpg::Obstacle> obstacles;
   for (int i = 0; i < 40; ++i) {
@@ -329,26 +359,8 @@ std::vector<wpg::Obstacle> corridor() {
   return obstacles;
 }
 
-TEST(NmpcAllocation, ObstacleWalkWithBoxesAndPolygons) {
-  if (!counterAvailable()) GTEST_SKIP() << "the allocation counter needs glibc (and no sanitizer)";
-  const WalkingParameters w;
-  GeneratorSettings settings;
-  settings.max_obstacles_in_qp = 4;
-  const Vector3d forward(0.2, 0.0, 0.0);
-  int with_obstacles = 0;
-  // The obstacles are given (that allocates) and walked among before the counted samples.
-  const LoopResult warm = countOverLoop(
-      w, settings, {{5, Vector3d::Zero()}}, {{40, forward}}, [&](PatternGenerator& generator) {
-        generator.setObstacles(corridor());
-        for (int k = 0; k < 40; ++k) runSample(generator, (5 + k) * w.sampling_period, forward);
-        with_obstacles = static_cast<int>((generator.problem().obstacle_slot.array() >= 0).count());
-      });
-  EXPECT_GE(with_obstacles, 2) << "the corridor should put obstacles in the QP";
-  expectNoAllocation(warm, "NMPC, corridor of circles, boxes and polygons");
-}
-
-// Relaxed iterations too: a large obstacle given on the landing spot of the swing foot makes
-// the QP infeasible, the obstacle rows are relaxed (three relaxation stages are tried at most).
+// Relaxed iterations: a large obstacle given on the landing spot of the swing foot makes the
+// QP infeasible and the obstacle rows are relaxed (up to three relaxation stages are tried).
 TEST(NmpcAllocation, RelaxedObstacleIterations) {
   if (!counterAvailable()) GTEST_SKIP() << "the allocation counter needs glibc (and no sanitizer)";
   const WalkingParameters w;
@@ -363,20 +375,93 @@ TEST(NmpcAllocation, RelaxedObstacleIterations) {
     obstacles.push_back(wall);
     generator.setObstacles(obstacles);
   };
-  // Warm-up: the same situation once (every buffer of the relaxed solves touched), then again.
+  // The same situation once before counting (every buffer of the relaxed solves touched).
   std::vector<int> statuses;
   const LoopResult r = countOverLoop(
       w, settings, {{40, forward}}, {{30, forward}},
-      [&](PatternGenerator& generator) {
+      [&](PatternGenerator& generator, int& k) {
         block_the_landing(generator);
-        for (int k = 0; k < 30; ++k) runSample(generator, (40 + k) * w.sampling_period, forward);
+        for (int i = 0; i < 30; ++i, ++k) runSample(generator, k * w.sampling_period, forward);
         block_the_landing(generator);
       },
       &statuses);
-  statuses.resize(8, 0);
   EXPECT_GT(statuses[static_cast<int>(wpg::IterationStatus::kRelaxedObstacle)], 0)
       << "the test should force relaxed iterations";
   EXPECT_EQ(r.counts.allocations, 0) << "samples that allocated:" << r.where;
+}
+
+// --- OnlineWalkingGenerator: warmed-up control periods ----------------------------------
+
+// Warms up with `warmup`, then counts allocations over `counted` (segments in NMPC samples of
+// 20 control periods; the command is set at every period, a push in two of them, opposite).
+LoopResult countOverOnlineLoop(const WalkingParameters& w, std::vector<wpg::Obstacle> obstacles,
+                               const std::vector<Segment>& warmup,
+                               const std::vector<Segment>& counted) {
+  GeneratorSettings settings;
+  if (!obstacles.empty()) settings.max_obstacles_in_qp = static_cast<int>(obstacles.size());
+  wpg::OnlineWalkingGenerator generator(w, settings);
+  generator.setObstacles(std::move(obstacles));
+  const int periods = static_cast<int>(std::lround(w.sampling_period / w.control_period));
+  const Eigen::Vector2d push(0.0, 0.3);
+  auto sample = [&](const Vector3d& command) {
+    for (int i = 0; i < periods; ++i) {
+      generator.setCommand(command);
+      if (i == 3 || i == 13) generator.setPushAcceleration(i == 3 ? push : Eigen::Vector2d(-push));
+      generator.step();
+    }
+  };
+  for (const Segment& s : warmup)
+    for (int i = 0; i < s.samples; ++i) sample(s.command);
+  int obstacles_in_qp = 0;
+  LoopResult result = countOverSamples(counted, sample, [&] {
+    SampleRecord r;
+    r.status = static_cast<int>(generator.lastIteration().status);
+    r.pattern = generator.patternGenerator().problem().phase.pattern;
+    const Eigen::VectorXi& slots = generator.patternGenerator().problem().obstacle_slot;
+    for (int k = 0; k < slots.size(); ++k)
+      if (slots(k) >= 0) obstacles_in_qp |= 1 << slots(k);
+    return r;
+  });
+  result.obstacles_in_qp = obstacles_in_qp;
+  EXPECT_FALSE(generator.fallen());
+  return result;
+}
+
+TEST(NmpcAllocation, OnlineStepStartStopCycle) {
+  if (!counterAvailable()) GTEST_SKIP() << "the allocation counter needs glibc (and no sanitizer)";
+  WalkingParameters w;
+  w.max_step_yaw_change = 0.17;
+  const Vector3d zero = Vector3d::Zero(), forward(0.2, 0.0, 0.0), curve(0.2, 0.0, 0.2);
+  const std::vector<Segment> cycle{{5, zero}, {25, forward}, {10, curve}, {30, zero}};
+  const LoopResult r = countOverOnlineLoop(w, {}, cycle, cycle);
+  EXPECT_EQ(r.patterns_seen, (1 << (w.stepSamples() + 1)) - 1);  // walking 0..S-1, standing S
+  expectNoAllocation(r, "OnlineWalkingGenerator::step(), start/walk/curve/stop");
+}
+
+TEST(NmpcAllocation, OnlineStepWithCircleBoxAndPolygon) {
+  if (!counterAvailable()) GTEST_SKIP() << "the allocation counter needs glibc (and no sanitizer)";
+  WalkingParameters w;
+  w.max_step_yaw_change = 0.17;
+  wpg::Obstacle circle;
+  circle.center = Eigen::Vector2d(1.5, 0.9);
+  circle.radius = 0.2;
+  circle.margin = 0.1;
+  wpg::Obstacle box;
+  box.type = wpg::ObstacleType::kBox;
+  box.center = Eigen::Vector2d(2.5, -0.9);
+  box.size = Eigen::Vector2d(0.3, 0.4);
+  box.yaw = 0.3;
+  box.margin = 0.1;
+  wpg::Obstacle polygon;
+  polygon.type = wpg::ObstacleType::kPolygon;
+  polygon.vertices = {{3.5, 0.7}, {4.0, 0.8}, {3.8, 1.2}, {3.4, 1.1}};
+  polygon.margin = 0.05;
+  const Vector3d forward(0.2, 0.0, 0.0);
+  const LoopResult r =
+      countOverOnlineLoop(w, {circle, box, polygon}, {{30, forward}}, {{100, forward}});
+  EXPECT_EQ(r.patterns_seen & maskOf(kAllWalkingPatterns), maskOf(kAllWalkingPatterns));
+  EXPECT_EQ(r.obstacles_in_qp, 7) << "each obstacle must enter the QP in the counted loop";
+  expectNoAllocation(r, "OnlineWalkingGenerator::step() with a circle, a box and a polygon");
 }
 
 }  // namespace

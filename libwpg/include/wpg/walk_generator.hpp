@@ -1,7 +1,8 @@
 #pragma once
 // One whole walk, offline: the NMPC (or the LMPC baseline) every sampling period, the
 // interpolation at the control period, perturbations applied to the CoM. This is what
-// `wpg run` calls.
+// `wpg run` calls: a loop over OnlineWalkingGenerator (online_walking_generator.hpp) that
+// feeds it the request's commands and pushes and records every control period.
 #include <string>
 
 #include "wpg/obstacles.hpp"
@@ -13,8 +14,9 @@ namespace wpg {
 
 struct WalkResult {
   WalkTrajectory trajectory;
-  // false when some NMPC iteration ended in kFallback or kIterationLimit (the walk is still
-  // complete and recorded; `wpg run` then exits 1).
+  // false when some NMPC iteration's status fails the walk (iterationStatusFailsWalk: anything
+  // but solved or relaxed_obstacle), when the robot fell, or when a step landed inside an
+  // obstacle's margin; the walk is still complete and recorded (`wpg run` then exits 1).
   bool success = true;
   std::string message;  // one line: what went wrong first, empty on success
 };

@@ -37,6 +37,10 @@ struct GeneratorSettings {
   // the nearest ones whose bounding circle is within obstacle_reach of the support foot [m].
   int max_obstacles_in_qp = 4;
   double obstacle_reach = 1.5;
+
+  // Throws std::invalid_argument naming the bad field ("generator.<field>") and what was
+  // expected.
+  void validate() const;
 };
 
 // Command in the robot (free-flyer) frame, held from time t until the next entry.

@@ -32,6 +32,13 @@ enum class IterationStatus : std::uint8_t {
   kRelaxedBalance = 7,     // CoP (balance) rows had to be relaxed: the plan leaves the support
 };
 const char* iterationStatusName(IterationStatus status);
+// Whether an iteration with this status makes the walk a failure (WalkResult::success false,
+// `wpg run` exit 1; the walk is still complete and recorded): every status but kSolved and
+// kRelaxedObstacle. A relaxed obstacle row concerns previewed steps only (the robot is held in
+// front of an obstacle, the paper's "blocked"); a landed step inside a margin fails the walk
+// by itself (generateWalk checks every landing). Kinematics or balance relaxed, a dropped QP
+// (fallback, iteration limit), an SQP that did not converge and a fall all fail it.
+bool iterationStatusFailsWalk(IterationStatus status);
 
 struct Footstep {
   double landing_time = 0.0;  // [s]; 0 for the initial feet

@@ -1,30 +1,78 @@
 // Uses the installed wpg: HRP-2's default walking parameters and a walk request must validate,
-// and a bad value must be rejected with std::invalid_argument.
+// a bad value must be rejected with std::invalid_argument, the online API must generate a walk
+// (CoM and feet every control period) that goes forward, and generateWalk must agree with it.
+#include <cmath>
 #include <iostream>
 #include <stdexcept>
+#include <vector>
 
 #include <wpg/datasets/scenario.hpp>
+#include <wpg/online_walking_generator.hpp>
+#include <wpg/walk_generator.hpp>
 #include <wpg/walk_request.hpp>
 #include <wpg/walking_parameters.hpp>
+
+namespace {
+
+int fail(const char* what) {
+  std::cerr << what << "\n";
+  return 1;
+}
+
+}  // namespace
 
 int main() {
   wpg::WalkingParameters parameters;
   parameters.validate();
   wpg::WalkRequest request;
   request.validate();
-  parameters.com_height = -1.0;
+  wpg::WalkingParameters bad = parameters;
+  bad.com_height = -1.0;
   try {
-    parameters.validate();
-    std::cerr << "validate() accepted a negative CoM height\n";
-    return 1;
+    bad.validate();
+    return fail("validate() accepted a negative CoM height");
   } catch (const std::invalid_argument& e) {
     std::cout << "wpg::wpg ok (rejected: " << e.what() << ")\n";
   }
+
+  // The online API, as a controller embeds it: 4 s at 0.2 m/s, one step() per 5 ms.
+  wpg::OnlineWalkingGenerator generator(parameters, wpg::GeneratorSettings());
+  generator.reset(Eigen::Vector3d::Zero());
+  generator.setCommand(Eigen::Vector3d(0.2, 0.0, 0.0));
+  std::vector<wpg::ControlSample> samples;
+  int landings = 0;
+  while (generator.time() < 4.0 - 1e-9) {
+    samples.push_back(generator.step());
+    if (generator.lastIteration().status != wpg::IterationStatus::kSolved)
+      return fail("an NMPC iteration was not solved");
+    if (generator.landed()) ++landings;
+  }
+  // Read it back: finite CoM and feet, the robot moved forward, the feet took steps.
+  for (const wpg::ControlSample& s : samples) {
+    if (!s.com_position.allFinite() || !s.left_foot.allFinite() || !s.right_foot.allFinite())
+      return fail("non-finite CoM or foot in the online walk");
+  }
+  const wpg::ControlSample& last = samples.back();
+  const double forward = last.com_position.x() - samples.front().com_position.x();
+  const double feet = 0.5 * (last.left_foot.x() + last.right_foot.x());
+  if (samples.size() != 800 || !(forward > 0.4) || !(feet > 0.3) || landings < 3 ||
+      std::abs(last.com_position.y()) > 0.1)
+    return fail("the online walk did not go forward");
+  std::cout << "online API ok (" << samples.size() << " control periods, CoM " << forward
+            << " m forward, " << landings << " steps)\n";
+
+  // generateWalk is a loop over the same API.
+  request.duration = 4.0;
+  request.reference = {{0.0, Eigen::Vector3d(0.2, 0.0, 0.0)}};
+  const wpg::WalkResult walk = wpg::generateWalk(parameters, request);
+  if (!walk.success || walk.trajectory.size() != samples.size() + 1 ||
+      walk.trajectory.com[samples.size() - 1] != last.com_position)
+    return fail("generateWalk differs from the online API");
+
   // wpg::datasets: a missing scenario file is an InputError.
   try {
     wpg::datasets::loadScenario("/nonexistent/scenario.yaml", {}, "/nonexistent");
-    std::cerr << "loadScenario() accepted a missing file\n";
-    return 1;
+    return fail("loadScenario() accepted a missing file");
   } catch (const wpg::datasets::InputError& e) {
     std::cout << "wpg::datasets ok (rejected: " << e.what() << ")\n";
   }

@@ -1,0 +1,101 @@
+#pragma once
+// The walking phase bookkeeping of the pattern generator: standing, the starting double
+// support, the steps, the final side-by-side step, the phase time within a step, which foot
+// supports and where the feet stand. It turns them into the PhaseStructure of one NMPC sample
+// (which support each CoP sample uses, which previewed steps are fixed).
+//
+//  * A step lasts S = single + double support samples (8 x 0.1 s). The support foot of a
+//    step owns the CoP samples at phase times 0 .. S-1; the swing foot lifts at phase time 0
+//    and lands at S-1; the last period (S-1 -> S) is the double support in which the CoP
+//    passes to the landed foot. NMPC samples thus never fall inside a double support
+//    (paper Sec. III-C1), and at phase time S-1 the landed step is fixed in the problem.
+//  * Standing: double support with the CoP kept in the hull of both feet. A non-zero
+//    command starts walking: a double support of start_double_support_samples in which the
+//    CoP samples may use both feet (the CoM must first move towards the first support foot,
+//    which needs the CoP on the other side of it), then the first lift-off. A zero command is
+//    followed by one free step to slow down, then a side-by-side step, then standing again.
+#include <Eigen/Core>
+
+#include "wpg/nmpc.hpp"
+#include "wpg/walk_trajectory.hpp"
+#include "wpg/walking_parameters.hpp"
+
+namespace wpg {
+
+inline FootSide otherSide(FootSide side) {
+  return side == FootSide::kLeft ? FootSide::kRight : FootSide::kLeft;
+}
+
+// `local` (x, y, yaw) expressed in the frame of `base` (x, y, yaw), in the world frame.
+Eigen::Vector3d composePose(const Eigen::Vector3d& base, const Eigen::Vector3d& local);
+
+// Where a step of `side` would land from `previous` when following the robot-frame `command`
+// for one step duration: an initial guess for the linearization only (the NMPC chooses it).
+Eigen::Vector3d nominalStep(const WalkingParameters& parameters, const Eigen::Vector3d& previous,
+                            FootSide side, const Eigen::Vector3d& command);
+
+class GaitScheduler {
+ public:
+  explicit GaitScheduler(const WalkingParameters& parameters);
+
+  // Standing with the ankles side by side (initial_foot_separation) about `pose` = (x, y, yaw)
+  // of the point between them.
+  void reset(const Eigen::Vector3d& pose);
+
+  // What changed at the start of a sample.
+  struct SampleStart {
+    bool started = false;  // walking starts at this sample (the previewed steps need a guess)
+    FootSide first_swing = FootSide::kLeft;  // when started: the foot that lifts first
+    // The phase structure changed meaning (start, cancelled start, stop, reset): the rows
+    // of the previous active set do not describe this sample's problem.
+    bool structure_changed = false;
+  };
+  // Phase bookkeeping at the start of an NMPC sample for the clamped robot-frame command.
+  SampleStart beginSample(const Eigen::Vector3d& command);
+
+  // The phase structure of the current sample (and its CoP rows' steps, from the model).
+  void fillPhase(const NmpcModel& model, PhaseStructure& phase) const;
+
+  struct SampleEnd {
+    bool landed = false;          // the swing foot landed at the end of the period
+    bool step_completed = false;  // the landed foot became the support: steps move up one
+  };
+  // Ends the sampling period. `planned_landing` is the first previewed step of the solution
+  // (where a landing swing foot is put); `end_time` the time at the end of the period.
+  SampleEnd endSample(const Eigen::Vector3d& planned_landing, double end_time);
+
+  bool standing() const { return standing_; }
+  bool starting() const { return start_remaining_ > 0; }
+  // The swing foot is in the air during the period that starts at this sample.
+  bool swinging() const {
+    return !standing_ && start_remaining_ == 0 && phase_sample_ <= samples_per_step_ - 2;
+  }
+  SupportState supportState() const;
+  FootSide supportSide() const { return support_side_; }
+  int phaseSample() const { return phase_sample_; }
+  // Pose (x, y, yaw) on the ground; for the swing foot, its lift-off pose.
+  const Eigen::Vector3d& footPose(FootSide side) const {
+    return side == FootSide::kLeft ? left_ : right_;
+  }
+  // The free-flyer yaw of the feet on the ground: the mean of their yaws [rad].
+  double feetMeanYaw() const { return 0.5 * (left_.z() + right_.z()); }
+  const Footstep& lastLanding() const { return last_landing_; }
+
+ private:
+  Eigen::Vector3d& foot(FootSide side) { return side == FootSide::kLeft ? left_ : right_; }
+  void setDoubleSupport(PhaseStructure& phase) const;
+
+  WalkingParameters parameters_;
+  int samples_per_step_ = 0;  // S
+  Eigen::Vector3d left_ = Eigen::Vector3d::Zero(), right_ = Eigen::Vector3d::Zero();
+  Footstep last_landing_;
+  bool standing_ = true;
+  FootSide support_side_ = FootSide::kRight;
+  int phase_sample_ = 0;        // 0 .. S-1 within the current step
+  int start_remaining_ = 0;     // > 0: starting double support, samples left before S-1
+  int zero_command_steps_ = 0;  // consecutive step starts with a zero command
+  bool stop_step_ = false;      // the current swing is the final side-by-side step
+  bool structure_changed_ = false;
+};
+
+}  // namespace wpg

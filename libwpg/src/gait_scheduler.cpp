@@ -1,0 +1,181 @@
+#include "wpg/gait_scheduler.hpp"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+
+namespace wpg {
+namespace {
+
+bool isZeroCommand(const Eigen::Vector3d& command) { return command.cwiseAbs().maxCoeff() < 1e-9; }
+
+}  // namespace
+
+Eigen::Vector3d composePose(const Eigen::Vector3d& base, const Eigen::Vector3d& local) {
+  const double c = std::cos(base.z()), s = std::sin(base.z());
+  return {base.x() + c * local.x() - s * local.y(), base.y() + s * local.x() + c * local.y(),
+          base.z() + local.z()};
+}
+
+Eigen::Vector3d nominalStep(const WalkingParameters& w, const Eigen::Vector3d& previous,
+                            FootSide side, const Eigen::Vector3d& command) {
+  const double T_step = w.stepDuration();
+  const double lateral = 0.5 * (w.feasibility_y[0] + w.feasibility_y[2]);
+  const double yaw = std::clamp(command.z() * T_step, -w.max_step_yaw_change, w.max_step_yaw_change);
+  const double sign = side == FootSide::kLeft ? 1.0 : -1.0;
+  return composePose(previous, {command.x() * T_step, sign * lateral + command.y() * T_step, yaw});
+}
+
+GaitScheduler::GaitScheduler(const WalkingParameters& parameters)
+    : parameters_(parameters), samples_per_step_(parameters.stepSamples()) {
+  reset(Eigen::Vector3d::Zero());
+}
+
+void GaitScheduler::reset(const Eigen::Vector3d& pose) {
+  const double half = 0.5 * parameters_.initial_foot_separation;
+  left_ = composePose(pose, {0.0, half, 0.0});
+  right_ = composePose(pose, {0.0, -half, 0.0});
+  last_landing_ = Footstep();
+  standing_ = true;
+  support_side_ = FootSide::kRight;
+  phase_sample_ = 0;
+  start_remaining_ = 0;
+  zero_command_steps_ = 0;
+  stop_step_ = false;
+  structure_changed_ = true;
+}
+
+GaitScheduler::SampleStart GaitScheduler::beginSample(const Eigen::Vector3d& command) {
+  const int S = samples_per_step_;
+  const bool zero = isZeroCommand(command);
+  SampleStart start;
+  if (start_remaining_ > 0 && zero) {
+    start_remaining_ = 0;  // start cancelled: back to standing
+    standing_ = true;
+    structure_changed_ = true;
+  }
+  if (standing_) {
+    if (!zero) {
+      // Start: the foot that swings first is on the side of the lateral / turning motion.
+      const FootSide swing_first =
+          (command.y() < 0.0 || (command.y() == 0.0 && command.z() < 0.0)) ? FootSide::kRight
+                                                                           : FootSide::kLeft;
+      standing_ = false;
+      support_side_ = swing_first;  // as if swing_first had been the support foot ...
+      phase_sample_ = S - 1;        // ... and the other foot had just landed, after
+      start_remaining_ = parameters_.start_double_support_samples - 1;  // the starting double support
+      zero_command_steps_ = 0;
+      stop_step_ = false;
+      structure_changed_ = true;
+      start.started = true;
+      start.first_swing = swing_first;
+    }
+  } else if (start_remaining_ == 0) {
+    if (phase_sample_ == 0) {
+      zero_command_steps_ = zero ? zero_command_steps_ + 1 : 0;
+      stop_step_ = zero && zero_command_steps_ >= 2;
+    } else if (!zero) {
+      stop_step_ = false;
+    }
+    if (phase_sample_ == S - 1 && stop_step_ && zero) {
+      standing_ = true;  // the final step has landed side by side
+      stop_step_ = false;
+      structure_changed_ = true;
+    }
+  }
+  start.structure_changed = structure_changed_;
+  structure_changed_ = false;
+  return start;
+}
+
+SupportState GaitScheduler::supportState() const {
+  if (!swinging()) return SupportState::kDouble;
+  return support_side_ == FootSide::kLeft ? SupportState::kLeft : SupportState::kRight;
+}
+
+// Double support on parallel side-by-side feet: the hull of both margin-reduced soles is a
+// rectangle about the point between the ankles.
+void GaitScheduler::setDoubleSupport(PhaseStructure& phase) const {
+  const WalkingParameters& w = parameters_;
+  const Eigen::Vector3d mid = 0.5 * (left_ + right_);
+  const double c = std::cos(mid.z()), s = std::sin(mid.z());
+  const Eigen::Vector2d offset = (left_ - right_).head<2>();
+  const double separation = std::abs(-s * offset.x() + c * offset.y());
+  phase.support_pose = mid;
+  phase.support_half_length = w.copHalfLength();
+  phase.support_half_width = 0.5 * separation + w.copHalfWidth();
+}
+
+void GaitScheduler::fillPhase(const NmpcModel& model, PhaseStructure& phase) const {
+  const WalkingParameters& w = parameters_;
+  const int S = samples_per_step_;
+  const int nf = model.layout().steps;
+  assert(phase.step_fixed.size() == nf && phase.fixed_step_pose.cols() == nf);
+  if (standing_) {
+    phase.pattern = model.standingPattern();
+    setDoubleSupport(phase);
+    phase.first_step_side = FootSide::kLeft;
+    for (int i = 0; i < nf; ++i) {
+      phase.step_fixed(i) = 1;
+      phase.fixed_step_pose.col(i) = phase.stepSide(i) == FootSide::kLeft ? left_ : right_;
+    }
+  } else if (start_remaining_ > 0) {
+    // Starting: the first samples on both feet, then on the first support foot (previewed
+    // step 1, already on the ground), then the first swing's landing (free).
+    phase.pattern = start_remaining_;
+    setDoubleSupport(phase);
+    phase.first_step_side = otherSide(support_side_);
+    phase.step_fixed.setZero();
+    phase.step_fixed(0) = 1;
+    phase.fixed_step_pose.col(0) = footPose(phase.first_step_side);
+  } else {
+    const int m = phase_sample_;
+    phase.pattern = S - 1 - m;
+    phase.support_pose = footPose(support_side_);
+    phase.support_half_length = w.copHalfLength();
+    phase.support_half_width = w.copHalfWidth();
+    phase.first_step_side = otherSide(support_side_);
+    phase.step_fixed.setZero();
+    if (m == S - 1) {
+      // The swing foot has landed: step 1 is where it stands.
+      phase.step_fixed(0) = 1;
+      phase.fixed_step_pose.col(0) = footPose(phase.first_step_side);
+    } else if (stop_step_) {
+      // Final step: side by side with the support foot, same yaw.
+      const double sign = phase.first_step_side == FootSide::kLeft ? 1.0 : -1.0;
+      phase.step_fixed(0) = 1;
+      phase.fixed_step_pose.col(0) =
+          composePose(phase.support_pose, {0.0, sign * w.stop_foot_separation, 0.0});
+    }
+  }
+  model.rowStepsOf(phase.pattern, phase.row_step);
+}
+
+GaitScheduler::SampleEnd GaitScheduler::endSample(const Eigen::Vector3d& planned_landing,
+                                                  double end_time) {
+  const int S = samples_per_step_;
+  SampleEnd end;
+  if (start_remaining_ > 0) {
+    --start_remaining_;  // reaching 0 means the regular phase time S-1 (step 1 on the ground)
+  } else if (!standing_) {
+    if (phase_sample_ == S - 2) {
+      const FootSide side = otherSide(support_side_);
+      foot(side) = planned_landing;
+      last_landing_.landing_time = end_time;
+      last_landing_.pose = planned_landing;
+      last_landing_.side = side;
+      end.landed = true;
+    }
+    if (phase_sample_ == S - 1) {
+      // Step completed: the landed foot becomes the support.
+      support_side_ = otherSide(support_side_);
+      phase_sample_ = 0;
+      end.step_completed = true;
+    } else {
+      ++phase_sample_;
+    }
+  }
+  return end;
+}
+
+}  // namespace wpg

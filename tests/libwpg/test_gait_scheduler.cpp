@@ -1,0 +1,124 @@
+// GaitScheduler, the walking phase bookkeeping, on its own: start (starting double support,
+// first swing side), steps (swing, landing, completion), stop (free step, side-by-side step,
+// standing), and the PhaseStructure it gives each sample.
+#include <gtest/gtest.h>
+
+#include <Eigen/Core>
+#include <utility>
+
+#include "wpg/gait_scheduler.hpp"
+
+namespace {
+
+using Eigen::Vector3d;
+using wpg::FootSide;
+using wpg::GaitScheduler;
+using wpg::SupportState;
+using wpg::WalkingParameters;
+
+TEST(GaitScheduler, StandsUntilANonZeroCommand) {
+  const WalkingParameters w;
+  GaitScheduler gait(w);
+  gait.reset(Vector3d(1.0, 2.0, 0.0));
+  EXPECT_TRUE(gait.standing());
+  EXPECT_EQ(gait.footPose(FootSide::kLeft), Vector3d(1.0, 2.095, 0.0));
+  EXPECT_EQ(gait.footPose(FootSide::kRight), Vector3d(1.0, 1.905, 0.0));
+  // The first sample after a reset has a new structure; standing on does not.
+  EXPECT_TRUE(gait.beginSample(Vector3d::Zero()).structure_changed);
+  const GaitScheduler::SampleStart still = gait.beginSample(Vector3d::Zero());
+  EXPECT_FALSE(still.structure_changed);
+  EXPECT_FALSE(still.started);
+  EXPECT_EQ(gait.supportState(), SupportState::kDouble);
+  wpg::NmpcModel model(w);
+  wpg::NmpcProblem problem = model.makeProblem();
+  gait.fillPhase(model, problem.phase);
+  EXPECT_EQ(problem.phase.pattern, model.standingPattern());
+  EXPECT_EQ(problem.phase.support_pose, Vector3d(1.0, 2.0, 0.0));
+  EXPECT_NEAR(problem.phase.support_half_width, 0.095 + w.copHalfWidth(), 1e-12);
+  EXPECT_EQ(problem.phase.step_fixed.sum(), w.previewed_steps);
+}
+
+TEST(GaitScheduler, FirstSwingIsOnTheSideOfTheMotion) {
+  const WalkingParameters w;
+  for (const auto& [command, side] :
+       {std::pair{Vector3d(0.2, 0.0, 0.0), FootSide::kLeft},
+        std::pair{Vector3d(0.0, 0.1, 0.0), FootSide::kLeft},
+        std::pair{Vector3d(0.2, -0.1, 0.0), FootSide::kRight},
+        std::pair{Vector3d(0.2, 0.0, -0.1), FootSide::kRight}}) {
+    GaitScheduler gait(w);
+    const GaitScheduler::SampleStart start = gait.beginSample(command);
+    EXPECT_TRUE(start.started);
+    EXPECT_TRUE(start.structure_changed);
+    EXPECT_EQ(start.first_swing, side) << command.transpose();
+  }
+}
+
+// One walk through the phases: start, steps with a landing each, stop, standing.
+TEST(GaitScheduler, StartsStepsAndStops) {
+  const WalkingParameters w;
+  const int S = w.stepSamples();
+  wpg::NmpcModel model(w);
+  wpg::NmpcProblem problem = model.makeProblem();
+  GaitScheduler gait(w);
+  const Vector3d forward(0.2, 0.0, 0.0);
+  double t = 0.0;
+  bool starting = false, swinging = false;  // during the sample
+  auto sample = [&](const Vector3d& command, const Vector3d& landing) {
+    const GaitScheduler::SampleStart start = gait.beginSample(command);
+    gait.fillPhase(model, problem.phase);
+    starting = gait.starting();
+    swinging = gait.swinging();
+    t += w.sampling_period;
+    return std::make_pair(start, gait.endSample(landing, t));
+  };
+  // Starting double support: start_double_support_samples samples without a swing, the CoP
+  // on both feet in all but the last (on the first support foot, as at a step's end).
+  for (int k = 0; k < w.start_double_support_samples; ++k) {
+    const auto [start, end] = sample(forward, Vector3d::Zero());
+    EXPECT_EQ(start.started, k == 0);
+    EXPECT_EQ(starting, k + 1 < w.start_double_support_samples) << "sample " << k;
+    EXPECT_FALSE(swinging);
+    EXPECT_FALSE(end.landed);
+    EXPECT_EQ(end.step_completed, k + 1 == w.start_double_support_samples);
+  }
+  // Steps: swing S-1 samples (left first), land at the end of the last, complete at the next.
+  FootSide swing = FootSide::kLeft;
+  for (int step = 0; step < 3; ++step, swing = wpg::otherSide(swing)) {
+    const Vector3d landing(0.15 * (step + 1), swing == FootSide::kLeft ? 0.1 : -0.1, 0.0);
+    for (int m = 0; m < S; ++m) {
+      const auto [start, end] = sample(forward, landing);
+      EXPECT_FALSE(start.structure_changed);
+      EXPECT_EQ(problem.phase.pattern, S - 1 - m);
+      EXPECT_EQ(swinging, m < S - 1);
+      EXPECT_EQ(problem.phase.first_step_side, swing);
+      EXPECT_EQ(end.landed, m == S - 2) << "step " << step << " sample " << m;
+      EXPECT_EQ(end.step_completed, m == S - 1);
+      if (end.landed) {
+        EXPECT_EQ(gait.footPose(swing), landing);
+        EXPECT_EQ(gait.lastLanding().pose, landing);
+        EXPECT_EQ(gait.lastLanding().side, swing);
+        EXPECT_DOUBLE_EQ(gait.lastLanding().landing_time, t);
+      }
+    }
+  }
+  // Stop: a zero command at a step start twice makes the second step the side-by-side one.
+  int samples_to_stand = 0;
+  bool fixed_side_by_side = false;
+  while (!gait.standing() && samples_to_stand < 4 * S) {
+    const Vector3d support = gait.footPose(gait.supportSide());
+    sample(Vector3d::Zero(), gait.footPose(wpg::otherSide(gait.supportSide())));
+    // Before it lands (pattern > 0), a fixed first step is the final side-by-side one.
+    if (!gait.standing() && problem.phase.pattern > 0 && problem.phase.step_fixed(0) == 1) {
+      const double side = problem.phase.first_step_side == FootSide::kLeft ? 1.0 : -1.0;
+      const Vector3d expected(support.x(), support.y() + side * w.stop_foot_separation, support.z());
+      EXPECT_TRUE(problem.phase.fixed_step_pose.col(0).isApprox(expected, 1e-12));
+      fixed_side_by_side = true;
+    }
+    ++samples_to_stand;
+  }
+  EXPECT_TRUE(fixed_side_by_side);
+  EXPECT_TRUE(gait.standing());
+  EXPECT_LE(samples_to_stand, 2 * S + 1);
+}
+
+}  // namespace
