@@ -1,8 +1,9 @@
 #pragma once
 // Convex obstacles on the ground for the NMPC's avoidance constraint (paper Sec. III-D,
-// eq. 18-19). libwpg only holds their description; the signed distance of general shapes
-// comes through ObstacleDistanceOracle, which planning/ implements with FCL (one world model
-// for the WPG and the route planner). Circles also have the paper's analytic form.
+// eq. 18-19): their description, and their exact 2-D signed distances (ObstacleSet), which the
+// NMPC's obstacle rows read. ObstacleDistanceOracle is the interface both ObstacleSet and
+// planning/'s FCL world implement (the world serves the route planner and the post-run
+// footstep checks, and is checked against ObstacleSet in tests).
 #include <string>
 #include <vector>
 
