@@ -35,9 +35,10 @@ const WalkingParameters& validated(const WalkingParameters& parameters,
 }  // namespace
 
 OnlineWalkingGenerator::OnlineWalkingGenerator(const WalkingParameters& parameters,
-                                               const GeneratorSettings& settings)
+                                               const GeneratorSettings& settings,
+                                               const ConstraintFamilies& extra_families)
     : settings_(settings),
-      generator_(validated(parameters, settings), settings),
+      generator_(validated(parameters, settings), settings, extra_families),
       sub_samples_(static_cast<int>(std::lround(parameters.sampling_period / parameters.control_period))),
       height_over_gravity_(parameters.com_height / parameters.gravity),
       omega0_(std::sqrt(parameters.gravity / parameters.com_height)) {

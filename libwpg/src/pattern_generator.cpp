@@ -6,9 +6,21 @@
 
 namespace wpg {
 
+namespace {
+
+NmpcModel makeModel(const WalkingParameters& parameters, const GeneratorSettings& settings,
+                    const ConstraintFamilies& extra_families) {
+  NmpcModel model(parameters, settings.max_obstacles_in_qp);
+  for (const auto& family : extra_families) model.addConstraintFamily(family);
+  return model;
+}
+
+}  // namespace
+
 PatternGenerator::PatternGenerator(const WalkingParameters& parameters,
-                                   const GeneratorSettings& settings)
-    : model_(parameters, settings.max_obstacles_in_qp),
+                                   const GeneratorSettings& settings,
+                                   const ConstraintFamilies& extra_families)
+    : model_(makeModel(parameters, settings, extra_families)),
       settings_(settings),
       solver_(model_),
       problem_(model_.makeProblem()),

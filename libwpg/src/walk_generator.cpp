@@ -62,10 +62,11 @@ void checkLandingsClear(const WalkingParameters& parameters, const WalkRequest& 
 
 }  // namespace
 
-WalkResult generateWalk(const WalkingParameters& parameters, const WalkRequest& request) {
+WalkResult generateWalk(const WalkingParameters& parameters, const WalkRequest& request,
+                        const ConstraintFamilies& extra_families) {
   parameters.validate();
   request.validate();
-  OnlineWalkingGenerator generator(parameters, request.generator);
+  OnlineWalkingGenerator generator(parameters, request.generator, extra_families);
   // Obstacle distances: libwpg's exact 2-D ones, as the NMPC's rows see them.
   if (!request.obstacles.empty()) {
     generator.setObstacles(request.obstacles);

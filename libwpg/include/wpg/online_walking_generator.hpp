@@ -42,7 +42,9 @@ class OnlineWalkingGenerator {
  public:
   // Throws std::invalid_argument when the parameters or the settings do not validate.
   // Starts standing at the origin (reset()).
-  OnlineWalkingGenerator(const WalkingParameters& parameters, const GeneratorSettings& settings);
+  // `extra_families`: constraint families added to the NMPC after the paper's ones.
+  OnlineWalkingGenerator(const WalkingParameters& parameters, const GeneratorSettings& settings,
+                         const ConstraintFamilies& extra_families = {});
 
   // Standing with the ankles side by side about `pose` = (x, y, yaw) [m, m, rad] of the point
   // between them, CoM at rest above it; time 0, zero command, no push; obstacles are kept.

@@ -8,6 +8,7 @@
 // the NMPC (or LMPC) solve, and the shift of the plan to the next sample (warm start).
 // OnlineWalkingGenerator (online_walking_generator.hpp) adds the control-period
 // interpolation of the CoM and the feet on top of it.
+#include <memory>
 #include <vector>
 
 #include <Eigen/Core>
@@ -19,9 +20,14 @@
 
 namespace wpg {
 
+using ConstraintFamilies = std::vector<std::shared_ptr<const ConstraintFamily>>;
+
 class PatternGenerator {
  public:
-  PatternGenerator(const WalkingParameters& parameters, const GeneratorSettings& settings);
+  // `extra_families`: constraint families added after the paper's ones
+  // (NmpcModel::addConstraintFamily), e.g. a new bound of the problem.
+  PatternGenerator(const WalkingParameters& parameters, const GeneratorSettings& settings,
+                   const ConstraintFamilies& extra_families = {});
 
   // Obstacles to avoid (eq. 18-19), taken by value, owned and validated (ObstacleSelector::set:
   // throws std::invalid_argument). Their distances are libwpg's exact 2-D ones (ObstacleSet).

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "wpg/obstacles.hpp"
+#include "wpg/pattern_generator.hpp"
 #include "wpg/walk_request.hpp"
 #include "wpg/walk_trajectory.hpp"
 #include "wpg/walking_parameters.hpp"
@@ -24,6 +25,8 @@ struct WalkResult {
 // Throws std::invalid_argument on invalid parameters or request (validate()). The obstacle
 // rows use libwpg's exact 2-D signed distances (ObstacleSet); planning/'s FCL world checks the
 // footsteps after the run.
-WalkResult generateWalk(const WalkingParameters& parameters, const WalkRequest& request);
+// `extra_families`: constraint families added to the NMPC after the paper's ones.
+WalkResult generateWalk(const WalkingParameters& parameters, const WalkRequest& request,
+                        const ConstraintFamilies& extra_families = {});
 
 }  // namespace wpg
