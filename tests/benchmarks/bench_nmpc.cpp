@@ -117,6 +117,57 @@ BENCHMARK(BM_NmpcIterationCurve)->UseManualTime()->Unit(benchmark::kMicrosecond)
 BENCHMARK(BM_NmpcConvergedSqpForward)->UseManualTime()->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_LmpcIterationCurve)->UseManualTime()->Unit(benchmark::kMicrosecond);
 
+// The warm start's worth in time: the same 80 steady-walking problems of a forward walk solved
+// with the active set of the previous sample shifted (as the generator does) or from an empty
+// one (time per solve = the benchmark's time / solves). Counters: working-set updates per solve
+// (qp_iterations, the warm start's loading included) and the dual iterations alone.
+void solveSequence(benchmark::State& state, bool warm) {
+  const wpg::WalkingParameters parameters;
+  const wpg::GeneratorSettings settings;
+  wpg::PatternGenerator generator(parameters, settings);
+  std::vector<wpg::NmpcProblem> problems;
+  std::vector<Eigen::VectorXd> guesses;
+  std::vector<bool> completes;
+  Eigen::Vector3d com_x = generator.comX(), com_y = generator.comY();
+  for (int k = 0; k < 110; ++k) {
+    const Eigen::VectorXd guess = generator.solver().plan();
+    generator.update(k * parameters.sampling_period, Eigen::Vector3d(0.2, 0.0, 0.0));
+    const bool complete = generator.phaseSample() == parameters.stepSamples() - 1;
+    if (k >= 30) {
+      problems.push_back(generator.problem());
+      guesses.push_back(guess);
+      completes.push_back(complete);
+    }
+    for (int i = 0; i < 20; ++i) {
+      wpg::integrateJerk(com_x, generator.plan().jerk_x, parameters.control_period);
+      wpg::integrateJerk(com_y, generator.plan().jerk_y, parameters.control_period);
+    }
+    generator.advance(com_x, com_y);
+  }
+  wpg::NmpcSolver solver(generator.model());
+  long updates = 0, dual = 0, solves = 0;
+  for (auto _ : state) {
+    solver.clearActiveSet();
+    for (std::size_t i = 0; i < problems.size(); ++i) {
+      solver.plan() = guesses[i];
+      if (!warm) solver.clearActiveSet();
+      const wpg::NmpcSolveResult result = solver.solve(generator.model(), problems[i], settings);
+      if (result.status != wpg::IterationStatus::kSolved) state.SkipWithError("not solved");
+      updates += result.qp_iterations;
+      dual += result.qp_iterations - result.qp_warm_start_updates;
+      ++solves;
+      if (warm) solver.shiftActiveSet(generator.model(), completes[i]);
+    }
+  }
+  state.counters["solves"] = static_cast<double>(problems.size());  // per benchmark iteration
+  state.counters["qp_iterations"] = static_cast<double>(updates) / std::max(1L, solves);
+  state.counters["dual_iterations"] = static_cast<double>(dual) / std::max(1L, solves);
+}
+void BM_NmpcSolveWarmStart(benchmark::State& state) { solveSequence(state, true); }
+void BM_NmpcSolveColdStart(benchmark::State& state) { solveSequence(state, false); }
+BENCHMARK(BM_NmpcSolveWarmStart)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_NmpcSolveColdStart)->Unit(benchmark::kMicrosecond);
+
 // A 20 s walk as `wpg run` does it, in one process: generation, interpolation at 5 ms and
 // the HDF5 dataset (written to a temporary file, then renamed).
 void BM_Walk20sWithDataset(benchmark::State& state) {
