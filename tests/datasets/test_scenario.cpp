@@ -1,6 +1,9 @@
 // Scenario files: the shipped ones load with the expected values, every malformed input is
 // an InputError naming the file and the key, --set overrides work, the resolved YAML
 // reproduces the scenario.
+//
+// Why ~560 lines: one file for the scenario format: every key's reading, error message and
+// override path is a row or two of the tables below.
 #include <filesystem>
 #include <fstream>
 #include <functional>

@@ -22,6 +22,10 @@
 // rows use a relative test (see QpSettings::dependence_tolerance), and a dependent row whose
 // violation is within rounding of the working set is set aside instead of reported as proof of
 // infeasibility (degenerate vertices).
+//
+// Why one file of ~550 lines: solve() is one algorithm whose steps (equalities, warm start, dual
+// iterations with partial steps) share the factorization state J, R and the working set;
+// splitting it would scatter one proof-carrying loop across files.
 #include <algorithm>
 #include <cmath>
 #include <limits>
