@@ -4,6 +4,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "value_checks.hpp"
+
 namespace wpg {
 
 bool parseGeneratorAlgorithm(const std::string& name, GeneratorAlgorithm* out) {
@@ -42,13 +44,9 @@ Eigen::Vector2d WalkRequest::pushAccelerationAt(double t) const {
 
 namespace {
 [[noreturn]] void fail(const std::string& key, const std::string& expected, const std::string& got) {
-  throw std::invalid_argument("'" + key + "': expected " + expected + ", got " + got);
+  detail::failValue("", key, expected, got);
 }
-std::string str(double v) {
-  std::ostringstream os;
-  os << v;
-  return os.str();
-}
+std::string str(double v) { return detail::formatValue(v); }
 }  // namespace
 
 void WalkRequest::validate() const {

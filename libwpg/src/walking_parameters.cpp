@@ -4,16 +4,14 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "value_checks.hpp"
 #include "wpg/convex_polygon.hpp"
 
 namespace wpg {
 namespace {
 
 void require(bool ok, const char* field, const std::string& expected, double got) {
-  if (ok) return;
-  std::ostringstream os;
-  os << "walking parameter '" << field << "': expected " << expected << ", got " << got;
-  throw std::invalid_argument(os.str());
+  detail::requireValue(ok, "walking parameter ", field, expected, got);
 }
 
 void requirePositive(double value, const char* field) {

@@ -1,0 +1,27 @@
+#pragma once
+// The one-line errors of libwpg's public validators (../shared/STYLE.md item 5): what was
+// expected and what came, naming the key as the scenario file spells it. Not installed.
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+namespace wpg::detail {
+
+// "<what>'<key>': expected <expected>, got <got>", e.g. what = "walking parameter ".
+[[noreturn]] inline void failValue(const std::string& what, const std::string& key,
+                                   const std::string& expected, const std::string& got) {
+  throw std::invalid_argument(what + "'" + key + "': expected " + expected + ", got " + got);
+}
+
+inline std::string formatValue(double value) {
+  std::ostringstream os;
+  os << value;
+  return os.str();
+}
+
+inline void requireValue(bool ok, const std::string& what, const std::string& key,
+                         const std::string& expected, double got) {
+  if (!ok) failValue(what, key, expected, formatValue(got));
+}
+
+}  // namespace wpg::detail
