@@ -17,6 +17,7 @@
 #include "wpg/lipm_prediction.hpp"
 #include "wpg/pattern_generator.hpp"
 #include "wpg/walk_generator.hpp"
+#include "../common/obstacle_fields.hpp"
 
 namespace {
 
@@ -88,26 +89,7 @@ void BM_LmpcIterationCurve(benchmark::State& state) {
 // Issue acceptance: three obstacles within reach of the previewed steps at every iteration
 // (a corridor of circles, boxes and polygons on both sides; libwpg's exact 2-D distances).
 void BM_NmpcIterationThreeObstacles(benchmark::State& state) {
-  std::vector<wpg::Obstacle> obstacles;
-  for (int i = 0; i < 60; ++i) {
-    wpg::Obstacle o;
-    const double x = 0.5 * i, y = (i % 2 ? 1.0 : -1.0);
-    o.margin = 0.1;
-    if (i % 3 == 0) {
-      o.type = wpg::ObstacleType::kCircle;
-      o.center = Eigen::Vector2d(x, y);
-      o.radius = 0.15;
-    } else if (i % 3 == 1) {
-      o.type = wpg::ObstacleType::kBox;
-      o.center = Eigen::Vector2d(x, y);
-      o.size = Eigen::Vector2d(0.3, 0.2);
-      o.yaw = 0.3;
-    } else {
-      o.type = wpg::ObstacleType::kPolygon;
-      o.vertices = {{x - 0.15, y - 0.1}, {x + 0.15, y - 0.1}, {x, y + 0.15}};
-    }
-    obstacles.push_back(o);
-  }
+  const std::vector<wpg::Obstacle> obstacles = wpg_test::obstacleCorridor(60, 1.0);
   runIterations(state, {0.2, 0.0, 0.0}, wpg::GeneratorAlgorithm::kNmpc, 1, &obstacles);
 }
 BENCHMARK(BM_NmpcIterationThreeObstacles)->UseManualTime()->Unit(benchmark::kMicrosecond)->MinTime(1.0);

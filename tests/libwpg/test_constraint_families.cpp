@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "../common/obstacle_fields.hpp"
 #include "nmpc_test_problems.hpp"
 #include "test_constraint_families.hpp"
 #include "wpg/nmpc.hpp"
@@ -32,22 +33,6 @@ using wpg::NmpcSolver;
 using wpg::RelaxationGroup;
 using wpg::WalkingParameters;
 using namespace wpg_test;
-
-std::vector<wpg::Obstacle> threeObstacles() {
-  std::vector<wpg::Obstacle> obstacles(3);
-  obstacles[0].center = Vector2d(0.6, 0.2);
-  obstacles[0].radius = 0.15;
-  obstacles[0].margin = 0.1;
-  obstacles[1].type = wpg::ObstacleType::kBox;
-  obstacles[1].center = Vector2d(-0.5, -0.4);
-  obstacles[1].size = Vector2d(0.4, 0.2);
-  obstacles[1].yaw = 0.6;
-  obstacles[1].margin = 0.05;
-  obstacles[2].type = wpg::ObstacleType::kPolygon;
-  obstacles[2].vertices = {{0.3, -0.9}, {0.7, -0.8}, {0.5, -0.5}};
-  obstacles[2].margin = 0.02;
-  return obstacles;
-}
 
 TEST(ConstraintFamilies, BuiltInFamiliesInTheLayoutsOrder) {
   const NmpcModel model(WalkingParameters(), 3);
@@ -75,7 +60,7 @@ TEST(ConstraintFamilies, EachFamilyMatchesFiniteDifferences) {
   w.max_step_yaw_change = 0.17;
   const NmpcModel model(w, 4);
   const NmpcLayout& L = model.layout();
-  const wpg::ObstacleSet obstacles(threeObstacles());
+  const wpg::ObstacleSet obstacles(wpg_test::threeObstacles());
   Rng rng(77);
   int points = 0;
   for (int pattern = 0; pattern < model.patternCount(); ++pattern) {

@@ -31,6 +31,7 @@
 #include <utility>
 #include <vector>
 
+#include "../common/obstacle_fields.hpp"
 #include "wpg/lipm_prediction.hpp"
 #include "wpg/online_walking_generator.hpp"
 #include "wpg/pattern_generator.hpp"
@@ -334,31 +335,6 @@ TEST(NmpcAllocation, StartStopCycle) {
   }
 }
 
-// A corridor of circles, boxes and polygons on both sides, several in the QP at every sample.
-std::vector<wpg::Obstacle> corridor() {
-  std::vector<wpg::Obstacle> obstacles;
-  for (int i = 0; i < 40; ++i) {
-    wpg::Obstacle o;
-    const double x = 0.5 * i, y = (i % 2 ? 0.9 : -0.9);
-    o.margin = 0.1;
-    if (i % 3 == 0) {
-      o.center = Eigen::Vector2d(x, y);
-      o.radius = 0.15;
-    } else if (i % 3 == 1) {
-      o.type = wpg::ObstacleType::kBox;
-      o.center = Eigen::Vector2d(x, y);
-      o.size = Eigen::Vector2d(0.3, 0.2);
-      o.yaw = 0.3;
-    } else {
-      o.type = wpg::ObstacleType::kPolygon;
-      o.vertices = {{x - 0.15, y - 0.1}, {x + 0.15, y - 0.1}, {x + 0.05, y + 0.15},
-                    {x - 0.1, y + 0.12}};
-    }
-    obstacles.push_back(o);
-  }
-  return obstacles;
-}
-
 // Relaxed iterations: a large obstacle given on the landing spot of the swing foot makes the
 // QP infeasible and the obstacle rows are relaxed (up to three relaxation stages are tried).
 TEST(NmpcAllocation, RelaxedObstacleIterations) {
@@ -367,7 +343,7 @@ TEST(NmpcAllocation, RelaxedObstacleIterations) {
   GeneratorSettings settings;
   const Vector3d forward(0.2, 0.0, 0.0);
   auto block_the_landing = [&](PatternGenerator& generator) {
-    std::vector<wpg::Obstacle> obstacles = corridor();
+    std::vector<wpg::Obstacle> obstacles = wpg_test::obstacleCorridor(40, 0.9);
     wpg::Obstacle wall;
     wall.center = generator.plan().swing_target.head<2>() + Eigen::Vector2d(0.25, 0.0);
     wall.radius = 0.3;

@@ -17,13 +17,6 @@
 namespace {
 
 using Eigen::MatrixXd;
-using Eigen::Vector3d;
-using Eigen::VectorXd;
-using wpg::FootSide;
-using wpg::NmpcLayout;
-using wpg::NmpcModel;
-using wpg::NmpcProblem;
-using wpg::WalkingParameters;
 
 using namespace wpg_test;
 

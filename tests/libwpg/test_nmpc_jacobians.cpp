@@ -15,19 +15,13 @@
 #include "wpg/nmpc.hpp"
 #include "wpg/obstacles.hpp"
 #include "wpg/walking_parameters.hpp"
+#include "../common/obstacle_fields.hpp"
 #include "nmpc_test_problems.hpp"
 
 namespace {
 
 using Eigen::MatrixXd;
 using Eigen::Vector2d;
-using Eigen::Vector3d;
-using Eigen::VectorXd;
-using wpg::FootSide;
-using wpg::NmpcLayout;
-using wpg::NmpcModel;
-using wpg::NmpcProblem;
-using wpg::WalkingParameters;
 
 using namespace wpg_test;
 
@@ -99,19 +93,7 @@ TEST(NmpcJacobian, ObstacleRowsMatchFiniteDifferences) {
   const NmpcLayout& L = model.layout();
   ASSERT_EQ(L.obstacle_slots, slots);
   ASSERT_EQ(L.inequalityCount(), 4 * L.horizon + L.feasibility_edges * L.steps + 2 * L.steps + slots * L.steps);
-  std::vector<wpg::Obstacle> obstacles(3);
-  obstacles[0].type = wpg::ObstacleType::kCircle;
-  obstacles[0].center = Vector2d(0.6, 0.2);
-  obstacles[0].radius = 0.15;
-  obstacles[0].margin = 0.1;
-  obstacles[1].type = wpg::ObstacleType::kBox;
-  obstacles[1].center = Vector2d(-0.5, -0.4);
-  obstacles[1].size = Vector2d(0.4, 0.2);
-  obstacles[1].yaw = 0.6;
-  obstacles[1].margin = 0.05;
-  obstacles[2].type = wpg::ObstacleType::kPolygon;
-  obstacles[2].vertices = {{0.3, -0.9}, {0.7, -0.8}, {0.5, -0.5}};
-  obstacles[2].margin = 0.02;
+  const std::vector<wpg::Obstacle> obstacles = wpg_test::threeObstacles();
   const wpg::AnalyticObstacleDistance distance(obstacles);
   Rng rng(31);
   int points = 0;
