@@ -86,13 +86,9 @@ const MpcIterationLog& PatternGenerator::update(double time, const Eigen::Vector
   solve();
   readPlan(time);
 
-  log_.time = time;
-  log_.qp_iterations = last_solve_.qp_iterations;
-  log_.sqp_iterations = last_solve_.sqp_iterations;
-  log_.status = last_solve_.status;
-  log_.cost = last_solve_.cost;
-  log_.slack = last_solve_.slack;
-  log_.relaxed_families = last_solve_.relaxed_families;
+  const NmpcSolveResult& r = last_solve_;
+  log_ = MpcIterationLog{time,          0.0,    r.qp_iterations,      r.sqp_iterations,
+                         r.status,      r.cost, r.relaxed_families,   r.slack};
   log_.solve_time =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return log_;

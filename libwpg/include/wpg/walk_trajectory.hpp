@@ -49,7 +49,7 @@ struct Footstep {
 struct MpcIterationLog {
   double time = 0.0;          // [s]
   double solve_time = 0.0;    // [s], wall time of the whole iteration (linearize + QP(s))
-  int qp_iterations = 0;      // active-set iterations, summed over SQP iterations
+  int qp_iterations = 0;      // working-set updates of its QPs (warm starts included)
   int sqp_iterations = 0;     // QPs solved in this sample
   IterationStatus status = IterationStatus::kSolved;
   double cost = 0.0;          // value of the NMPC cost (5) at the applied solution

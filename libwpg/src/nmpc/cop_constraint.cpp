@@ -11,11 +11,9 @@ using nmpc_internal::RotatedEdge;
 // Rectangle CoP polygon, Fig. 4: outward normals (+x, -x, +y, -y) of a_e' R(theta)(z - f) <= b_e.
 constexpr double kCopNormal[4][2] = {{1.0, 0.0}, {-1.0, 0.0}, {0.0, 1.0}, {0.0, -1.0}};
 
-class CopConstraint final : public ConstraintFamily {
+class CopConstraint final : public NamedConstraintFamily {
  public:
-  const char* name() const override { return "cop"; }
-  const char* unit() const override { return "m"; }
-  RelaxationGroup group() const override { return RelaxationGroup::kBalance; }
+  CopConstraint() : NamedConstraintFamily("cop", "m", RelaxationGroup::kBalance) {}
   int rowCount(const NmpcLayout& L) const override { return NmpcLayout::kCopEdges * L.horizon; }
 
   // a_e' R(theta_j) (z_j - f_j) <= b_e with R(theta) = [c s; -s c] (eq. 11). Writing

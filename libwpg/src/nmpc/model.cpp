@@ -12,12 +12,9 @@
 namespace wpg {
 
 const char* relaxationGroupName(RelaxationGroup group) {
-  switch (group) {
-    case RelaxationGroup::kObstacle: return "obstacle";
-    case RelaxationGroup::kKinematics: return "kinematics";
-    case RelaxationGroup::kBalance: return "balance";
-  }
-  return "unknown";
+  constexpr const char* kNames[] = {"obstacle", "kinematics", "balance"};  // enum order
+  const auto index = static_cast<unsigned>(group);
+  return index < 3 ? kNames[index] : "unknown";
 }
 
 NmpcModel::NmpcModel(const WalkingParameters& parameters, int obstacle_slots)

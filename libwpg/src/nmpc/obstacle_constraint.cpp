@@ -6,11 +6,9 @@
 namespace wpg {
 namespace {
 
-class ObstacleConstraint final : public ConstraintFamily {
+class ObstacleConstraint final : public NamedConstraintFamily {
  public:
-  const char* name() const override { return "obstacle"; }
-  const char* unit() const override { return "m"; }
-  RelaxationGroup group() const override { return RelaxationGroup::kObstacle; }
+  ObstacleConstraint() : NamedConstraintFamily("obstacle", "m", RelaxationGroup::kObstacle) {}
   int rowCount(const NmpcLayout& L) const override { return L.obstacle_slots * L.steps; }
 
   void evaluate(const NmpcModel& model, const NmpcProblem& problem,

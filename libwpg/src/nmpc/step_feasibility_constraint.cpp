@@ -9,11 +9,9 @@ namespace {
 using nmpc_internal::PoseRef;
 using nmpc_internal::RotatedEdge;
 
-class StepFeasibilityConstraint final : public ConstraintFamily {
+class StepFeasibilityConstraint final : public NamedConstraintFamily {
  public:
-  const char* name() const override { return "step_feasibility"; }
-  const char* unit() const override { return "m"; }
-  RelaxationGroup group() const override { return RelaxationGroup::kKinematics; }
+  StepFeasibilityConstraint() : NamedConstraintFamily("step_feasibility", "m", RelaxationGroup::kKinematics) {}
   int rowCount(const NmpcLayout& L) const override { return L.feasibility_edges * L.steps; }
 
   // a_e' R(theta_prev) (F_i - F_prev) <= b_e; rows of fixed steps are inactive.

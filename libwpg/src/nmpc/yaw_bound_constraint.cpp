@@ -6,11 +6,9 @@
 namespace wpg {
 namespace {
 
-class YawBoundConstraint final : public ConstraintFamily {
+class YawBoundConstraint final : public NamedConstraintFamily {
  public:
-  const char* name() const override { return "yaw_bound"; }
-  const char* unit() const override { return "rad"; }
-  RelaxationGroup group() const override { return RelaxationGroup::kKinematics; }
+  YawBoundConstraint() : NamedConstraintFamily("yaw_bound", "rad", RelaxationGroup::kKinematics) {}
   int rowCount(const NmpcLayout& L) const override { return 2 * L.steps; }
 
   void evaluate(const NmpcModel& model, const NmpcProblem& problem,

@@ -56,6 +56,22 @@ class ConstraintFamily {
   virtual int shiftedRow(const NmpcLayout& layout, int row, bool step_completed) const = 0;
 };
 
+// A family whose name, unit and relaxation group are fixed at construction (the built-in ones
+// derive from it; so may new ones).
+class NamedConstraintFamily : public ConstraintFamily {
+ public:
+  NamedConstraintFamily(const char* name, const char* unit, RelaxationGroup group)
+      : name_(name), unit_(unit), group_(group) {}
+  const char* name() const override { return name_; }
+  const char* unit() const override { return unit_; }
+  RelaxationGroup group() const override { return group_; }
+
+ private:
+  const char* name_;
+  const char* unit_;
+  RelaxationGroup group_;
+};
+
 // The built-in families of the paper, in their registration order (rows as NmpcLayout's
 // copRow, feasibilityRow, yawRow, obstacleRow).
 std::unique_ptr<ConstraintFamily> makeCopConstraint();              // eq. (9)-(13)
