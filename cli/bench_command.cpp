@@ -1,8 +1,9 @@
 // `wpg bench [SCENARIO...]`: the timing profile of the paper's Sec. V-C table. For each
-// scenario: generate the walk, replay it with the dynamic filter, and report the wall time of
-// the whole control chain per NMPC iteration (NMPC + IK + multibody ZMP + filter): average,
-// standard deviation, minimum, maximum; the stage medians; the real-time factor of the
-// replay + filter. Nothing is written but the optional JSON file.
+// scenario: generate the walk, replay it with the dynamic filter (pipeline_stages.hpp), and
+// print the wall time of the whole control chain per NMPC iteration (NMPC + IK + multibody ZMP
+// + filter): average, standard deviation, minimum, maximum; the stage medians; the real-time
+// factor of the replay + filter (computed by analysis/chain_timing.hpp). Nothing is written but
+// the optional JSON file.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -19,7 +20,10 @@
 #include <unistd.h>
 
 #include "cli_common.hpp"
-#include "walk_pipeline.hpp"
+#include "pipeline_stages.hpp"
+#include "summary_printing.hpp"
+#include "wpg/analysis/chain_timing.hpp"
+#include "wpg/analysis/zmp_error.hpp"
 #include "wpg/datasets/input_error.hpp"
 #include "wpg/datasets/scenario.hpp"
 
@@ -28,60 +32,36 @@ namespace fs = std::filesystem;
 namespace wpg::cli {
 namespace {
 
-constexpr const char* kStageNames[4] = {"NMPC", "IK", "multibody ZMP", "filter"};
-constexpr const char* kStageKeys[4] = {"nmpc", "ik", "multibody_zmp", "filter"};
+// Labels and JSON keys of the chain's stages, in the order of analysis::ChainStage.
+constexpr const char* kStageNames[analysis::kChainStageCount] = {"NMPC", "IK", "multibody ZMP",
+                                                                 "filter"};
+constexpr const char* kStageKeys[analysis::kChainStageCount] = {"nmpc", "ik", "multibody_zmp",
+                                                                "filter"};
 
+// One column of the table: the numbers come from analysis/ (chain_timing.hpp, zmp_error.hpp).
 struct BenchRow {
   std::string name;
-  int iterations = 0;
-  double average = 0.0, std_dev = 0.0, min = 0.0, max = 0.0;  // [s] per NMPC iteration
-  double stage_median[4] = {0.0, 0.0, 0.0, 0.0};               // [s]
-  double walk_duration = 0.0;                                  // [s]
-  double replay_wall_time = 0.0;                               // [s]
+  analysis::ChainTiming timing;         // [s] per NMPC iteration
+  double walk_duration = 0.0;           // [s]
+  double replay_wall_time = 0.0;        // [s]
   double real_time_factor = 0.0;
-  double rms_before = 0.0, rms_after = 0.0, max_before = 0.0, max_after = 0.0;  // [m]
+  analysis::ZmpErrorComparison zmp;     // [m]
   int ik_failures = 0;
   bool walk_success = true;
 };
 
-double median(std::vector<double> values) {
-  if (values.empty()) return 0.0;
-  const std::size_t middle = values.size() / 2;
-  std::nth_element(values.begin(), values.begin() + middle, values.end());
-  const double upper = values[middle];
-  if (values.size() % 2) return upper;
-  return 0.5 * (upper + *std::max_element(values.begin(), values.begin() + middle));
-}
-
 BenchRow measure(const datasets::Scenario& scenario, const robots::RobotModel& model) {
   const WalkResult walk = generateScenarioWalk(scenario);
   const ReplayOutcome replay = replayScenarioWalk(model, scenario, walk.trajectory, true);
-  const MultibodyValidation& v = replay.validation;
   BenchRow row;
   row.name = scenario.name;
   row.walk_success = walk.success;
-  const Eigen::VectorXd& chain = v.chain_time;
-  row.iterations = static_cast<int>(chain.size());
-  if (chain.size() > 0) {
-    row.average = chain.mean();
-    row.std_dev = chain.size() > 1 ? std::sqrt((chain.array() - row.average).square().sum() /
-                                               static_cast<double>(chain.size() - 1))
-                                   : 0.0;
-    row.min = chain.minCoeff();
-    row.max = chain.maxCoeff();
-  }
-  for (int stage = 0; stage < 4; ++stage) {
-    const Eigen::VectorXd column = v.chain_stage_time.col(stage);
-    row.stage_median[stage] = median(std::vector<double>(column.data(), column.data() + column.size()));
-  }
+  row.timing = analysis::chainTiming(replay.validation);
   row.walk_duration = replay.walk_duration;
   row.replay_wall_time = replay.wall_time;
   row.real_time_factor = replay.realTimeFactor();
-  row.rms_before = v.before.rms;
-  row.rms_after = v.after.rms;
-  row.max_before = v.before.max;
-  row.max_after = v.after.max;
-  row.ik_failures = v.ik_failures;
+  row.zmp = analysis::compareZmpError(replay.validation);
+  row.ik_failures = replay.validation.ik_failures;
   return row;
 }
 
@@ -97,26 +77,28 @@ void printTable(std::ostream& out, const std::vector<BenchRow>& rows) {
   out << "Control chain per NMPC iteration (paper Sec. V-C): NMPC + IK + multibody ZMP + dynamic "
          "filter\n";
   line("[ms]", [](const BenchRow& r) { return r.name; });
-  line("Average", [](const BenchRow& r) { return fixed(1e3 * r.average, 3); });
-  line("Standard deviation", [](const BenchRow& r) { return fixed(1e3 * r.std_dev, 3); });
-  line("Minimum", [](const BenchRow& r) { return fixed(1e3 * r.min, 3); });
-  line("Maximum", [](const BenchRow& r) { return fixed(1e3 * r.max, 3); });
+  line("Average", [](const BenchRow& r) { return fixed(1e3 * r.timing.per_iteration.mean, 3); });
+  line("Standard deviation",
+       [](const BenchRow& r) { return fixed(1e3 * r.timing.per_iteration.std_dev, 3); });
+  line("Minimum", [](const BenchRow& r) { return fixed(1e3 * r.timing.per_iteration.min, 3); });
+  line("Maximum", [](const BenchRow& r) { return fixed(1e3 * r.timing.per_iteration.max, 3); });
   out << "Stage medians [ms]\n";
-  for (int stage = 0; stage < 4; ++stage) {
+  for (std::size_t stage = 0; stage < analysis::kChainStageCount; ++stage) {
     line(std::string("  ") + kStageNames[stage],
-         [stage](const BenchRow& r) { return fixed(1e3 * r.stage_median[stage], 3); });
+         [stage](const BenchRow& r) { return fixed(1e3 * r.timing.stage_median[stage], 3); });
   }
-  line("NMPC iterations", [](const BenchRow& r) { return std::to_string(r.iterations); });
+  line("NMPC iterations",
+       [](const BenchRow& r) { return std::to_string(r.timing.per_iteration.count); });
   line("Walk duration [s]", [](const BenchRow& r) { return fixed(r.walk_duration, 2); });
   line("Replay + filter wall time [s]", [](const BenchRow& r) { return fixed(r.replay_wall_time, 3); });
   line("Replay + filter real-time factor", [](const BenchRow& r) {
     return fixed(r.real_time_factor, 0) + "x";
   });
   line("ZMP error RMS [mm] before -> after", [](const BenchRow& r) {
-    return fixed(1e3 * r.rms_before, 1) + " -> " + fixed(1e3 * r.rms_after, 1);
+    return fixed(1e3 * r.zmp.before.rms, 1) + " -> " + fixed(1e3 * r.zmp.after.rms, 1);
   });
   line("ZMP error max [mm] before -> after", [](const BenchRow& r) {
-    return fixed(1e3 * r.max_before, 1) + " -> " + fixed(1e3 * r.max_after, 1);
+    return fixed(1e3 * r.zmp.before.max, 1) + " -> " + fixed(1e3 * r.zmp.after.max, 1);
   });
   out << "(chain: NMPC = the iteration's wall time; IK per sample summed over the iteration; "
          "multibody ZMP and filter over the whole walk, spread evenly over the iterations; "
@@ -146,21 +128,22 @@ void writeJson(const std::string& path, const std::vector<BenchRow>& rows) {
        << "  \"scenarios\": [\n";
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const BenchRow& r = rows[i];
-    json << "    {\"name\": " << jsonString(r.name) << ", \"nmpc_iterations\": " << r.iterations
-         << ", \"chain_time\": {\"average\": " << jsonNumber(r.average)
-         << ", \"std\": " << jsonNumber(r.std_dev) << ", \"min\": " << jsonNumber(r.min)
-         << ", \"max\": " << jsonNumber(r.max) << "}, \"stage_median\": {";
-    for (int stage = 0; stage < 4; ++stage) {
+    const analysis::SampleStatistics& chain = r.timing.per_iteration;
+    json << "    {\"name\": " << jsonString(r.name) << ", \"nmpc_iterations\": " << chain.count
+         << ", \"chain_time\": {\"average\": " << jsonNumber(chain.mean)
+         << ", \"std\": " << jsonNumber(chain.std_dev) << ", \"min\": " << jsonNumber(chain.min)
+         << ", \"max\": " << jsonNumber(chain.max) << "}, \"stage_median\": {";
+    for (std::size_t stage = 0; stage < analysis::kChainStageCount; ++stage) {
       json << (stage ? ", " : "") << "\"" << kStageKeys[stage]
-           << "\": " << jsonNumber(r.stage_median[stage]);
+           << "\": " << jsonNumber(r.timing.stage_median[stage]);
     }
     json << "}, \"walk_duration\": " << jsonNumber(r.walk_duration)
          << ", \"replay_wall_time\": " << jsonNumber(r.replay_wall_time)
          << ", \"real_time_factor\": " << jsonNumber(r.real_time_factor)
-         << ", \"zmp_error\": {\"rms_before\": " << jsonNumber(r.rms_before)
-         << ", \"rms_after\": " << jsonNumber(r.rms_after)
-         << ", \"max_before\": " << jsonNumber(r.max_before)
-         << ", \"max_after\": " << jsonNumber(r.max_after) << "}"
+         << ", \"zmp_error\": {\"rms_before\": " << jsonNumber(r.zmp.before.rms)
+         << ", \"rms_after\": " << jsonNumber(r.zmp.after.rms)
+         << ", \"max_before\": " << jsonNumber(r.zmp.before.max)
+         << ", \"max_after\": " << jsonNumber(r.zmp.after.max) << "}"
          << ", \"ik_failures\": " << r.ik_failures
          << ", \"walk_success\": " << (r.walk_success ? "true" : "false") << "}"
          << (i + 1 < rows.size() ? "," : "") << "\n";

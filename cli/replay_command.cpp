@@ -2,11 +2,13 @@
 // and dynamic filter -> the dataset again with the multibody fields (datasets/SCHEMA.md).
 #include <filesystem>
 #include <iostream>
+#include <optional>
 #include <stdexcept>
 #include <system_error>
 
 #include "cli_common.hpp"
-#include "walk_pipeline.hpp"
+#include "pipeline_stages.hpp"
+#include "summary_printing.hpp"
 #include "wpg/datasets/input_error.hpp"
 #include "wpg/datasets/run_dataset_reader.hpp"
 #include "wpg/datasets/scenario.hpp"
@@ -57,11 +59,11 @@ int replayCommand(const ReplayOptions& options) {
                        ec.message());
     }
   }
-  std::string obstacle_summary;
+  std::optional<ObstacleClearances> clearances;
   try {
     // Atomic (temporary file, then rename): overwriting RUN.h5 never leaves half a file.
-    obstacle_summary = writeScenarioDataset(dataset_path.string(), scenario, stored.result,
-                                            &replay.validation);
+    clearances = writeScenarioDataset(dataset_path.string(), scenario, stored.result,
+                                      &replay.validation);
   } catch (const std::invalid_argument& e) {
     throw std::runtime_error(std::string("cannot write the dataset: ") + e.what());
   }
@@ -72,7 +74,7 @@ int replayCommand(const ReplayOptions& options) {
             << (stored.result.success ? std::string()
                                       : " (the walk failed: " + stored.result.message + ")")
             << '\n';
-  std::cout << obstacle_summary;
+  if (clearances) printObstacleClearances(std::cout, *clearances);
   printMultibodySummary(std::cout, replay);
   reportDatasetAndFigure(dataset_path.string(), figure_path.string(), options.plot);
   return kExitSuccess;

@@ -2,19 +2,15 @@
 // dataset (+ figure) and a short summary.
 #include <unistd.h>
 
-#include <algorithm>
-#include <cmath>
-#include <cstdio>
 #include <filesystem>
 #include <iostream>
-#include <map>
-#include <sstream>
+#include <optional>
 #include <system_error>
 
-#include <optional>
-
 #include "cli_common.hpp"
-#include "walk_pipeline.hpp"
+#include "pipeline_stages.hpp"
+#include "summary_printing.hpp"
+#include "wpg/analysis/run_summary.hpp"
 #include "wpg/datasets/input_error.hpp"
 #include "wpg/datasets/scenario.hpp"
 #include "wpg/walk_generator.hpp"
@@ -28,56 +24,6 @@ namespace {
 std::string aboutFile(const std::string& path, const std::string& message) {
   if (message.find(path) != std::string::npos) return message;
   return path + ": " + message;
-}
-
-std::string format(const char* fmt, double value) {
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, fmt, value);
-  return buffer;
-}
-
-void printSummary(std::ostream& out, const datasets::Scenario& scenario, const WalkResult& result) {
-  const WalkTrajectory& trajectory = result.trajectory;
-  // Distance walked: length of the horizontal CoM path and net displacement.
-  double path_length = 0.0;
-  double displacement = 0.0;
-  for (std::size_t i = 1; i < trajectory.com.size(); ++i) {
-    path_length += (trajectory.com[i].head<2>() - trajectory.com[i - 1].head<2>()).norm();
-  }
-  if (!trajectory.com.empty()) {
-    displacement = (trajectory.com.back().head<2>() - trajectory.com.front().head<2>()).norm();
-  }
-  // The two initial feet are the first two footsteps; every other one is a step taken.
-  const std::size_t steps = trajectory.footsteps.size() > 2 ? trajectory.footsteps.size() - 2 : 0;
-  const double duration = trajectory.time.empty() ? 0.0 : trajectory.time.back() - trajectory.time.front();
-
-  std::map<int, int> status_counts;
-  std::vector<double> solve_us;
-  for (const MpcIterationLog& log : trajectory.mpc) {
-    ++status_counts[static_cast<int>(log.status)];
-    solve_us.push_back(log.solve_time * 1e6);
-  }
-  std::string statuses;
-  for (const auto& [status, count] : status_counts) {
-    statuses += (statuses.empty() ? "" : ", ") + std::to_string(count) + " " +
-                iterationStatusName(static_cast<IterationStatus>(status));
-  }
-
-  out << "scenario  " << scenario.name << " (" << scenario.source_path << "), robot "
-      << scenario.robot << ", " << generatorAlgorithmName(scenario.request.generator.algorithm)
-      << '\n';
-  out << "walked    " << format("%.3f", path_length) << " m along the CoM path, "
-      << format("%.3f", displacement) << " m net displacement, " << steps << " steps in "
-      << format("%.2f", duration) << " s\n";
-  out << "status    " << (statuses.empty() ? std::string("no NMPC iterations") : statuses) << " ("
-      << trajectory.mpc.size() << " NMPC iterations)\n";
-  if (!solve_us.empty()) {
-    std::sort(solve_us.begin(), solve_us.end());
-    const std::size_t n = solve_us.size();
-    const double median = n % 2 ? solve_us[n / 2] : 0.5 * (solve_us[n / 2 - 1] + solve_us[n / 2]);
-    out << "solve     median " << format("%.0f", median) << " us, max "
-        << format("%.0f", solve_us.back()) << " us per NMPC iteration\n";
-  }
 }
 
 }  // namespace
@@ -149,17 +95,17 @@ int runCommand(const RunOptions& options) {
       throw UsageError("cannot create the folder of '" + dataset_path.string() + "': " + ec.message());
     }
   }
-  std::string obstacle_summary;  // one line of the summary when the FCL world checked the steps
+  std::optional<ObstacleClearances> clearances;  // when the FCL world checked the steps
   try {
-    obstacle_summary = writeScenarioDataset(dataset_path.string(), scenario, result,
-                                            replay ? &replay->validation : nullptr);
+    clearances = writeScenarioDataset(dataset_path.string(), scenario, result,
+                                      replay ? &replay->validation : nullptr);
   } catch (const std::invalid_argument& e) {
     // an inconsistent trajectory is a bug, not bad input
     throw std::runtime_error(std::string("cannot write the dataset: ") + e.what());
   }
 
-  printSummary(std::cout, scenario, result);
-  std::cout << obstacle_summary;
+  printRunSummary(std::cout, scenario, analysis::summarizeRun(result.trajectory));
+  if (clearances) printObstacleClearances(std::cout, *clearances);
   if (replay) printMultibodySummary(std::cout, *replay);
   reportDatasetAndFigure(dataset_path.string(), figure_path.string(), options.plot);
   if (!result.success) {

@@ -1,11 +1,13 @@
 // Uses the installed wpg: HRP-2's default walking parameters and a walk request must validate,
 // a bad value must be rejected with std::invalid_argument, the online API must generate a walk
-// (CoM and feet every control period) that goes forward, and generateWalk must agree with it.
+// (CoM and feet every control period) that goes forward, generateWalk must agree with it, and
+// wpg::analysis must count its steps.
 #include <cmath>
 #include <iostream>
 #include <stdexcept>
 #include <vector>
 
+#include <wpg/analysis/run_summary.hpp>
 #include <wpg/datasets/scenario.hpp>
 #include <wpg/online_walking_generator.hpp>
 #include <wpg/walk_generator.hpp>
@@ -68,6 +70,14 @@ int main() {
   if (!walk.success || walk.trajectory.size() != samples.size() + 1 ||
       walk.trajectory.com[samples.size() - 1] != last.com_position)
     return fail("generateWalk differs from the online API");
+
+  // wpg::analysis: the summary of that walk counts the steps that the online API landed.
+  const wpg::analysis::RunSummary summary = wpg::analysis::summarizeRun(walk.trajectory);
+  if (summary.steps != static_cast<std::size_t>(landings) ||
+      summary.nmpc_iterations != walk.trajectory.mpc.size() || !(summary.displacement > 0.4))
+    return fail("wpg::analysis summary disagrees with the walk");
+  std::cout << "wpg::analysis ok (" << summary.steps << " steps, " << summary.displacement
+            << " m)\n";
 
   // wpg::datasets: a missing scenario file is an InputError.
   try {

@@ -1,0 +1,61 @@
+#pragma once
+// The pipeline of one scenario, stage by stage, as `wpg run`, `wpg replay` and `wpg bench` wire
+// it: scenario (datasets) -> generateWalk (NMPC + interpolation: libwpg) -> replayWalk (IK,
+// multibody ZMP, dynamic filter: robots) -> footstep checks (FCL world: planning) and the
+// dataset (datasets). Each function calls one library stage with the scenario's settings and
+// turns the stage's failures into the CLI's errors; the numbers of the summaries are computed
+// by analysis/, and printed by summary_printing.hpp.
+#include <optional>
+#include <string>
+
+#include "wpg/datasets/scenario.hpp"
+#include "wpg/multibody_validation.hpp"
+#include "wpg/robots/robot_model.hpp"
+#include "wpg/walk_generator.hpp"
+
+namespace wpg::cli {
+
+// <robots directory>/<robot>/<robot>.urdf: the multibody model of a robot folder.
+std::string robotUrdfPath(const std::string& robot);
+
+// The robot's multibody model; throws UsageError naming the URDF path when the robot has no
+// URDF or it cannot be read (checked before anything is generated or written).
+robots::RobotModel loadRobotModel(const std::string& robot);
+
+// Throws UsageError when the scenario's filter_settings give no preview controller (the
+// Riccati iteration does not converge), naming `scenario_path`.
+void checkFilterSettings(const datasets::Scenario& scenario, const std::string& scenario_path);
+
+// Stages NMPC and interpolation: generateWalk with the scenario's parameters and request.
+WalkResult generateScenarioWalk(const datasets::Scenario& scenario);
+
+// Stage replay + filter, with the wall time it took.
+struct ReplayOutcome {
+  MultibodyValidation validation;
+  double wall_time = 0.0;      // [s] of replayWalk (IK, inverse dynamics, filter, validation)
+  double walk_duration = 0.0;  // [s] covered by the walk's samples
+  double realTimeFactor() const;  // walk_duration / wall_time (analysis::realTimeFactor)
+};
+
+// replayWalk with the scenario's filter settings; `filter` false replays only.
+ReplayOutcome replayScenarioWalk(const robots::RobotModel& model,
+                                 const datasets::Scenario& scenario, const WalkTrajectory& walk,
+                                 bool filter);
+
+// The least clearances of the landed footsteps to the scenario's obstacles (FCL world,
+// wpg/planning/obstacle_checks.hpp), minima over the steps [m].
+struct ObstacleClearances {
+  int obstacle_count = 0;
+  double step_centre = 0.0;  // signed distance of the step centre - margin - obstacle_foot_radius:
+                             // the margin of the NMPC's constraint, >= 0 when it holds
+  double sole = 0.0;         // signed distance of the sole - margin
+  double sole_to_obstacle = 0.0;  // signed distance of the sole, margin not counted
+};
+
+// Stage dataset: writeRunDataset, with the footstep clearances of the FCL world when the
+// scenario has obstacles; returns those clearances (none without obstacles).
+std::optional<ObstacleClearances> writeScenarioDataset(
+    const std::string& path, const datasets::Scenario& scenario, const WalkResult& result,
+    const MultibodyValidation* multibody = nullptr);
+
+}  // namespace wpg::cli
