@@ -98,7 +98,7 @@ TEST(ConstraintFamilies, EachFamilyMatchesFiniteDifferences) {
 // finite-difference checker works on it, and the SQP to convergence satisfies it.
 TEST(ConstraintFamilies, AddedFamilyIsEnforced) {
   const WalkingParameters w;
-  NmpcModel model(w);
+  NmpcModel model(w, wpg::GeneratorSettings().max_obstacles_in_qp);  // the generator's slots
   // Compatible with the feasibility polygon (the next step lands 0.2 m to 0.4 m aside) but
   // tighter: at 0.3 m/s the step after next wants to land ~0.5 m ahead of the support.
   const double reach = 0.3;
@@ -182,7 +182,7 @@ TEST(ConstraintFamilies, StagedRelaxationNamesTheGroupThatGaveWay) {
                {RelaxationGroup::kKinematics, IterationStatus::kRelaxedKinematics},
                {RelaxationGroup::kBalance, IterationStatus::kRelaxedBalance}};
   for (const auto& c : cases) {
-    NmpcModel model(w);
+    NmpcModel model(w, wpg::GeneratorSettings().max_obstacles_in_qp);
     model.addConstraintFamily(std::make_shared<NeverHolds>(c.group));
     const int never = model.familyCount() - 1;
     NmpcSolver solver(model);
@@ -210,7 +210,7 @@ TEST(ConstraintFamilies, StagedRelaxationNamesTheGroupThatGaveWay) {
 TEST(ConstraintFamilies, ObstacleRowsRelaxFirst) {
   const WalkingParameters w;
   const Samples samples = walkingSamples(w, 4);
-  NmpcModel model(w);
+  NmpcModel model(w, wpg::GeneratorSettings().max_obstacles_in_qp);
   model.addConstraintFamily(std::make_shared<NeverHolds>(RelaxationGroup::kObstacle));
   model.addConstraintFamily(std::make_shared<StepReach>(0.3));  // binding, kinematics
   NmpcSolver solver(model);
@@ -229,7 +229,7 @@ TEST(ConstraintFamilies, ObstacleRowsRelaxFirst) {
 TEST(ConstraintFamilies, CappedQpKeepsTheShiftedPlan) {
   const WalkingParameters w;
   const Samples samples = walkingSamples(w, 8);
-  const NmpcModel model(w);
+  const NmpcModel model(w, wpg::GeneratorSettings().max_obstacles_in_qp);
   NmpcSolver solver(model);
   wpg::GeneratorSettings settings;
   settings.max_qp_iterations = 2;
@@ -248,6 +248,49 @@ TEST(ConstraintFamilies, CappedQpKeepsTheShiftedPlan) {
     EXPECT_TRUE(std::isfinite(result.cost));
   }
   EXPECT_GE(capped, 2);
+}
+
+// Public entry points check sizes and say which field was wrong.
+TEST(ConstraintFamilies, EntryPointsCheckSizes) {
+  const NmpcModel model(WalkingParameters(), 2);
+  NmpcSolver solver(model);
+  const wpg::GeneratorSettings settings;
+  auto message = [](auto call) {
+    try {
+      call();
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string("no exception");
+  };
+  NmpcProblem problem = model.makeProblem();
+  problem.velocity_x.resize(3);
+  EXPECT_NE(message([&] { solver.solve(model, problem, settings); }).find("'velocity_x'"),
+            std::string::npos);
+  problem = model.makeProblem();
+  problem.obstacle_slot(1) = 0;  // no obstacles given
+  EXPECT_NE(message([&] { solver.solve(model, problem, settings); }).find("obstacle_slot[1]"),
+            std::string::npos);
+  problem = model.makeProblem();
+  problem.phase.pattern = model.patternCount();
+  EXPECT_NE(message([&] { solver.solveLmpc(model, problem, settings); }).find("phase.pattern"),
+            std::string::npos);
+  const NmpcModel other(WalkingParameters(), 3);  // more rows than the solver was built for
+  EXPECT_NE(message([&] { solver.solve(other, other.makeProblem(), settings); }).find("NmpcSolver"),
+            std::string::npos);
+  VectorXd g(5);
+  const VectorXd U = VectorXd::Zero(model.layout().variableCount());
+  EXPECT_NE(message([&] { wpg::evaluateConstraints(model, model.makeProblem(), U, g, nullptr); })
+                .find("evaluateConstraints"),
+            std::string::npos);
+  EXPECT_THROW(wpg::evaluateCost(model, model.makeProblem(), VectorXd::Zero(3)),
+               std::invalid_argument);
+  VectorXd gradient(4);
+  EXPECT_THROW(wpg::buildCostGradient(model, model.makeProblem(), gradient), std::invalid_argument);
+  // the right sizes go through (standing problem: every step fixed)
+  problem = model.makeProblem();
+  problem.phase.pattern = model.standingPattern();
+  EXPECT_EQ(message([&] { solver.solve(model, problem, settings); }), "no exception");
 }
 
 TEST(ConstraintFamilies, RegistrationIsChecked) {

@@ -1,6 +1,9 @@
 // The NMPC's cost, eq. (5)-(8): its linear term per sample and its value.
 #include "wpg/nmpc/cost.hpp"
 
+#include <stdexcept>
+#include <string>
+
 #include "nmpc_internal.hpp"
 
 namespace wpg {
@@ -8,6 +11,12 @@ namespace wpg {
 void buildCostGradient(const NmpcModel& model, const NmpcProblem& problem,
                        Eigen::Ref<Eigen::VectorXd> gradient) {
   const NmpcLayout& L = model.layout();
+  if (gradient.size() != L.variableCount()) {
+    throw std::invalid_argument("buildCostGradient: expected a gradient of " +
+                                std::to_string(L.variableCount()) + " entries, got " +
+                                std::to_string(gradient.size()));
+  }
+  model.checkProblem(problem);
   const LipmPrediction& P = model.prediction();
   const WalkingParameters& w = model.parameters();
   const int N = L.horizon, nf = L.steps;
@@ -50,6 +59,12 @@ void buildCostGradient(const NmpcModel& model, const NmpcProblem& problem,
 double evaluateCost(const NmpcModel& model, const NmpcProblem& problem,
                     const Eigen::Ref<const Eigen::VectorXd>& U) {
   const NmpcLayout& L = model.layout();
+  if (U.size() != L.variableCount()) {
+    throw std::invalid_argument("evaluateCost: expected U of " +
+                                std::to_string(L.variableCount()) + " entries, got " +
+                                std::to_string(U.size()));
+  }
+  model.checkProblem(problem);
   const LipmPrediction& P = model.prediction();
   const WalkingParameters& w = model.parameters();
   const int N = L.horizon, nf = L.steps;

@@ -114,6 +114,44 @@ std::vector<ConstraintFamilyInfo> NmpcModel::familyInfo() const {
   return info;
 }
 
+void NmpcModel::checkProblem(const NmpcProblem& problem) const {
+  const int N = layout_.horizon, nf = layout_.steps;
+  auto require = [](bool ok, const char* field, long expected, long got) {
+    if (!ok) {
+      throw std::invalid_argument(std::string("NMPC problem: '") + field + "': expected " +
+                                  std::to_string(expected) + " entries, got " +
+                                  std::to_string(got));
+    }
+  };
+  const PhaseStructure& phase = problem.phase;
+  require(phase.row_step.size() == N, "phase.row_step", N, phase.row_step.size());
+  require(phase.step_fixed.size() == nf, "phase.step_fixed", nf, phase.step_fixed.size());
+  require(phase.fixed_step_pose.cols() == nf, "phase.fixed_step_pose (columns)", nf,
+          phase.fixed_step_pose.cols());
+  require(problem.velocity_x.size() == N, "velocity_x", N, problem.velocity_x.size());
+  require(problem.velocity_y.size() == N, "velocity_y", N, problem.velocity_y.size());
+  require(problem.velocity_past_x.size() == N, "velocity_past_x", N, problem.velocity_past_x.size());
+  require(problem.velocity_past_y.size() == N, "velocity_past_y", N, problem.velocity_past_y.size());
+  require(problem.yaw_reference.size() == nf, "yaw_reference", nf, problem.yaw_reference.size());
+  require(problem.obstacle_slot.size() == layout_.obstacle_slots, "obstacle_slot",
+          layout_.obstacle_slots, problem.obstacle_slot.size());
+  if (phase.pattern < 0 || phase.pattern >= patternCount()) {
+    throw std::invalid_argument("NMPC problem: 'phase.pattern': expected 0 to " +
+                                std::to_string(patternCount() - 1) + ", got " +
+                                std::to_string(phase.pattern));
+  }
+  const int obstacles = problem.obstacles ? problem.obstacles->obstacleCount() : 0;
+  for (int k = 0; k < problem.obstacle_slot.size(); ++k) {
+    const int index = problem.obstacle_slot(k);
+    if (index >= obstacles) {
+      throw std::invalid_argument("NMPC problem: 'obstacle_slot[" + std::to_string(k) +
+                                  "]': expected -1 or an index below the " +
+                                  std::to_string(obstacles) + " obstacles, got " +
+                                  std::to_string(index));
+    }
+  }
+}
+
 int NmpcModel::familyOfRow(int row) const {
   for (int k = 0; k < familyCount(); ++k)
     if (row < family_first_row_[k + 1]) return k;
@@ -149,6 +187,20 @@ NmpcProblem NmpcModel::makeProblem() const {
 void evaluateConstraints(const NmpcModel& model, const NmpcProblem& problem,
                          const Eigen::Ref<const Eigen::VectorXd>& U,
                          Eigen::Ref<Eigen::VectorXd> g, Eigen::MatrixXd* jacobian) {
+  const NmpcLayout& L = model.layout();
+  if (U.size() != L.variableCount() || g.size() != L.inequalityCount() ||
+      (jacobian && (jacobian->rows() != L.inequalityCount() ||
+                    jacobian->cols() != L.variableCount()))) {
+    throw std::invalid_argument(
+        "evaluateConstraints: expected U of " + std::to_string(L.variableCount()) + ", g of " +
+        std::to_string(L.inequalityCount()) + " and a " + std::to_string(L.inequalityCount()) +
+        " x " + std::to_string(L.variableCount()) + " Jacobian, got " +
+        std::to_string(U.size()) + ", " + std::to_string(g.size()) +
+        (jacobian ? " and " + std::to_string(jacobian->rows()) + " x " +
+                        std::to_string(jacobian->cols())
+                  : std::string()));
+  }
+  model.checkProblem(problem);
   if (jacobian) jacobian->setZero();
   for (int k = 0; k < model.familyCount(); ++k) {
     const int first = model.familyFirstRow(k), rows = model.familyRowCount(k);
@@ -159,6 +211,7 @@ void evaluateConstraints(const NmpcModel& model, const NmpcProblem& problem,
     } else {
       model.family(k).evaluate(model, problem, U, g.segment(first, rows), nullptr);
     }
+    eigen_assert(g.segment(first, rows).allFinite() && "a family wrote a non-finite row");
   }
 }
 

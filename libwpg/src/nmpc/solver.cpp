@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 #include "wpg/nmpc/cost.hpp"
 
@@ -84,6 +86,7 @@ NmpcSolver::NmpcSolver(const NmpcModel& model)
       workspace_(model) {}
 
 void NmpcSolver::shiftActiveSet(const NmpcModel& model, bool step_completed) {
+  checkModel(model);
   const NmpcLayout& L = model.layout();
   int kept = 0;
   int family = 0;
@@ -245,13 +248,28 @@ NmpcSolveResult NmpcSolver::runSqp(const NmpcModel& model, const NmpcProblem& pr
   return result;
 }
 
+void NmpcSolver::checkModel(const NmpcModel& model) const {
+  if (plan_.size() != model.layout().variableCount() ||
+      active_set_.size() != model.layout().inequalityCount() + model.familyCount()) {
+    throw std::invalid_argument(
+        "NmpcSolver: built for a model with " + std::to_string(plan_.size()) + " variables and " +
+        std::to_string(active_set_.size()) + " rows + slacks, given one with " +
+        std::to_string(model.layout().variableCount()) + " and " +
+        std::to_string(model.layout().inequalityCount() + model.familyCount()));
+  }
+}
+
 NmpcSolveResult NmpcSolver::solve(const NmpcModel& model, const NmpcProblem& problem,
                                   const GeneratorSettings& settings) {
+  checkModel(model);
+  model.checkProblem(problem);
   return runSqp(model, problem, settings, settings.sqp_iterations, nullptr);
 }
 
 NmpcSolveResult NmpcSolver::solveLmpc(const NmpcModel& model, const NmpcProblem& problem,
                                       const GeneratorSettings& settings) {
+  checkModel(model);
+  model.checkProblem(problem);
   NmpcWorkspace& ws = workspace_;
   const NmpcLayout& L = model.layout();
   const PhaseStructure& phase = problem.phase;

@@ -60,6 +60,10 @@ class NmpcModel {
 
   // Allocates a problem with the right sizes (not for the hot loop).
   NmpcProblem makeProblem() const;
+  // Throws std::invalid_argument saying which field of `problem` has the wrong size (or an
+  // obstacle slot pointing outside problem.obstacles, or a pattern out of range) and what was
+  // expected. Does not allocate unless it throws. The solver and the evaluators call it.
+  void checkProblem(const NmpcProblem& problem) const;
   // Name, unit and relaxation group of each family, in row order (for logs and datasets).
   std::vector<ConstraintFamilyInfo> familyInfo() const;
 

@@ -68,7 +68,8 @@ class NmpcSolver {
   const Eigen::VectorXd& plan() const { return plan_; }
 
   // Gauss-Newton SQP from plan(): settings.sqp_iterations QPs (1 = real-time iteration), or to
-  // convergence when 0 (bounded by max_sqp_iterations).
+  // convergence when 0 (bounded by max_sqp_iterations). Throws std::invalid_argument when the
+  // model or the problem does not have the sizes of the model this solver was built for.
   NmpcSolveResult solve(const NmpcModel& model, const NmpcProblem& problem,
                         const GeneratorSettings& settings);
   // Herdt et al. 2010 baseline: the step yaws from an orientation QP (J2 with the yaw bounds),
@@ -96,6 +97,8 @@ class NmpcSolver {
                     double slack_weight, RelaxationGroup relaxed_up_to,
                     NmpcSolveResult& result);
   void rememberActiveSet(const qp::DenseQpSolver& solver, int inequality_rows);
+  // Throws std::invalid_argument unless `model` has the sizes this solver was built for.
+  void checkModel(const NmpcModel& model) const;
 
   Eigen::VectorXd plan_;
   Eigen::VectorXi active_set_;  // active inequality rows of the last solve (warm start)
