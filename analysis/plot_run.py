@@ -14,6 +14,9 @@ few seconds of steady walking, and the distance |CoP - ZMP| over the whole walk.
 Needs Debian's python3-h5py and python3-matplotlib (run it with /usr/bin/python3: a pyenv
 python3 does not see them). The PNG is written atomically (temporary file, then rename).
 Exit status 2 with one line on stderr on a bad file.
+
+Why one file of ~600 lines: `wpg plot` runs it as one script with Debian's python3 (no
+package to install); its panels share the reading of the file and the styles above them.
 """
 import argparse
 import math
