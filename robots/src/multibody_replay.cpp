@@ -130,7 +130,8 @@ const MultibodyReplayResult& MultibodyReplay::runImpl(
   result_.dt = dt;
   differentiate(q, dt, result_.velocity, result_.acceleration);
   result_.base_wrench.resize(n, 6);
-  result_.joint_torques.resize(n, model_.jointCount());
+  Simbody& simbody = simbodyFor(q);
+  result_.joint_torques.resize(settings_.joint_torques ? n : 0, model_.jointCount());
   result_.zmp.resize(n, 2);
   result_.com.resize(n, 3);
   InverseDynamicsSample sample;
@@ -138,7 +139,7 @@ const MultibodyReplayResult& MultibodyReplay::runImpl(
     q_ = q.row(k).transpose();
     v_ = result_.velocity.row(k).transpose();
     a_ = result_.acceleration.row(k).transpose();
-    sampleDynamics(q_, v_, a_, sample, tau_);
+    sampleDynamics(simbody, q_, v_, a_, sample, tau_);
     if (com_force != nullptr) {  // the ground's share: minus the wrench of the force at the CoM
       const Eigen::Vector3d force = com_force->row(k).transpose();
       sample.base_wrench.head<3>() -= sample.com.cross(force);
@@ -146,7 +147,7 @@ const MultibodyReplayResult& MultibodyReplay::runImpl(
       sample.zmp = zmpOfWrench(sample.base_wrench);
     }
     result_.base_wrench.row(k) = sample.base_wrench.transpose();
-    result_.joint_torques.row(k) = tau_.transpose();
+    if (settings_.joint_torques) result_.joint_torques.row(k) = tau_.transpose();
     result_.zmp.row(k) = sample.zmp.transpose();
     result_.com.row(k) = sample.com.transpose();
   }
@@ -163,7 +164,7 @@ InverseDynamicsSample MultibodyReplay::inverseDynamics(const Eigen::Ref<const Ei
                                 std::to_string(model_.nv()) + " finite entries");
   }
   InverseDynamicsSample out;
-  sampleDynamics(q, v, a, out, tau_);
+  sampleDynamics(*simbody_, q, v, a, out, tau_);
   if (joint_torques != nullptr) *joint_torques = tau_;
   return out;
 }

@@ -38,6 +38,10 @@ SimTK::Rotation toRotation(const Eigen::Matrix3d& r) {
 
 }  // namespace
 
+// One Simbody system of the robot. Joints in `welded` (a mask over the joints, configuration
+// order) are not mobilities: their child body is merged, at the joint value `weld_values(k)`,
+// into the body it hangs from (mass, CoM and inertia summed: the same rigid assembly). With no
+// joint welded, every body of the model is a Simbody body.
 struct MultibodyReplay::Simbody {
   SimTK::MultibodySystem system;
   SimTK::SimbodyMatterSubsystem matter{system};
@@ -45,94 +49,161 @@ struct MultibodyReplay::Simbody {
   SimTK::Force::Gravity gravity;
   SimTK::State state;
   int free_q = 0, free_u = 0;  // first q (quaternion w x y z, then x y z) and u (w, v) of the root
-  std::vector<int> joint_q, joint_u;  // per joint k
+  std::vector<int> joint_q, joint_u;  // per joint k; -1 when welded
+  std::vector<bool> welded;           // per joint k
+  Eigen::VectorXd weld_values;        // per joint k: the value a welded joint is held at
   SimTK::Vector no_mobility_forces;   // empty: no applied mobility forces
   SimTK::Vector udot, residual;
+
+  Simbody(const RobotModel& model, double gravity_magnitude, std::vector<bool> welded_joints,
+          const Eigen::VectorXd& values);
 };
 
-MultibodyReplay::MultibodyReplay(const RobotModel& model, MultibodyReplaySettings settings)
-    : model_(model), settings_(settings), simbody_(std::make_unique<Simbody>()) {
-  if (!(settings_.gravity >= 0.0) || !std::isfinite(settings_.gravity)) {
-    throw std::invalid_argument("multibody replay: gravity must be finite and >= 0");
+MultibodyReplay::Simbody::Simbody(const RobotModel& model, double gravity_magnitude,
+                                  std::vector<bool> welded_joints, const Eigen::VectorXd& values)
+    : welded(std::move(welded_joints)), weld_values(values) {
+  const std::vector<Body>& bodies = model.bodies();
+  const std::size_t nb = bodies.size();
+  // Each model body goes into a Simbody body, its host (itself unless its joint is welded), at
+  // a fixed placement in the host frame. Mass properties are summed per host: mass, first
+  // moment and inertia about the host origin (parallel axis theorem), in the host frame.
+  std::vector<int> host(nb, 0);
+  std::vector<Pose> in_host(nb);
+  std::vector<double> mass(nb, 0.0);
+  std::vector<Eigen::Vector3d> first_moment(nb, Eigen::Vector3d::Zero());
+  std::vector<Eigen::Matrix3d> inertia_origin(nb, Eigen::Matrix3d::Zero());
+  std::vector<int> bodies_in_host(nb, 0);
+  for (std::size_t b = 0; b < nb; ++b) {
+    const Body& body = bodies[b];
+    if (body.parent >= 0 && welded[body.joint]) {
+      host[b] = host[body.parent];
+      in_host[b] = in_host[body.parent] * model.jointPlacement(body.joint, weld_values(body.joint));
+    } else {
+      host[b] = static_cast<int>(b);
+    }
+    const int h = host[b];
+    const Pose& x = in_host[b];
+    const Eigen::Vector3d c = x * body.com;
+    mass[h] += body.mass;
+    first_moment[h] += body.mass * c;
+    inertia_origin[h] += x.rotation * body.inertia * x.rotation.transpose() +
+                         body.mass * (c.squaredNorm() * Eigen::Matrix3d::Identity() -
+                                      c * c.transpose());
+    ++bodies_in_host[h];
   }
-  Simbody& s = *simbody_;
-  const std::vector<Body>& bodies = model_.bodies();
-  std::vector<SimTK::MobilizedBody> mobods;
-  mobods.reserve(bodies.size());
-  for (const Body& body : bodies) {
-    // Simbody wants the inertia about the body origin.
-    const Eigen::Matrix3d inertia_origin =
-        body.inertia + body.mass * (body.com.squaredNorm() * Eigen::Matrix3d::Identity() -
-                                    body.com * body.com.transpose());
+  std::vector<SimTK::MobilizedBody> mobods(nb);
+  for (std::size_t b = 0; b < nb; ++b) {
+    if (host[b] != static_cast<int>(b)) continue;
+    const Body& body = bodies[b];
+    // Simbody wants the inertia about the body origin; a body alone keeps its own CoM (no round
+    // trip through the first moment), so an unwelded system is the model's bodies exactly.
+    const Eigen::Vector3d com = bodies_in_host[b] == 1 ? body.com
+                                : mass[b] > 0.0        ? Eigen::Vector3d(first_moment[b] / mass[b])
+                                                       : Eigen::Vector3d::Zero();
     SimTK::Mat33 inertia;
     for (int i = 0; i < 3; ++i) {
-      for (int j = 0; j < 3; ++j) inertia(i, j) = 0.5 * (inertia_origin(i, j) + inertia_origin(j, i));
+      for (int j = 0; j < 3; ++j) {
+        inertia(i, j) = 0.5 * (inertia_origin[b](i, j) + inertia_origin[b](j, i));
+      }
     }
     const SimTK::Body::Rigid rigid(
-        SimTK::MassProperties(body.mass, toVec3(body.com), SimTK::Inertia(inertia)));
+        SimTK::MassProperties(mass[b], toVec3(com), SimTK::Inertia(inertia)));
     if (body.parent < 0) {
-      mobods.push_back(SimTK::MobilizedBody::Free(s.matter.updGround(), SimTK::Transform(), rigid,
-                                                  SimTK::Transform()));
+      mobods[b] = SimTK::MobilizedBody::Free(matter.updGround(), SimTK::Transform(), rigid,
+                                             SimTK::Transform());
       continue;
     }
-    const Joint& joint = model_.joints()[body.joint];
-    SimTK::MobilizedBody& parent = mobods[body.parent];
+    const Joint& joint = model.joints()[body.joint];
+    SimTK::MobilizedBody& parent = mobods[host[body.parent]];
+    // The joint frame in the host of the parent body.
+    const Pose origin = in_host[body.parent] * joint.origin;
     // Pin turns about z, Slider moves along x of its F/M frames: align them with the axis.
     const bool prismatic = joint.type == JointType::kPrismatic;
     const SimTK::Rotation align(SimTK::UnitVec3(toVec3(joint.axis)),
                                 prismatic ? SimTK::CoordinateAxis(SimTK::XAxis)
                                           : SimTK::CoordinateAxis(SimTK::ZAxis));
-    const SimTK::Transform x_pf(toRotation(joint.origin.rotation) * align,
-                                toVec3(joint.origin.position));
+    const SimTK::Transform x_pf(toRotation(origin.rotation) * align, toVec3(origin.position));
     const SimTK::Transform x_bm(align, SimTK::Vec3(0));
     if (prismatic) {
-      mobods.push_back(SimTK::MobilizedBody::Slider(parent, x_pf, rigid, x_bm));
+      mobods[b] = SimTK::MobilizedBody::Slider(parent, x_pf, rigid, x_bm);
     } else {
-      mobods.push_back(SimTK::MobilizedBody::Pin(parent, x_pf, rigid, x_bm));
+      mobods[b] = SimTK::MobilizedBody::Pin(parent, x_pf, rigid, x_bm);
     }
   }
-  s.gravity = SimTK::Force::Gravity(s.forces, s.matter, SimTK::UnitVec3(0, 0, -1), settings_.gravity);
-  s.system.realizeTopology();
-  s.state = s.system.getDefaultState();
-  s.system.realizeModel(s.state);
-  s.free_q = mobods[0].getFirstQIndex(s.state);
-  s.free_u = mobods[0].getFirstUIndex(s.state);
-  if (mobods[0].getNumQ(s.state) != 7 || mobods[0].getNumU(s.state) != 6) {
+  gravity = SimTK::Force::Gravity(forces, matter, SimTK::UnitVec3(0, 0, -1), gravity_magnitude);
+  system.realizeTopology();
+  state = system.getDefaultState();
+  system.realizeModel(state);
+  free_q = mobods[0].getFirstQIndex(state);
+  free_u = mobods[0].getFirstUIndex(state);
+  if (mobods[0].getNumQ(state) != 7 || mobods[0].getNumU(state) != 6) {
     throw std::logic_error("multibody replay: the Simbody free mobilizer is not in quaternion mode");
   }
-  s.joint_q.resize(model_.jointCount());
-  s.joint_u.resize(model_.jointCount());
-  for (std::size_t b = 1; b < bodies.size(); ++b) {
-    s.joint_q[bodies[b].joint] = mobods[b].getFirstQIndex(s.state);
-    s.joint_u[bodies[b].joint] = mobods[b].getFirstUIndex(s.state);
+  joint_q.assign(model.jointCount(), -1);
+  joint_u.assign(model.jointCount(), -1);
+  for (std::size_t b = 1; b < nb; ++b) {
+    if (host[b] != static_cast<int>(b)) continue;
+    joint_q[bodies[b].joint] = mobods[b].getFirstQIndex(state);
+    joint_u[bodies[b].joint] = mobods[b].getFirstUIndex(state);
   }
-  s.udot.resize(s.state.getNU());
-  s.udot = 0;
-  s.residual.resize(s.state.getNU());
-  s.residual = 0;
-  s.system.realize(s.state, SimTK::Stage::Velocity);
+  udot.resize(state.getNU());
+  udot = 0;
+  residual.resize(state.getNU());
+  residual = 0;
+  system.realize(state, SimTK::Stage::Velocity);
+}
 
+MultibodyReplay::MultibodyReplay(const RobotModel& model, MultibodyReplaySettings settings)
+    : model_(model), settings_(settings) {
+  if (!(settings_.gravity >= 0.0) || !std::isfinite(settings_.gravity)) {
+    throw std::invalid_argument("multibody replay: gravity must be finite and >= 0");
+  }
+  simbody_ = std::make_unique<Simbody>(model_, settings_.gravity,
+                                       std::vector<bool>(model_.jointCount(), false),
+                                       Eigen::VectorXd::Zero(model_.jointCount()));
   q_.resize(model_.nq());
   v_.resize(model_.nv());
   a_.resize(model_.nv());
   tau_.resize(model_.jointCount());
 }
 
+MultibodyReplay::Simbody& MultibodyReplay::simbodyFor(const Eigen::Ref<const Eigen::MatrixXd>& q) {
+  if (settings_.joint_torques) return *simbody_;
+  const int nj = model_.jointCount();
+  std::vector<bool> constant(nj, false);
+  Eigen::VectorXd values(nj);
+  bool any = false;
+  for (int k = 0; k < nj; ++k) {
+    const auto column = q.col(RobotModel::kFreeFlyerConfigurationSize + k);
+    values(k) = column(0);
+    constant[k] = (column.array() == values(k)).all();
+    any = any || constant[k];
+  }
+  if (!any) return *simbody_;
+  bool same = welded_ != nullptr && welded_->welded == constant;
+  for (int k = 0; same && k < nj; ++k) {
+    if (constant[k] && welded_->weld_values(k) != values(k)) same = false;
+  }
+  if (!same) welded_ = std::make_unique<Simbody>(model_, settings_.gravity, constant, values);
+  return *welded_;
+}
+
 MultibodyReplay::~MultibodyReplay() = default;
 
-void MultibodyReplay::sampleDynamics(const Eigen::Ref<const Eigen::VectorXd>& q,
+void MultibodyReplay::sampleDynamics(Simbody& s, const Eigen::Ref<const Eigen::VectorXd>& q,
                                      const Eigen::Ref<const Eigen::VectorXd>& v,
                                      const Eigen::Ref<const Eigen::VectorXd>& a,
                                      InverseDynamicsSample& out,
                                      Eigen::Ref<Eigen::VectorXd> joint_torques) {
-  Simbody& s = *simbody_;
   const int nj = model_.jointCount();
   const double qnorm = q.segment<4>(3).norm();
   {
     SimTK::Vector& sq = s.state.updQ();
     for (int i = 0; i < 4; ++i) sq[s.free_q + i] = q(3 + i) / qnorm;  // w x y z
     for (int i = 0; i < 3; ++i) sq[s.free_q + 4 + i] = q(i);
-    for (int k = 0; k < nj; ++k) sq[s.joint_q[k]] = q(RobotModel::kFreeFlyerConfigurationSize + k);
+    for (int k = 0; k < nj; ++k) {
+      if (s.joint_q[k] >= 0) sq[s.joint_q[k]] = q(RobotModel::kFreeFlyerConfigurationSize + k);
+    }
   }
   {
     // Simbody's free mobilizer: u = (angular velocity, linear velocity), both in Ground.
@@ -144,6 +215,7 @@ void MultibodyReplay::sampleDynamics(const Eigen::Ref<const Eigen::VectorXd>& q,
       s.udot[s.free_u + 3 + i] = a(i);
     }
     for (int k = 0; k < nj; ++k) {
+      if (s.joint_u[k] < 0) continue;  // welded: constant over the run, v = a = 0
       su[s.joint_u[k]] = v(RobotModel::kFreeFlyerVelocitySize + k);
       s.udot[s.joint_u[k]] = a(RobotModel::kFreeFlyerVelocitySize + k);
     }
@@ -165,7 +237,10 @@ void MultibodyReplay::sampleDynamics(const Eigen::Ref<const Eigen::VectorXd>& q,
   const SimTK::Vec3 com = s.matter.calcSystemMassCenterLocationInGround(s.state);
   out.com = Eigen::Vector3d(com[0], com[1], com[2]);
   if (joint_torques.size() == nj) {
-    for (int k = 0; k < nj; ++k) joint_torques(k) = s.residual[s.joint_u[k]];
+    for (int k = 0; k < nj; ++k) {
+      joint_torques(k) = s.joint_u[k] >= 0 ? s.residual[s.joint_u[k]]
+                                           : std::numeric_limits<double>::quiet_NaN();
+    }
   }
 }
 
