@@ -42,17 +42,26 @@ SimTK::Rotation toRotation(const Eigen::Matrix3d& r) {
 // order) are not mobilities: their child body is merged, at the joint value `weld_values(k)`,
 // into the body it hangs from (mass, CoM and inertia summed: the same rigid assembly). With no
 // joint welded, every body of the model is a Simbody body.
+//
+// Gravity is not a force element: a uniform field -g e_z acts on every body as the acceleration
+// +g e_z of the whole system would (the classic inverse-dynamics shortcut, Featherstone's RNEA:
+// the root gets the acceleration a_root + g e_z and no body is weighed). The residual is the
+// same, and Simbody spares the per-body gravity forces of every sample.
 struct MultibodyReplay::Simbody {
   SimTK::MultibodySystem system;
   SimTK::SimbodyMatterSubsystem matter{system};
-  SimTK::GeneralForceSubsystem forces{system};
-  SimTK::Force::Gravity gravity;
   SimTK::State state;
+  double gravity = 0.0;        // [m/s^2], along -z
+  std::vector<SimTK::MobilizedBody> mobilized;  // the Simbody bodies (root first)
+  std::vector<double> body_mass;             // per Simbody body [kg]
+  std::vector<SimTK::Vec3> body_first_moment;  // per Simbody body: mass x CoM, body frame [kg m]
+  double total_mass = 0.0;
   int free_q = 0, free_u = 0;  // first q (quaternion w x y z, then x y z) and u (w, v) of the root
   std::vector<int> joint_q, joint_u;  // per joint k; -1 when welded
   std::vector<bool> welded;           // per joint k
   Eigen::VectorXd weld_values;        // per joint k: the value a welded joint is held at
   SimTK::Vector no_mobility_forces;   // empty: no applied mobility forces
+  SimTK::Vector_<SimTK::SpatialVec> no_body_forces;  // empty: no applied body forces
   SimTK::Vector udot, residual;
 
   Simbody(const RobotModel& model, double gravity_magnitude, std::vector<bool> welded_joints,
@@ -61,7 +70,7 @@ struct MultibodyReplay::Simbody {
 
 MultibodyReplay::Simbody::Simbody(const RobotModel& model, double gravity_magnitude,
                                   std::vector<bool> welded_joints, const Eigen::VectorXd& values)
-    : welded(std::move(welded_joints)), weld_values(values) {
+    : gravity(gravity_magnitude), welded(std::move(welded_joints)), weld_values(values) {
   const std::vector<Body>& bodies = model.bodies();
   const std::size_t nb = bodies.size();
   // Each model body goes into a Simbody body, its host (itself unless its joint is welded), at
@@ -108,6 +117,9 @@ MultibodyReplay::Simbody::Simbody(const RobotModel& model, double gravity_magnit
     }
     const SimTK::Body::Rigid rigid(
         SimTK::MassProperties(mass[b], toVec3(com), SimTK::Inertia(inertia)));
+    body_mass.push_back(mass[b]);
+    body_first_moment.push_back(mass[b] * toVec3(com));
+    total_mass += mass[b];
     if (body.parent < 0) {
       mobods[b] = SimTK::MobilizedBody::Free(matter.updGround(), SimTK::Transform(), rigid,
                                              SimTK::Transform());
@@ -130,7 +142,9 @@ MultibodyReplay::Simbody::Simbody(const RobotModel& model, double gravity_magnit
       mobods[b] = SimTK::MobilizedBody::Pin(parent, x_pf, rigid, x_bm);
     }
   }
-  gravity = SimTK::Force::Gravity(forces, matter, SimTK::UnitVec3(0, 0, -1), gravity_magnitude);
+  for (std::size_t b = 0; b < nb; ++b) {
+    if (host[b] == static_cast<int>(b)) mobilized.push_back(mobods[b]);
+  }
   system.realizeTopology();
   state = system.getDefaultState();
   system.realizeModel(state);
@@ -214,6 +228,7 @@ void MultibodyReplay::sampleDynamics(Simbody& s, const Eigen::Ref<const Eigen::V
       s.udot[s.free_u + i] = a(3 + i);
       s.udot[s.free_u + 3 + i] = a(i);
     }
+    s.udot[s.free_u + 5] += s.gravity;  // gravity as an upward acceleration of everything
     for (int k = 0; k < nj; ++k) {
       if (s.joint_u[k] < 0) continue;  // welded: constant over the run, v = a = 0
       su[s.joint_u[k]] = v(RobotModel::kFreeFlyerVelocitySize + k);
@@ -221,11 +236,10 @@ void MultibodyReplay::sampleDynamics(Simbody& s, const Eigen::Ref<const Eigen::V
     }
   }
   s.system.realize(s.state, SimTK::Stage::Velocity);
-  // residual = M udot + C - (gravity): what must be applied at each mobility. At the free
+  // residual = M udot + C (gravity in udot): what must be applied at each mobility. At the free
   // mobilizer: the external wrench on the root, moment about the root origin, in Ground.
-  s.matter.calcResidualForceIgnoringConstraints(s.state, s.no_mobility_forces,
-                                                s.gravity.getBodyForces(s.state), s.udot,
-                                                s.residual);
+  s.matter.calcResidualForceIgnoringConstraints(s.state, s.no_mobility_forces, s.no_body_forces,
+                                                s.udot, s.residual);
   Eigen::Vector3d moment, force;
   for (int i = 0; i < 3; ++i) {
     moment(i) = s.residual[s.free_u + i];
@@ -234,8 +248,14 @@ void MultibodyReplay::sampleDynamics(Simbody& s, const Eigen::Ref<const Eigen::V
   out.base_wrench.head<3>() = moment + q.head<3>().cross(force);  // about the world origin
   out.base_wrench.tail<3>() = force;
   out.zmp = zmpOfWrench(out.base_wrench);
-  const SimTK::Vec3 com = s.matter.calcSystemMassCenterLocationInGround(s.state);
-  out.com = Eigen::Vector3d(com[0], com[1], com[2]);
+  // Whole-body CoM from the body poses of the Position stage (what
+  // calcSystemMassCenterLocationInGround sums, without its per-body mass property look-ups).
+  SimTK::Vec3 first_moment(0);
+  for (std::size_t b = 0; b < s.mobilized.size(); ++b) {
+    const SimTK::Transform& x_gb = s.mobilized[b].getBodyTransform(s.state);
+    first_moment += x_gb.R() * s.body_first_moment[b] + s.body_mass[b] * x_gb.p();
+  }
+  out.com = Eigen::Vector3d(first_moment[0], first_moment[1], first_moment[2]) / s.total_mass;
   if (joint_torques.size() == nj) {
     for (int k = 0; k < nj; ++k) {
       joint_torques(k) = s.joint_u[k] >= 0 ? s.residual[s.joint_u[k]]

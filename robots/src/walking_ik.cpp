@@ -3,6 +3,7 @@
 #include <chrono>
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <stdexcept>
 
 #include <Eigen/LU>
@@ -15,12 +16,6 @@ constexpr double kStructureTolerance = 1e-12;
 Eigen::Matrix3d rotZ(double a) {
   return Eigen::AngleAxisd(a, Eigen::Vector3d::UnitZ()).toRotationMatrix();
 }
-Eigen::Matrix3d rotX(double a) {
-  return Eigen::AngleAxisd(a, Eigen::Vector3d::UnitX()).toRotationMatrix();
-}
-Eigen::Matrix3d rotY(double a) {
-  return Eigen::AngleAxisd(a, Eigen::Vector3d::UnitY()).toRotationMatrix();
-}
 
 Pose soleTarget(const Eigen::Vector4d& foot) {
   Pose pose;
@@ -31,6 +26,16 @@ Pose soleTarget(const Eigen::Vector4d& foot) {
 
 bool isIdentity(const Eigen::Matrix3d& r) {
   return (r - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff() <= kStructureTolerance;
+}
+
+// r <- r Rot(axis, angle) for a coordinate axis (0 x, 1 y, 2 z), c = cos(angle), s = sin(angle):
+// only the two columns orthogonal to the axis change (the same numbers as multiplying by
+// Eigen::AngleAxisd(angle, unit axis).toRotationMatrix(), without the general 3 x 3 product).
+inline void rotateAboutAxis(Eigen::Matrix3d& r, int axis, double c, double s) {
+  const int i = axis == 2 ? 0 : axis + 1, j = axis == 0 ? 2 : axis - 1;  // (i, j, axis) cyclic
+  const Eigen::Vector3d ci = r.col(i);
+  r.col(i) = c * ci + s * r.col(j);
+  r.col(j) = c * r.col(j) - s * ci;
 }
 
 }  // namespace
@@ -67,6 +72,7 @@ WalkingIk::Leg WalkingIk::makeLeg(const std::string& sole_frame) const {
   for (int i = 0; i < 6; ++i) {
     const Joint& joint = model_.joints()[model_.bodies()[leg.body[i]].joint];
     if (joint.type == JointType::kPrismatic) fail("has a prismatic joint " + joint.name);
+    leg.axis[i] = i == 0 ? 2 : (i == 1 || i == 5) ? 0 : 1;  // index of expected_axes[i]
     if ((joint.axis - expected_axes[i]).norm() > kStructureTolerance) {
       fail("has joint " + joint.name + " with an axis other than hip yaw z, hip roll x, hip pitch "
            "y, knee y, ankle pitch y, ankle roll x");
@@ -83,6 +89,7 @@ WalkingIk::Leg WalkingIk::makeLeg(const std::string& sole_frame) const {
       !(origins[3].z() < 0.0) || !(origins[4].z() < 0.0)) {
     fail("does not have a knee below the hip and an ankle below the knee without x offsets");
   }
+  for (int i = 0; i < 6; ++i) leg.origin[i] = origins[i];
   leg.hip = origins[0];
   leg.thigh = -origins[3].z();
   leg.shank = -origins[4].z();
@@ -140,14 +147,17 @@ WalkingIk::WalkingIk(const RobotModel& model, WalkingIkSettings settings)
   reference_com_offset_ = model_.centerOfMass(reference_);  // root at the origin
 }
 
+void WalkingIk::advanceLeg(const Leg& leg, int i, double angle, Pose& pose) {
+  pose.position += pose.rotation * leg.origin[i];  // joint frames are not rotated (makeLeg)
+  rotateAboutAxis(pose.rotation, leg.axis[i], std::cos(angle), std::sin(angle));
+}
+
 Pose WalkingIk::legForwardKinematics(Side side, const Pose& waist, const LegAngles& angles) const {
   const Leg& leg = legs_[side];
   Pose pose = waist;
-  for (int i = 0; i < 6; ++i) {
-    pose = pose * model_.jointPlacement(leg.q_index[i] - RobotModel::kFreeFlyerConfigurationSize,
-                                        angles(i));
-  }
-  return pose * Pose{Eigen::Matrix3d::Identity(), leg.sole};
+  for (int i = 0; i < 6; ++i) advanceLeg(leg, i, angles(i), pose);
+  pose.position += pose.rotation * leg.sole;
+  return pose;
 }
 
 bool WalkingIk::solveLeg(Side side, const Pose& waist, const Pose& sole, LegAngles& q) const {
@@ -182,8 +192,10 @@ bool WalkingIk::solveLeg(Side side, const Pose& waist, const Pose& sole, LegAngl
   const double a = l1 * c3 + l2, b = l1 * std::sin(q(3));
   q(4) = std::atan2(-r.x(), vz) - std::atan2(b, a);
   // hip: Rz(q0) Rx(q1) Ry(q2) = Rw' Rf Rx(-q5) Ry(-(q3 + q4))
-  const Eigen::Matrix3d m =
-      waist.rotation.transpose() * sole.rotation * rotX(-q(5)) * rotY(-(q(3) + q(4)));
+  Eigen::Matrix3d m = waist.rotation.transpose() * sole.rotation;
+  rotateAboutAxis(m, 0, c5, -s5);  // Rx(-q5)
+  const double pitch = q(3) + q(4);
+  rotateAboutAxis(m, 1, std::cos(pitch), -std::sin(pitch));  // Ry(-(q3 + q4))
   q(0) = std::atan2(-m(0, 1), m(1, 1));
   q(1) = std::atan2(m(2, 1), std::hypot(m(0, 1), m(1, 1)));
   q(2) = std::atan2(-m(2, 0), m(2, 2));
@@ -192,21 +204,64 @@ bool WalkingIk::solveLeg(Side side, const Pose& waist, const Pose& sole, LegAngl
 
 Eigen::Vector3d WalkingIk::comForWaist(const Eigen::Vector3d& p, const Eigen::Matrix3d& waist_rotation,
                                        const Pose (&soles)[2], LegAngles (&angles)[2],
-                                       bool& reachable) const {
+                                       bool& reachable, Eigen::Matrix3d* jacobian) const {
   const Pose waist{waist_rotation, p};
   Eigen::Vector3d moment = upper_mass_ * (waist * upper_com_);
   reachable = true;
+  // d CoM / d p = I + (1 / M) sum over the legs of G D (comAtWaist in the header): the waist
+  // translation moves every body by dp, and each leg's joints by D dp so that the sole stays.
+  Eigen::Matrix3d leg_terms = Eigen::Matrix3d::Zero();
   for (int side = 0; side < 2; ++side) {
+    const Leg& leg = legs_[side];
     reachable &= solveLeg(static_cast<Side>(side), waist, soles[side], angles[side]);
     Pose pose = waist;
+    Eigen::Vector3d joint_origin[6], joint_axis[6], body_com[6];
     for (int i = 0; i < 6; ++i) {
-      pose = pose * model_.jointPlacement(
-                        legs_[side].q_index[i] - RobotModel::kFreeFlyerConfigurationSize,
-                        angles[side](i));
-      moment += leg_mass_[side][i].mass * (pose * leg_mass_[side][i].com);
+      pose.position += pose.rotation * leg.origin[i];
+      joint_origin[i] = pose.position;
+      joint_axis[i] = pose.rotation.col(leg.axis[i]);  // the rotation about it keeps it
+      rotateAboutAxis(pose.rotation, leg.axis[i], std::cos(angles[side](i)),
+                      std::sin(angles[side](i)));
+      body_com[i] = pose * leg_mass_[side][i].com;
+      moment += leg_mass_[side][i].mass * body_com[i];
     }
+    if (jacobian == nullptr) continue;
+    // The sole is held while the waist translates by dp: the joint rates dtheta = D dp cancel
+    // the sole twist, taken at the hip point h = o_0 (the three hip axes meet there, makeLeg):
+    // hip columns (0, a_i), the others (a_i x (h - o_i), a_i). Linear rows: A dtheta_345 = -dp;
+    // angular rows: B dtheta_012 + C dtheta_345 = 0 (A, B, C: 3 x 3 blocks).
+    Eigen::Matrix3d a_block, b_block, c_block;
+    for (int i = 0; i < 3; ++i) {
+      a_block.col(i) = joint_axis[3 + i].cross(joint_origin[0] - joint_origin[3 + i]);
+      b_block.col(i) = joint_axis[i];
+      c_block.col(i) = joint_axis[3 + i];
+    }
+    const Eigen::Matrix3d lower_rates = -a_block.inverse();  // d theta_345 / dp
+    const Eigen::Matrix3d hip_rates = -(b_block.inverse() * c_block) * lower_rates;
+    // Column i of G: a_i x sum over the bodies k >= i of m_k (x_k - o_i), the rate of the
+    // leg's mass moment per unit rate of joint i.
+    Eigen::Matrix<double, 3, 6> moment_rate;
+    Eigen::Vector3d subtree_moment = Eigen::Vector3d::Zero();
+    double subtree_mass = 0.0;
+    for (int i = 5; i >= 0; --i) {
+      subtree_moment += leg_mass_[side][i].mass * body_com[i];
+      subtree_mass += leg_mass_[side][i].mass;
+      moment_rate.col(i) = joint_axis[i].cross(subtree_moment - subtree_mass * joint_origin[i]);
+    }
+    leg_terms.noalias() += moment_rate.leftCols<3>() * hip_rates;
+    leg_terms.noalias() += moment_rate.rightCols<3>() * lower_rates;
   }
+  if (jacobian != nullptr) *jacobian = Eigen::Matrix3d::Identity() + leg_terms / total_mass_;
   return moment / total_mass_;
+}
+
+Eigen::Vector3d WalkingIk::comAtWaist(const WalkingIkTarget& target,
+                                      const Eigen::Vector3d& waist_position,
+                                      Eigen::Matrix3d* jacobian) const {
+  const Pose soles[2] = {soleTarget(target.left_foot), soleTarget(target.right_foot)};
+  LegAngles angles[2];
+  bool reachable = true;
+  return comForWaist(waist_position, rotZ(target.waist_yaw), soles, angles, reachable, jacobian);
 }
 
 WalkingIkResult WalkingIk::solve(const WalkingIkTarget& target, Eigen::Ref<Eigen::VectorXd> q) const {
@@ -225,10 +280,16 @@ WalkingIkResult WalkingIk::solve(const WalkingIkTarget& target, Eigen::Ref<Eigen
   bool reachable = true;
 
   // Newton on the waist position p: CoM(p) = target. Initial guess: the reference posture's
-  // CoM offset from the waist. Jacobian by forward differences, reused while the residual
-  // shrinks fast (chord method), recomputed otherwise.
+  // CoM offset from the waist. The analytic Jacobian comes with the evaluation that needs it;
+  // it is reused while the residual shrinks fast (chord method), recomputed otherwise. Forward
+  // differences replace it when a leg is out of reach (the sole then misses its target and
+  // the analytic Jacobian, which holds the soles, does not apply) or it is not finite.
   Eigen::Vector3d p = target.com - waist_rotation * reference_com_offset_;
-  Eigen::Vector3d residual = comForWaist(p, waist_rotation, soles, angles, reachable) - target.com;
+  Eigen::Matrix3d jacobian;
+  Eigen::Vector3d residual =
+      comForWaist(p, waist_rotation, soles, angles, reachable, &jacobian) - target.com;
+  bool jacobian_at_p = true;  // `jacobian` was evaluated at the current p
+  const bool refresh_each_step = std::getenv("WPG_IK_FULL_NEWTON") != nullptr;
   Eigen::Matrix3d jacobian_inverse;
   bool have_jacobian = false;
   double previous_norm = residual.norm();
@@ -239,21 +300,30 @@ WalkingIkResult WalkingIk::solve(const WalkingIkTarget& target, Eigen::Ref<Eigen
       break;
     }
     if (!have_jacobian) {
-      Eigen::Matrix3d jacobian;
-      LegAngles scratch[2];
-      bool scratch_reachable = true;
-      for (int i = 0; i < 3; ++i) {
-        Eigen::Vector3d shifted = p;
-        shifted(i) += settings_.jacobian_step;
-        jacobian.col(i) = (comForWaist(shifted, waist_rotation, soles, scratch, scratch_reachable) -
-                           target.com - residual) / settings_.jacobian_step;
+      if (!jacobian_at_p && reachable) {  // evaluate again, with the Jacobian
+        comForWaist(p, waist_rotation, soles, angles, reachable, &jacobian);
+        jacobian_at_p = true;
+        ++result.iterations;
       }
-      result.iterations += 3;
+      if (!reachable || !jacobian.allFinite()) {
+        LegAngles scratch[2];
+        bool scratch_reachable = true;
+        for (int i = 0; i < 3; ++i) {
+          Eigen::Vector3d shifted = p;
+          shifted(i) += settings_.jacobian_step;
+          jacobian.col(i) = (comForWaist(shifted, waist_rotation, soles, scratch, scratch_reachable) -
+                             target.com - residual) / settings_.jacobian_step;
+        }
+        result.iterations += 3;
+      }
       jacobian_inverse = jacobian.inverse();
       have_jacobian = true;
     }
     p -= jacobian_inverse * residual;
-    residual = comForWaist(p, waist_rotation, soles, angles, reachable) - target.com;
+    // The Jacobian is evaluated along with the CoM only when the next step will want it.
+    residual = comForWaist(p, waist_rotation, soles, angles, reachable,
+                           refresh_each_step ? &jacobian : nullptr) - target.com;
+    jacobian_at_p = refresh_each_step;
     ++result.iterations;
     const double norm = residual.norm();
     if (norm > 0.25 * previous_norm) have_jacobian = false;  // slow: refresh the Jacobian
