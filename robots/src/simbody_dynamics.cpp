@@ -54,7 +54,7 @@ struct MultibodyReplay::Simbody {
   double gravity = 0.0;        // [m/s^2], along -z
   std::vector<SimTK::MobilizedBody> mobilized;  // the Simbody bodies (root first)
   std::vector<double> body_mass;             // per Simbody body [kg]
-  std::vector<SimTK::Vec3> body_first_moment;  // per Simbody body: mass x CoM, body frame [kg m]
+  std::vector<Eigen::Vector3d> body_first_moment;  // per Simbody body: mass x CoM, its frame [kg m]
   double total_mass = 0.0;
   int free_q = 0, free_u = 0;  // first q (quaternion w x y z, then x y z) and u (w, v) of the root
   std::vector<int> joint_q, joint_u;  // per joint k; -1 when welded
@@ -73,15 +73,26 @@ MultibodyReplay::Simbody::Simbody(const RobotModel& model, double gravity_magnit
     : gravity(gravity_magnitude), welded(std::move(welded_joints)), weld_values(values) {
   const std::vector<Body>& bodies = model.bodies();
   const std::size_t nb = bodies.size();
+  // Simbody turns a Pin about z and moves a Slider along x of its F and M frames. The Simbody
+  // frame of a body is its M frame (the model body frame rotated by `align`, which takes z or x
+  // to the joint axis): with X_BM the identity, Simbody uses its cheaper node kind for the body.
+  // `align` is the smallest rotation that does it (the identity for a z axis, e.g. a hip yaw).
+  std::vector<Eigen::Matrix3d> align(nb, Eigen::Matrix3d::Identity());
+  for (std::size_t b = 1; b < nb; ++b) {
+    const Joint& joint = model.joints()[bodies[b].joint];
+    const Eigen::Vector3d moving_axis = joint.type == JointType::kPrismatic
+                                            ? Eigen::Vector3d::UnitX()
+                                            : Eigen::Vector3d::UnitZ();
+    align[b] = Eigen::Quaterniond::FromTwoVectors(moving_axis, joint.axis).toRotationMatrix();
+  }
   // Each model body goes into a Simbody body, its host (itself unless its joint is welded), at
-  // a fixed placement in the host frame. Mass properties are summed per host: mass, first
-  // moment and inertia about the host origin (parallel axis theorem), in the host frame.
+  // a fixed placement in the host's Simbody frame. Mass properties are summed per host: mass,
+  // first moment and inertia about the host origin (parallel axis theorem), in that frame.
   std::vector<int> host(nb, 0);
   std::vector<Pose> in_host(nb);
   std::vector<double> mass(nb, 0.0);
   std::vector<Eigen::Vector3d> first_moment(nb, Eigen::Vector3d::Zero());
   std::vector<Eigen::Matrix3d> inertia_origin(nb, Eigen::Matrix3d::Zero());
-  std::vector<int> bodies_in_host(nb, 0);
   for (std::size_t b = 0; b < nb; ++b) {
     const Body& body = bodies[b];
     if (body.parent >= 0 && welded[body.joint]) {
@@ -89,6 +100,7 @@ MultibodyReplay::Simbody::Simbody(const RobotModel& model, double gravity_magnit
       in_host[b] = in_host[body.parent] * model.jointPlacement(body.joint, weld_values(body.joint));
     } else {
       host[b] = static_cast<int>(b);
+      in_host[b].rotation = align[b].transpose();
     }
     const int h = host[b];
     const Pose& x = in_host[b];
@@ -98,17 +110,14 @@ MultibodyReplay::Simbody::Simbody(const RobotModel& model, double gravity_magnit
     inertia_origin[h] += x.rotation * body.inertia * x.rotation.transpose() +
                          body.mass * (c.squaredNorm() * Eigen::Matrix3d::Identity() -
                                       c * c.transpose());
-    ++bodies_in_host[h];
   }
   std::vector<SimTK::MobilizedBody> mobods(nb);
   for (std::size_t b = 0; b < nb; ++b) {
     if (host[b] != static_cast<int>(b)) continue;
     const Body& body = bodies[b];
-    // Simbody wants the inertia about the body origin; a body alone keeps its own CoM (no round
-    // trip through the first moment), so an unwelded system is the model's bodies exactly.
-    const Eigen::Vector3d com = bodies_in_host[b] == 1 ? body.com
-                                : mass[b] > 0.0        ? Eigen::Vector3d(first_moment[b] / mass[b])
-                                                       : Eigen::Vector3d::Zero();
+    // Simbody wants the inertia about the body origin.
+    const Eigen::Vector3d com =
+        mass[b] > 0.0 ? Eigen::Vector3d(first_moment[b] / mass[b]) : Eigen::Vector3d::Zero();
     SimTK::Mat33 inertia;
     for (int i = 0; i < 3; ++i) {
       for (int j = 0; j < 3; ++j) {
@@ -118,7 +127,7 @@ MultibodyReplay::Simbody::Simbody(const RobotModel& model, double gravity_magnit
     const SimTK::Body::Rigid rigid(
         SimTK::MassProperties(mass[b], toVec3(com), SimTK::Inertia(inertia)));
     body_mass.push_back(mass[b]);
-    body_first_moment.push_back(mass[b] * toVec3(com));
+    body_first_moment.push_back(first_moment[b]);
     total_mass += mass[b];
     if (body.parent < 0) {
       mobods[b] = SimTK::MobilizedBody::Free(matter.updGround(), SimTK::Transform(), rigid,
@@ -127,19 +136,18 @@ MultibodyReplay::Simbody::Simbody(const RobotModel& model, double gravity_magnit
     }
     const Joint& joint = model.joints()[body.joint];
     SimTK::MobilizedBody& parent = mobods[host[body.parent]];
-    // The joint frame in the host of the parent body.
+    // F: the joint frame (in the Simbody frame of the parent's host) turned by `align`.
     const Pose origin = in_host[body.parent] * joint.origin;
-    // Pin turns about z, Slider moves along x of its F/M frames: align them with the axis.
-    const bool prismatic = joint.type == JointType::kPrismatic;
-    const SimTK::Rotation align(SimTK::UnitVec3(toVec3(joint.axis)),
-                                prismatic ? SimTK::CoordinateAxis(SimTK::XAxis)
-                                          : SimTK::CoordinateAxis(SimTK::ZAxis));
-    const SimTK::Transform x_pf(toRotation(origin.rotation) * align, toVec3(origin.position));
-    const SimTK::Transform x_bm(align, SimTK::Vec3(0));
-    if (prismatic) {
-      mobods[b] = SimTK::MobilizedBody::Slider(parent, x_pf, rigid, x_bm);
+    Eigen::Matrix3d r_pf = origin.rotation * align[b];
+    // Along parallel axes (HRP-2's hip pitch, knee, ankle pitch) and for a z axis on an unrotated
+    // parent (hip yaw) F and the parent's frame agree (up to round-off): the exact identity lets
+    // Simbody skip that rotation.
+    if ((r_pf - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff() <= 1e-15) r_pf.setIdentity();
+    const SimTK::Transform x_pf(toRotation(r_pf), toVec3(origin.position));
+    if (joint.type == JointType::kPrismatic) {
+      mobods[b] = SimTK::MobilizedBody::Slider(parent, x_pf, rigid, SimTK::Transform());
     } else {
-      mobods[b] = SimTK::MobilizedBody::Pin(parent, x_pf, rigid, x_bm);
+      mobods[b] = SimTK::MobilizedBody::Pin(parent, x_pf, rigid, SimTK::Transform());
     }
   }
   for (std::size_t b = 0; b < nb; ++b) {
@@ -165,6 +173,9 @@ MultibodyReplay::Simbody::Simbody(const RobotModel& model, double gravity_magnit
   residual.resize(state.getNU());
   residual = 0;
   system.realize(state, SimTK::Stage::Velocity);
+  if (!state.getQ().hasContiguousData() || !state.getU().hasContiguousData()) {
+    throw std::logic_error("multibody replay: Simbody's q and u are not contiguous vectors");
+  }
 }
 
 MultibodyReplay::MultibodyReplay(const RobotModel& model, MultibodyReplaySettings settings)
@@ -211,54 +222,52 @@ void MultibodyReplay::sampleDynamics(Simbody& s, const Eigen::Ref<const Eigen::V
                                      Eigen::Ref<Eigen::VectorXd> joint_torques) {
   const int nj = model_.jointCount();
   const double qnorm = q.segment<4>(3).norm();
-  {
-    SimTK::Vector& sq = s.state.updQ();
-    for (int i = 0; i < 4; ++i) sq[s.free_q + i] = q(3 + i) / qnorm;  // w x y z
-    for (int i = 0; i < 3; ++i) sq[s.free_q + 4 + i] = q(i);
-    for (int k = 0; k < nj; ++k) {
-      if (s.joint_q[k] >= 0) sq[s.joint_q[k]] = q(RobotModel::kFreeFlyerConfigurationSize + k);
-    }
+  // Raw pointers into Simbody's contiguous vectors (their element access is an out-of-line,
+  // range-checked call in Debian's build): one invalidation of the Position and Velocity stages.
+  double* const sq = s.state.updQ().updContiguousScalarData();
+  double* const su = s.state.updU().updContiguousScalarData();
+  double* const udot = s.udot.updContiguousScalarData();
+  for (int i = 0; i < 4; ++i) sq[s.free_q + i] = q(3 + i) / qnorm;  // w x y z
+  for (int i = 0; i < 3; ++i) sq[s.free_q + 4 + i] = q(i);
+  // Simbody's free mobilizer: u = (angular velocity, linear velocity), both in Ground.
+  for (int i = 0; i < 3; ++i) {
+    su[s.free_u + i] = v(3 + i);
+    su[s.free_u + 3 + i] = v(i);
+    udot[s.free_u + i] = a(3 + i);
+    udot[s.free_u + 3 + i] = a(i);
   }
-  {
-    // Simbody's free mobilizer: u = (angular velocity, linear velocity), both in Ground.
-    SimTK::Vector& su = s.state.updU();
-    for (int i = 0; i < 3; ++i) {
-      su[s.free_u + i] = v(3 + i);
-      su[s.free_u + 3 + i] = v(i);
-      s.udot[s.free_u + i] = a(3 + i);
-      s.udot[s.free_u + 3 + i] = a(i);
-    }
-    s.udot[s.free_u + 5] += s.gravity;  // gravity as an upward acceleration of everything
-    for (int k = 0; k < nj; ++k) {
-      if (s.joint_u[k] < 0) continue;  // welded: constant over the run, v = a = 0
-      su[s.joint_u[k]] = v(RobotModel::kFreeFlyerVelocitySize + k);
-      s.udot[s.joint_u[k]] = a(RobotModel::kFreeFlyerVelocitySize + k);
-    }
+  udot[s.free_u + 5] += s.gravity;  // gravity as an upward acceleration of everything
+  for (int k = 0; k < nj; ++k) {
+    if (s.joint_q[k] < 0) continue;  // welded: constant over the run, v = a = 0
+    sq[s.joint_q[k]] = q(RobotModel::kFreeFlyerConfigurationSize + k);
+    su[s.joint_u[k]] = v(RobotModel::kFreeFlyerVelocitySize + k);
+    udot[s.joint_u[k]] = a(RobotModel::kFreeFlyerVelocitySize + k);
   }
   s.system.realize(s.state, SimTK::Stage::Velocity);
   // residual = M udot + C (gravity in udot): what must be applied at each mobility. At the free
   // mobilizer: the external wrench on the root, moment about the root origin, in Ground.
   s.matter.calcResidualForceIgnoringConstraints(s.state, s.no_mobility_forces, s.no_body_forces,
                                                 s.udot, s.residual);
-  Eigen::Vector3d moment, force;
-  for (int i = 0; i < 3; ++i) {
-    moment(i) = s.residual[s.free_u + i];
-    force(i) = s.residual[s.free_u + 3 + i];
-  }
+  const double* const residual = s.residual.getContiguousScalarData();
+  const Eigen::Map<const Eigen::Vector3d> moment(residual + s.free_u);
+  const Eigen::Map<const Eigen::Vector3d> force(residual + s.free_u + 3);
   out.base_wrench.head<3>() = moment + q.head<3>().cross(force);  // about the world origin
   out.base_wrench.tail<3>() = force;
   out.zmp = zmpOfWrench(out.base_wrench);
   // Whole-body CoM from the body poses of the Position stage (what
   // calcSystemMassCenterLocationInGround sums, without its per-body mass property look-ups).
-  SimTK::Vec3 first_moment(0);
+  Eigen::Vector3d first_moment = Eigen::Vector3d::Zero();
   for (std::size_t b = 0; b < s.mobilized.size(); ++b) {
     const SimTK::Transform& x_gb = s.mobilized[b].getBodyTransform(s.state);
-    first_moment += x_gb.R() * s.body_first_moment[b] + s.body_mass[b] * x_gb.p();
+    // Rotation and Vec3 store packed doubles, the rotation by columns.
+    const Eigen::Map<const Eigen::Matrix3d> r_gb(&x_gb.R().asMat33()(0, 0));
+    const Eigen::Map<const Eigen::Vector3d> p_gb(&x_gb.p()[0]);
+    first_moment += r_gb * s.body_first_moment[b] + s.body_mass[b] * p_gb;
   }
-  out.com = Eigen::Vector3d(first_moment[0], first_moment[1], first_moment[2]) / s.total_mass;
+  out.com = first_moment / s.total_mass;
   if (joint_torques.size() == nj) {
     for (int k = 0; k < nj; ++k) {
-      joint_torques(k) = s.joint_u[k] >= 0 ? s.residual[s.joint_u[k]]
+      joint_torques(k) = s.joint_u[k] >= 0 ? residual[s.joint_u[k]]
                                            : std::numeric_limits<double>::quiet_NaN();
     }
   }

@@ -135,6 +135,9 @@ class WalkingIk {
   struct LegMassPoint { double mass; Eigen::Vector3d com; };  // in its body frame
 
   Leg makeLeg(const std::string& sole_frame) const;
+  // solve() with the initial waist position target.com - Rz(waist_yaw) com_offset.
+  WalkingIkResult solveFrom(const WalkingIkTarget& target, const Eigen::Vector3d& com_offset,
+                            Eigen::Ref<Eigen::VectorXd> q) const;
   // Whole-body CoM for the waist at (p, yaw), legs by IK; also the leg angles, reachability
   // and, when `jacobian` is not null, d CoM / d p (comAtWaist).
   Eigen::Vector3d comForWaist(const Eigen::Vector3d& p, const Eigen::Matrix3d& waist_rotation,
