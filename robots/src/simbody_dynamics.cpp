@@ -186,9 +186,6 @@ MultibodyReplay::MultibodyReplay(const RobotModel& model, MultibodyReplaySetting
   simbody_ = std::make_unique<Simbody>(model_, settings_.gravity,
                                        std::vector<bool>(model_.jointCount(), false),
                                        Eigen::VectorXd::Zero(model_.jointCount()));
-  q_.resize(model_.nq());
-  v_.resize(model_.nv());
-  a_.resize(model_.nv());
   tau_.resize(model_.jointCount());
 }
 

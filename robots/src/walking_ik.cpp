@@ -13,7 +13,10 @@ namespace {
 constexpr double kStructureTolerance = 1e-12;
 
 Eigen::Matrix3d rotZ(double a) {
-  return Eigen::AngleAxisd(a, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  const double c = std::cos(a), s = std::sin(a);
+  Eigen::Matrix3d r;
+  r << c, -s, 0.0, s, c, 0.0, 0.0, 0.0, 1.0;
+  return r;
 }
 
 Pose soleTarget(const Eigen::Vector4d& foot) {
@@ -203,7 +206,8 @@ bool WalkingIk::solveLeg(Side side, const Pose& waist, const Pose& sole, LegAngl
 
 Eigen::Vector3d WalkingIk::comForWaist(const Eigen::Vector3d& p, const Eigen::Matrix3d& waist_rotation,
                                        const Pose (&soles)[2], LegAngles (&angles)[2],
-                                       bool& reachable, Eigen::Matrix3d* jacobian) const {
+                                       bool& reachable, Eigen::Matrix3d* jacobian,
+                                       Pose* reached_soles) const {
   const Pose waist{waist_rotation, p};
   Eigen::Vector3d moment = upper_mass_ * (waist * upper_com_);
   reachable = true;
@@ -223,6 +227,10 @@ Eigen::Vector3d WalkingIk::comForWaist(const Eigen::Vector3d& p, const Eigen::Ma
                       std::sin(angles[side](i)));
       body_com[i] = pose * leg_mass_[side][i].com;
       moment += leg_mass_[side][i].mass * body_com[i];
+    }
+    if (reached_soles != nullptr) {
+      reached_soles[side] = pose;
+      reached_soles[side].position += pose.rotation * leg.sole;
     }
     if (jacobian == nullptr) continue;
     // The sole is held while the waist translates by dp: the joint rates dtheta = D dp cancel
@@ -291,8 +299,9 @@ WalkingIkResult WalkingIk::solveFrom(const WalkingIkTarget& target,
   // the analytic Jacobian, which holds the soles, does not apply) or it is not finite.
   Eigen::Vector3d p = target.com - waist_rotation * com_offset;
   Eigen::Matrix3d jacobian;
+  Pose reached[2];  // the soles by forward kinematics of the last evaluation's leg angles
   Eigen::Vector3d residual =
-      comForWaist(p, waist_rotation, soles, angles, reachable, &jacobian) - target.com;
+      comForWaist(p, waist_rotation, soles, angles, reachable, &jacobian, reached) - target.com;
   bool jacobian_at_p = true;  // `jacobian` was evaluated at the current p
   Eigen::Matrix3d jacobian_inverse;
   bool have_jacobian = false;
@@ -305,7 +314,7 @@ WalkingIkResult WalkingIk::solveFrom(const WalkingIkTarget& target,
     }
     if (!have_jacobian) {
       if (!jacobian_at_p && reachable) {  // evaluate again, with the Jacobian
-        comForWaist(p, waist_rotation, soles, angles, reachable, &jacobian);
+        comForWaist(p, waist_rotation, soles, angles, reachable, &jacobian, reached);
         jacobian_at_p = true;
         ++result.iterations;
       }
@@ -325,8 +334,8 @@ WalkingIkResult WalkingIk::solveFrom(const WalkingIkTarget& target,
     }
     p -= jacobian_inverse * residual;
     // The Jacobian is evaluated along with the CoM only when the next step will want it.
-    residual = comForWaist(p, waist_rotation, soles, angles, reachable,
-                           nullptr) - target.com;
+    residual = comForWaist(p, waist_rotation, soles, angles, reachable, nullptr, reached) -
+               target.com;
     jacobian_at_p = false;
     ++result.iterations;
     const double norm = residual.norm();
@@ -336,12 +345,11 @@ WalkingIkResult WalkingIk::solveFrom(const WalkingIkTarget& target,
   result.com_error = residual.norm();
 
   q = reference_;
-  RobotModel::setFreeFlyer(q, p, Eigen::Quaterniond(Eigen::AngleAxisd(target.waist_yaw,
-                                                                       Eigen::Vector3d::UnitZ())));
+  q.head<3>() = p;  // free-flyer: position, then the yaw quaternion (w, x, y, z)
+  q.segment<4>(3) << std::cos(0.5 * target.waist_yaw), 0.0, 0.0, std::sin(0.5 * target.waist_yaw);
   for (int side = 0; side < 2; ++side) {
     for (int i = 0; i < 6; ++i) q(legs_[side].q_index[i]) = angles[side](i);
-    const Pose sole = legForwardKinematics(static_cast<Side>(side), Pose{waist_rotation, p},
-                                           angles[side]);
+    const Pose& sole = reached[side];
     result.foot_position_error =
         std::max(result.foot_position_error, (sole.position - soles[side].position).norm());
     result.foot_rotation_error = std::max(
@@ -399,7 +407,8 @@ WalkingIkTrajectory WalkingIk::solveTrajectory(const WalkTrajectory& walk,
   // this is much closer than the reference posture's offset and Newton needs one step instead
   // of four. After a sample that was not solved, the start is the reference again.
   Eigen::Vector3d com_offset = reference_com_offset_;
-  Eigen::Vector3d offsets[3];  // the last solutions' offsets, most recent first
+  Eigen::Vector3d offsets[3] = {Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(),
+                                Eigen::Vector3d::Zero()};  // the last solutions' offsets, most recent first
   int solved_in_a_row = 0;
   for (std::size_t i = 0; i < n; ++i) {
     const auto row = static_cast<Eigen::Index>(i);

@@ -105,7 +105,11 @@ class MultibodyReplay {
   std::unique_ptr<Simbody> simbody_;  // every joint a mobility (inverseDynamics, torques)
   std::unique_ptr<Simbody> welded_;   // the last run's constant joints welded (may be null)
   MultibodyReplayResult result_;
-  Eigen::VectorXd q_, v_, a_, tau_;  // per-sample buffers
+  // differentiate() on transposed trajectories (nq x n in, nv x n out: one sample per column).
+  void differentiateSamples(const Eigen::MatrixXd& qt, double dt, Eigen::MatrixXd& vt,
+                            Eigen::MatrixXd& at) const;
+  Eigen::MatrixXd qt_, vt_, at_;  // run(): q, velocity, acceleration, one sample per column
+  Eigen::VectorXd tau_;           // per-sample joint torques
 };
 
 }  // namespace wpg::robots

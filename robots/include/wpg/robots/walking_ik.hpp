@@ -139,10 +139,12 @@ class WalkingIk {
   WalkingIkResult solveFrom(const WalkingIkTarget& target, const Eigen::Vector3d& com_offset,
                             Eigen::Ref<Eigen::VectorXd> q) const;
   // Whole-body CoM for the waist at (p, yaw), legs by IK; also the leg angles, reachability
-  // and, when `jacobian` is not null, d CoM / d p (comAtWaist).
+  // and, when `jacobian` is not null, d CoM / d p (comAtWaist); when `reached_soles` is not
+  // null, the two sole poses (left, right) that the leg angles reach (forward kinematics).
   Eigen::Vector3d comForWaist(const Eigen::Vector3d& p, const Eigen::Matrix3d& waist_rotation,
                               const Pose (&soles)[2], LegAngles (&angles)[2], bool& reachable,
-                              Eigen::Matrix3d* jacobian = nullptr) const;
+                              Eigen::Matrix3d* jacobian = nullptr,
+                              Pose* reached_soles = nullptr) const;
   // pose <- pose * (joint i of the leg at `angle`): the joint origin, then the rotation.
   static void advanceLeg(const Leg& leg, int i, double angle, Pose& pose);
 
