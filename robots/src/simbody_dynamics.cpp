@@ -1,5 +1,13 @@
 // The only translation unit that includes Simbody: builds the Simbody system of a RobotModel
 // and evaluates the inverse dynamics of one sample for MultibodyReplay.
+//
+// Per sample, Simbody realizes the Position and Velocity stages (no further: inverse dynamics
+// needs no forces) and computes the residual forces; everything constant is set up once
+// (system, state, buffers, the welded system of a run). What makes it cheap (callgrind, 20 s
+// walk, replay + filter: 2.15e9 -> 0.79e9 instructions in Simbody): joints constant over a
+// run welded (13 bodies instead of 31 for a walk), gravity as the root's acceleration instead
+// of a force element, body frames on the mobilizer frames (Simbody's node kinds without X_BM),
+// the CoM from the body poses, raw access to Simbody's vectors.
 #include <cmath>
 #include <limits>
 #include <stdexcept>

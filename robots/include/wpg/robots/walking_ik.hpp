@@ -3,7 +3,7 @@
 // exactly through an analytic 6-DoF leg IK, the upper body keeps a reference posture (SRDF
 // "half_sitting"), the waist (root link) keeps roll = pitch = 0 and the requested yaw, and its
 // position is found by Newton iterations so that the WHOLE-BODY centre of mass equals the
-// requested CoM (the pattern generator's CoM).
+// requested CoM (the pattern generator's CoM), with the analytic Jacobian of comAtWaist().
 //
 // Leg structure required by the analytic IK (checked at construction, HRP-2's): from the root,
 // six revolute joints with axes z, x, y, y, y, x (hip yaw, hip roll, hip pitch, knee, ankle
@@ -116,7 +116,9 @@ class WalkingIk {
                              Eigen::Matrix3d* jacobian = nullptr) const;
 
   // IK of every sample of a walk: feet and free-flyer yaw from `walk`, CoM from `com`
-  // (n x 3, e.g. a CoM corrected by the dynamic filter) or from walk.com.
+  // (n x 3, e.g. a CoM corrected by the dynamic filter) or from walk.com. Newton starts from
+  // the previous samples' solutions (extrapolated), not from the reference posture as solve()
+  // does: the same configurations within the CoM tolerance, in one step instead of four.
   WalkingIkTrajectory solveTrajectory(const WalkTrajectory& walk) const;
   WalkingIkTrajectory solveTrajectory(const WalkTrajectory& walk,
                                       const Eigen::Ref<const Eigen::MatrixXd>& com) const;
