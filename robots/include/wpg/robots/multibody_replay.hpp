@@ -32,7 +32,7 @@ struct MultibodyReplaySettings {
   // Joint torques of run() (result().joint_torques). Without them, run() welds the joints whose
   // value is the same in every sample (their velocity and acceleration are exactly 0): Simbody
   // then has fewer bodies (HRP-2 walking: 13 instead of 31, the upper body held in its posture)
-  // and gives the same base wrench, ZMP and CoM up to round-off, at less than half the cost.
+  // and gives the same base wrench, ZMP and CoM up to round-off, at about half the cost.
   bool joint_torques = true;
 };
 
