@@ -293,10 +293,11 @@ WalkingIkResult WalkingIk::solveFrom(const WalkingIkTarget& target,
   bool reachable = true;
 
   // Newton on the waist position p: CoM(p) = target. Initial guess: the CoM offset from the
-  // waist `com_offset` (waist yaw frame). The analytic Jacobian comes with the evaluation that needs it;
-  // it is reused while the residual shrinks fast (chord method), recomputed otherwise. Forward
-  // differences replace it when a leg is out of reach (the sole then misses its target and
-  // the analytic Jacobian, which holds the soles, does not apply) or it is not finite.
+  // waist `com_offset` (waist yaw frame). The analytic Jacobian (comAtWaist) comes with the
+  // first evaluation; it is reused while the residual shrinks fast (chord method), recomputed
+  // otherwise. Forward differences replace it when a leg is out of reach (the sole then misses
+  // its target and the analytic Jacobian, which holds the soles, does not apply) or when it is
+  // not finite (a straight knee).
   Eigen::Vector3d p = target.com - waist_rotation * com_offset;
   Eigen::Matrix3d jacobian;
   Pose reached[2];  // the soles by forward kinematics of the last evaluation's leg angles
@@ -324,8 +325,9 @@ WalkingIkResult WalkingIk::solveFrom(const WalkingIkTarget& target,
         for (int i = 0; i < 3; ++i) {
           Eigen::Vector3d shifted = p;
           shifted(i) += settings_.jacobian_step;
-          jacobian.col(i) = (comForWaist(shifted, waist_rotation, soles, scratch, scratch_reachable) -
-                             target.com - residual) / settings_.jacobian_step;
+          jacobian.col(i) =
+              (comForWaist(shifted, waist_rotation, soles, scratch, scratch_reachable) -
+               target.com - residual) / settings_.jacobian_step;
         }
         result.iterations += 3;
       }
@@ -333,7 +335,7 @@ WalkingIkResult WalkingIk::solveFrom(const WalkingIkTarget& target,
       have_jacobian = true;
     }
     p -= jacobian_inverse * residual;
-    // The Jacobian is evaluated along with the CoM only when the next step will want it.
+    // Without the Jacobian: should the next step need a new one, p is evaluated again with it.
     residual = comForWaist(p, waist_rotation, soles, angles, reachable, nullptr, reached) -
                target.com;
     jacobian_at_p = false;
@@ -407,8 +409,9 @@ WalkingIkTrajectory WalkingIk::solveTrajectory(const WalkTrajectory& walk,
   // this is much closer than the reference posture's offset and Newton needs one step instead
   // of four. After a sample that was not solved, the start is the reference again.
   Eigen::Vector3d com_offset = reference_com_offset_;
+  // The last solutions' offsets, most recent first.
   Eigen::Vector3d offsets[3] = {Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(),
-                                Eigen::Vector3d::Zero()};  // the last solutions' offsets, most recent first
+                                Eigen::Vector3d::Zero()};
   int solved_in_a_row = 0;
   for (std::size_t i = 0; i < n; ++i) {
     const auto row = static_cast<Eigen::Index>(i);
@@ -426,9 +429,13 @@ WalkingIkTrajectory WalkingIk::solveTrajectory(const WalkTrajectory& walk,
       offsets[1] = offsets[0];
       offsets[0] = rotZ(target.waist_yaw).transpose() * (target.com - q.head<3>());
       ++solved_in_a_row;
-      com_offset = solved_in_a_row >= 3 ? Eigen::Vector3d(3.0 * (offsets[0] - offsets[1]) + offsets[2])
-                   : solved_in_a_row == 2 ? Eigen::Vector3d(2.0 * offsets[0] - offsets[1])
-                                          : offsets[0];
+      if (solved_in_a_row >= 3) {
+        com_offset = 3.0 * (offsets[0] - offsets[1]) + offsets[2];
+      } else if (solved_in_a_row == 2) {
+        com_offset = 2.0 * offsets[0] - offsets[1];
+      } else {
+        com_offset = offsets[0];
+      }
     } else {
       solved_in_a_row = 0;
       com_offset = reference_com_offset_;

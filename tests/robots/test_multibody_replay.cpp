@@ -370,8 +370,9 @@ TEST(MultibodyReplay, WeldingConstantJointsKeepsTheWrenchZmpAndCom) {
     for (int k = 0; k < n; ++k) {
       const double t = kDt * k;
       Eigen::VectorXd qk = q0;
-      RobotModel::setFreeFlyer(qk, q0.head<3>() + Eigen::Vector3d(0.2 * t, 0.03 * std::sin(5 * t), 0.0),
-                               Eigen::Quaterniond(Eigen::AngleAxisd(0.3 * t, Eigen::Vector3d::UnitZ())));
+      RobotModel::setFreeFlyer(
+          qk, q0.head<3>() + Eigen::Vector3d(0.2 * t, 0.03 * std::sin(5 * t), 0.0),
+          Eigen::Quaterniond(Eigen::AngleAxisd(0.3 * t, Eigen::Vector3d::UnitZ())));
       for (int i = 0; i < 12; ++i) qk(7 + i) += 0.2 * std::sin(3.0 * t + i);  // legs move
       qk(7 + model.jointIndex("LARM_JOINT1")) += arm_offset;  // constant over the run
       if (move_chest) qk(7 + model.jointIndex("CHEST_JOINT0")) += 0.3 * t * t;
@@ -387,7 +388,8 @@ TEST(MultibodyReplay, WeldingConstantJointsKeepsTheWrenchZmpAndCom) {
     const auto expected = full.run(q, kDt);  // a copy: both replays keep their own result
     const auto& result = welded.run(q, kDt);
     EXPECT_EQ(result.joint_torques.size(), 0);
-    max_wrench = std::max(max_wrench, (result.base_wrench - expected.base_wrench).cwiseAbs().maxCoeff());
+    max_wrench =
+        std::max(max_wrench, (result.base_wrench - expected.base_wrench).cwiseAbs().maxCoeff());
     max_zmp = std::max(max_zmp, (result.zmp - expected.zmp).cwiseAbs().maxCoeff());
     max_com = std::max(max_com, (result.com - expected.com).cwiseAbs().maxCoeff());
     // the arm's offset moves the CoM: a welded system left from the first run would miss it
