@@ -1,5 +1,6 @@
 #include "wpg/preview_control.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -83,9 +84,11 @@ void PreviewController::track(const Eigen::Ref<const Eigen::VectorXd>& reference
     const double p = C_ * x;
     zmp(k) = p;
     error_sum += p - reference(k);
-    double preview = 0.0;
-    for (int j = 1; j <= length; ++j)
-      preview += gain_preview_(j - 1) * reference(std::min<Eigen::Index>(k + j, n - 1));
+    // sum over j = 1..length of Gd_j r(min(k + j, n - 1)): the window inside the reference (one
+    // vectorized dot product), then the last reference value held past its end.
+    const Eigen::Index inside = std::min<Eigen::Index>(length, n - 1 - k);
+    double preview = gain_preview_.head(inside).dot(reference.segment(k + 1, inside));
+    if (inside < length) preview += gain_preview_.tail(length - inside).sum() * reference(n - 1);
     const double u = -gain_integral_ * error_sum - gain_state_.dot(x) - preview;
     x = A_ * x + B_ * u;
   }

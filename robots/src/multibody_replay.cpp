@@ -10,9 +10,13 @@
 namespace wpg::robots {
 namespace {
 
-// Free-flyer orientation of row k (w x y z in columns 3..6), normalized.
-Eigen::Quaterniond rowOrientation(const Eigen::Ref<const Eigen::MatrixXd>& q, Eigen::Index k) {
-  return Eigen::Quaterniond(q(k, 3), q(k, 4), q(k, 5), q(k, 6)).normalized();
+// The loops below work on transposed trajectories (one sample per column, contiguous): a row of
+// an n x nq matrix is strided across n, and reading it between two Simbody calls misses the
+// caches on every entry.
+
+// Free-flyer orientation of sample k (w x y z in rows 3..6), normalized.
+Eigen::Quaterniond sampleOrientation(const Eigen::MatrixXd& qt, Eigen::Index k) {
+  return Eigen::Quaterniond(qt(3, k), qt(4, k), qt(5, k), qt(6, k)).normalized();
 }
 
 // World-frame rotation vector of R1 R0', i.e. log(R1 R0').
@@ -25,23 +29,37 @@ Eigen::Vector3d rotationVector(const Eigen::Quaterniond& a, const Eigen::Quatern
 }
 
 // Mid-point velocity between configurations k and k + 1 (velocity layout).
-void midpointVelocity(const Eigen::Ref<const Eigen::MatrixXd>& q, Eigen::Index k, double dt,
+void midpointVelocity(const Eigen::MatrixXd& qt, Eigen::Index k, double dt,
                       Eigen::Ref<Eigen::VectorXd> out) {
-  const int nj = static_cast<int>(q.cols()) - RobotModel::kFreeFlyerConfigurationSize;
-  out.head<3>() = (q.row(k + 1).head<3>() - q.row(k).head<3>()).transpose() / dt;
-  out.segment<3>(3) = rotationVector(rowOrientation(q, k), rowOrientation(q, k + 1)) / dt;
-  out.tail(nj) = (q.row(k + 1).tail(nj) - q.row(k).tail(nj)).transpose() / dt;
+  const Eigen::Index nj = qt.rows() - RobotModel::kFreeFlyerConfigurationSize;
+  out.head<3>() = (qt.col(k + 1).head<3>() - qt.col(k).head<3>()) / dt;
+  out.segment<3>(3) = rotationVector(sampleOrientation(qt, k), sampleOrientation(qt, k + 1)) / dt;
+  out.tail(nj) = (qt.col(k + 1).tail(nj) - qt.col(k).tail(nj)) / dt;
 }
 
-// Fills rows `end` of m by polynomial extrapolation from the interior rows next to it.
+// Fills sample (column) `end` of m by polynomial extrapolation from the interior samples next
+// to it.
 void extrapolateEnd(Eigen::MatrixXd& m, Eigen::Index end, Eigen::Index step, Eigen::Index interior) {
   const Eigen::Index r1 = end + step, r2 = end + 2 * step, r3 = end + 3 * step;
   if (interior >= 3) {
-    m.row(end) = 3.0 * m.row(r1) - 3.0 * m.row(r2) + m.row(r3);  // quadratic
+    m.col(end) = 3.0 * m.col(r1) - 3.0 * m.col(r2) + m.col(r3);  // quadratic
   } else if (interior == 2) {
-    m.row(end) = 2.0 * m.row(r1) - m.row(r2);  // linear
+    m.col(end) = 2.0 * m.col(r1) - m.col(r2);  // linear
   } else {
-    m.row(end) = m.row(r1);  // constant
+    m.col(end) = m.col(r1);  // constant
+  }
+}
+
+// The checks of differentiate() and run().
+void checkTrajectory(const RobotModel& model, const Eigen::Ref<const Eigen::MatrixXd>& q,
+                     double dt) {
+  if (q.cols() != model.nq() || q.rows() < 3) {
+    throw std::invalid_argument("multibody replay: q of size " + std::to_string(q.rows()) + " x " +
+                                std::to_string(q.cols()) + ", expected n x " +
+                                std::to_string(model.nq()) + " with n >= 3");
+  }
+  if (!(dt > 0.0) || !std::isfinite(dt)) {
+    throw std::invalid_argument("multibody replay: dt must be finite and > 0");
   }
 }
 
@@ -50,37 +68,39 @@ void extrapolateEnd(Eigen::MatrixXd& m, Eigen::Index end, Eigen::Index step, Eig
 void MultibodyReplay::differentiate(const Eigen::Ref<const Eigen::MatrixXd>& q, double dt,
                                     Eigen::MatrixXd& velocity,
                                     Eigen::MatrixXd& acceleration) const {
-  const Eigen::Index n = q.rows();
+  checkTrajectory(model_, q, dt);
+  const Eigen::MatrixXd qt = q.transpose();
+  Eigen::MatrixXd vt, at;
+  differentiateSamples(qt, dt, vt, at);
+  velocity = vt.transpose();
+  acceleration = at.transpose();
+}
+
+void MultibodyReplay::differentiateSamples(const Eigen::MatrixXd& qt, double dt,
+                                           Eigen::MatrixXd& vt, Eigen::MatrixXd& at) const {
+  const Eigen::Index n = qt.cols();
   const int nv = model_.nv();
-  if (q.cols() != model_.nq() || n < 3) {
-    throw std::invalid_argument("multibody replay: q of size " + std::to_string(n) + " x " +
-                                std::to_string(q.cols()) + ", expected n x " +
-                                std::to_string(model_.nq()) + " with n >= 3");
-  }
-  if (!(dt > 0.0) || !std::isfinite(dt)) {
-    throw std::invalid_argument("multibody replay: dt must be finite and > 0");
-  }
-  velocity.resize(n, nv);
-  acceleration.resize(n, nv);
+  vt.resize(nv, n);
+  at.resize(nv, n);
   Eigen::VectorXd before(nv), after(nv);
-  midpointVelocity(q, 0, dt, before);
+  midpointVelocity(qt, 0, dt, before);
   for (Eigen::Index k = 1; k + 1 < n; ++k) {
-    midpointVelocity(q, k, dt, after);
-    velocity.row(k) = 0.5 * (before + after).transpose();
-    acceleration.row(k) = ((after - before) / dt).transpose();
+    midpointVelocity(qt, k, dt, after);
+    vt.col(k) = 0.5 * (before + after);
+    at.col(k) = (after - before) / dt;
     before.swap(after);
   }
   const Eigen::Index interior = n - 2;
   // a: polynomial extrapolation; v: from the nearest interior velocity and that acceleration
   // model, i.e. the same extrapolation (consistent to second order).
-  extrapolateEnd(acceleration, 0, 1, interior);
-  extrapolateEnd(acceleration, n - 1, -1, interior);
+  extrapolateEnd(at, 0, 1, interior);
+  extrapolateEnd(at, n - 1, -1, interior);
   if (interior == 1) {
-    velocity.row(0) = velocity.row(1) - dt * acceleration.row(1);
-    velocity.row(n - 1) = velocity.row(n - 2) + dt * acceleration.row(n - 2);
+    vt.col(0) = vt.col(1) - dt * at.col(1);
+    vt.col(n - 1) = vt.col(n - 2) + dt * at.col(n - 2);
   } else {
-    extrapolateEnd(velocity, 0, 1, interior);
-    extrapolateEnd(velocity, n - 1, -1, interior);
+    extrapolateEnd(vt, 0, 1, interior);
+    extrapolateEnd(vt, n - 1, -1, interior);
   }
 }
 
@@ -112,15 +132,12 @@ const MultibodyReplayResult& MultibodyReplay::run(const Eigen::Ref<const Eigen::
 const MultibodyReplayResult& MultibodyReplay::runImpl(
     const Eigen::Ref<const Eigen::MatrixXd>& q, double dt,
     const Eigen::Ref<const Eigen::MatrixXd>* com_force) {
+  checkTrajectory(model_, q, dt);
   const Eigen::Index n = q.rows();
-  if (q.cols() != model_.nq() || n < 3) {
-    throw std::invalid_argument("multibody replay: q of size " + std::to_string(n) + " x " +
-                                std::to_string(q.cols()) + ", expected n x " +
-                                std::to_string(model_.nq()) + " with n >= 3");
-  }
   if (!q.allFinite()) throw std::invalid_argument("multibody replay: q has non-finite entries");
+  qt_ = q.transpose();
   for (Eigen::Index k = 0; k < n; ++k) {
-    const double norm = q.row(k).segment<4>(3).norm();
+    const double norm = qt_.col(k).segment<4>(3).norm();
     if (std::abs(norm - 1.0) > 1e-6) {
       throw std::invalid_argument("multibody replay: sample " + std::to_string(k) +
                                   ": free-flyer quaternion norm " + std::to_string(norm) +
@@ -128,17 +145,17 @@ const MultibodyReplayResult& MultibodyReplay::runImpl(
     }
   }
   result_.dt = dt;
-  differentiate(q, dt, result_.velocity, result_.acceleration);
+  differentiateSamples(qt_, dt, vt_, at_);
+  result_.velocity = vt_.transpose();
+  result_.acceleration = at_.transpose();
   result_.base_wrench.resize(n, 6);
-  result_.joint_torques.resize(n, model_.jointCount());
+  Simbody& simbody = simbodyFor(q);
+  result_.joint_torques.resize(settings_.joint_torques ? n : 0, model_.jointCount());
   result_.zmp.resize(n, 2);
   result_.com.resize(n, 3);
   InverseDynamicsSample sample;
   for (Eigen::Index k = 0; k < n; ++k) {
-    q_ = q.row(k).transpose();
-    v_ = result_.velocity.row(k).transpose();
-    a_ = result_.acceleration.row(k).transpose();
-    sampleDynamics(q_, v_, a_, sample, tau_);
+    sampleDynamics(simbody, qt_.col(k), vt_.col(k), at_.col(k), sample, tau_);
     if (com_force != nullptr) {  // the ground's share: minus the wrench of the force at the CoM
       const Eigen::Vector3d force = com_force->row(k).transpose();
       sample.base_wrench.head<3>() -= sample.com.cross(force);
@@ -146,7 +163,7 @@ const MultibodyReplayResult& MultibodyReplay::runImpl(
       sample.zmp = zmpOfWrench(sample.base_wrench);
     }
     result_.base_wrench.row(k) = sample.base_wrench.transpose();
-    result_.joint_torques.row(k) = tau_.transpose();
+    if (settings_.joint_torques) result_.joint_torques.row(k) = tau_.transpose();
     result_.zmp.row(k) = sample.zmp.transpose();
     result_.com.row(k) = sample.com.transpose();
   }
@@ -163,7 +180,7 @@ InverseDynamicsSample MultibodyReplay::inverseDynamics(const Eigen::Ref<const Ei
                                 std::to_string(model_.nv()) + " finite entries");
   }
   InverseDynamicsSample out;
-  sampleDynamics(q, v, a, out, tau_);
+  sampleDynamics(*simbody_, q, v, a, out, tau_);
   if (joint_torques != nullptr) *joint_torques = tau_;
   return out;
 }

@@ -13,13 +13,10 @@ namespace {
 constexpr double kStructureTolerance = 1e-12;
 
 Eigen::Matrix3d rotZ(double a) {
-  return Eigen::AngleAxisd(a, Eigen::Vector3d::UnitZ()).toRotationMatrix();
-}
-Eigen::Matrix3d rotX(double a) {
-  return Eigen::AngleAxisd(a, Eigen::Vector3d::UnitX()).toRotationMatrix();
-}
-Eigen::Matrix3d rotY(double a) {
-  return Eigen::AngleAxisd(a, Eigen::Vector3d::UnitY()).toRotationMatrix();
+  const double c = std::cos(a), s = std::sin(a);
+  Eigen::Matrix3d r;
+  r << c, -s, 0.0, s, c, 0.0, 0.0, 0.0, 1.0;
+  return r;
 }
 
 Pose soleTarget(const Eigen::Vector4d& foot) {
@@ -31,6 +28,16 @@ Pose soleTarget(const Eigen::Vector4d& foot) {
 
 bool isIdentity(const Eigen::Matrix3d& r) {
   return (r - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff() <= kStructureTolerance;
+}
+
+// r <- r Rot(axis, angle) for a coordinate axis (0 x, 1 y, 2 z), c = cos(angle), s = sin(angle):
+// only the two columns orthogonal to the axis change (the same numbers as multiplying by
+// Eigen::AngleAxisd(angle, unit axis).toRotationMatrix(), without the general 3 x 3 product).
+inline void rotateAboutAxis(Eigen::Matrix3d& r, int axis, double c, double s) {
+  const int i = axis == 2 ? 0 : axis + 1, j = axis == 0 ? 2 : axis - 1;  // (i, j, axis) cyclic
+  const Eigen::Vector3d ci = r.col(i);
+  r.col(i) = c * ci + s * r.col(j);
+  r.col(j) = c * r.col(j) - s * ci;
 }
 
 }  // namespace
@@ -67,6 +74,7 @@ WalkingIk::Leg WalkingIk::makeLeg(const std::string& sole_frame) const {
   for (int i = 0; i < 6; ++i) {
     const Joint& joint = model_.joints()[model_.bodies()[leg.body[i]].joint];
     if (joint.type == JointType::kPrismatic) fail("has a prismatic joint " + joint.name);
+    leg.axis[i] = i == 0 ? 2 : (i == 1 || i == 5) ? 0 : 1;  // index of expected_axes[i]
     if ((joint.axis - expected_axes[i]).norm() > kStructureTolerance) {
       fail("has joint " + joint.name + " with an axis other than hip yaw z, hip roll x, hip pitch "
            "y, knee y, ankle pitch y, ankle roll x");
@@ -83,6 +91,7 @@ WalkingIk::Leg WalkingIk::makeLeg(const std::string& sole_frame) const {
       !(origins[3].z() < 0.0) || !(origins[4].z() < 0.0)) {
     fail("does not have a knee below the hip and an ankle below the knee without x offsets");
   }
+  for (int i = 0; i < 6; ++i) leg.origin[i] = origins[i];
   leg.hip = origins[0];
   leg.thigh = -origins[3].z();
   leg.shank = -origins[4].z();
@@ -140,14 +149,17 @@ WalkingIk::WalkingIk(const RobotModel& model, WalkingIkSettings settings)
   reference_com_offset_ = model_.centerOfMass(reference_);  // root at the origin
 }
 
+void WalkingIk::advanceLeg(const Leg& leg, int i, double angle, Pose& pose) {
+  pose.position += pose.rotation * leg.origin[i];  // joint frames are not rotated (makeLeg)
+  rotateAboutAxis(pose.rotation, leg.axis[i], std::cos(angle), std::sin(angle));
+}
+
 Pose WalkingIk::legForwardKinematics(Side side, const Pose& waist, const LegAngles& angles) const {
   const Leg& leg = legs_[side];
   Pose pose = waist;
-  for (int i = 0; i < 6; ++i) {
-    pose = pose * model_.jointPlacement(leg.q_index[i] - RobotModel::kFreeFlyerConfigurationSize,
-                                        angles(i));
-  }
-  return pose * Pose{Eigen::Matrix3d::Identity(), leg.sole};
+  for (int i = 0; i < 6; ++i) advanceLeg(leg, i, angles(i), pose);
+  pose.position += pose.rotation * leg.sole;
+  return pose;
 }
 
 bool WalkingIk::solveLeg(Side side, const Pose& waist, const Pose& sole, LegAngles& q) const {
@@ -182,8 +194,10 @@ bool WalkingIk::solveLeg(Side side, const Pose& waist, const Pose& sole, LegAngl
   const double a = l1 * c3 + l2, b = l1 * std::sin(q(3));
   q(4) = std::atan2(-r.x(), vz) - std::atan2(b, a);
   // hip: Rz(q0) Rx(q1) Ry(q2) = Rw' Rf Rx(-q5) Ry(-(q3 + q4))
-  const Eigen::Matrix3d m =
-      waist.rotation.transpose() * sole.rotation * rotX(-q(5)) * rotY(-(q(3) + q(4)));
+  Eigen::Matrix3d m = waist.rotation.transpose() * sole.rotation;
+  rotateAboutAxis(m, 0, c5, -s5);  // Rx(-q5)
+  const double pitch = q(3) + q(4);
+  rotateAboutAxis(m, 1, std::cos(pitch), -std::sin(pitch));  // Ry(-(q3 + q4))
   q(0) = std::atan2(-m(0, 1), m(1, 1));
   q(1) = std::atan2(m(2, 1), std::hypot(m(0, 1), m(1, 1)));
   q(2) = std::atan2(-m(2, 0), m(2, 2));
@@ -192,24 +206,78 @@ bool WalkingIk::solveLeg(Side side, const Pose& waist, const Pose& sole, LegAngl
 
 Eigen::Vector3d WalkingIk::comForWaist(const Eigen::Vector3d& p, const Eigen::Matrix3d& waist_rotation,
                                        const Pose (&soles)[2], LegAngles (&angles)[2],
-                                       bool& reachable) const {
+                                       bool& reachable, Eigen::Matrix3d* jacobian,
+                                       Pose* reached_soles) const {
   const Pose waist{waist_rotation, p};
   Eigen::Vector3d moment = upper_mass_ * (waist * upper_com_);
   reachable = true;
+  // d CoM / d p = I + (1 / M) sum over the legs of G D (comAtWaist in the header): the waist
+  // translation moves every body by dp, and each leg's joints by D dp so that the sole stays.
+  Eigen::Matrix3d leg_terms = Eigen::Matrix3d::Zero();
   for (int side = 0; side < 2; ++side) {
+    const Leg& leg = legs_[side];
     reachable &= solveLeg(static_cast<Side>(side), waist, soles[side], angles[side]);
     Pose pose = waist;
+    Eigen::Vector3d joint_origin[6], joint_axis[6], body_com[6];
     for (int i = 0; i < 6; ++i) {
-      pose = pose * model_.jointPlacement(
-                        legs_[side].q_index[i] - RobotModel::kFreeFlyerConfigurationSize,
-                        angles[side](i));
-      moment += leg_mass_[side][i].mass * (pose * leg_mass_[side][i].com);
+      pose.position += pose.rotation * leg.origin[i];
+      joint_origin[i] = pose.position;
+      joint_axis[i] = pose.rotation.col(leg.axis[i]);  // the rotation about it keeps it
+      rotateAboutAxis(pose.rotation, leg.axis[i], std::cos(angles[side](i)),
+                      std::sin(angles[side](i)));
+      body_com[i] = pose * leg_mass_[side][i].com;
+      moment += leg_mass_[side][i].mass * body_com[i];
     }
+    if (reached_soles != nullptr) {
+      reached_soles[side] = pose;
+      reached_soles[side].position += pose.rotation * leg.sole;
+    }
+    if (jacobian == nullptr) continue;
+    // The sole is held while the waist translates by dp: the joint rates dtheta = D dp cancel
+    // the sole twist, taken at the hip point h = o_0 (the three hip axes meet there, makeLeg):
+    // hip columns (0, a_i), the others (a_i x (h - o_i), a_i). Linear rows: A dtheta_345 = -dp;
+    // angular rows: B dtheta_012 + C dtheta_345 = 0 (A, B, C: 3 x 3 blocks).
+    Eigen::Matrix3d a_block, b_block, c_block;
+    for (int i = 0; i < 3; ++i) {
+      a_block.col(i) = joint_axis[3 + i].cross(joint_origin[0] - joint_origin[3 + i]);
+      b_block.col(i) = joint_axis[i];
+      c_block.col(i) = joint_axis[3 + i];
+    }
+    const Eigen::Matrix3d lower_rates = -a_block.inverse();  // d theta_345 / dp
+    const Eigen::Matrix3d hip_rates = -(b_block.inverse() * c_block) * lower_rates;
+    // Column i of G: a_i x sum over the bodies k >= i of m_k (x_k - o_i), the rate of the
+    // leg's mass moment per unit rate of joint i.
+    Eigen::Matrix<double, 3, 6> moment_rate;
+    Eigen::Vector3d subtree_moment = Eigen::Vector3d::Zero();
+    double subtree_mass = 0.0;
+    for (int i = 5; i >= 0; --i) {
+      subtree_moment += leg_mass_[side][i].mass * body_com[i];
+      subtree_mass += leg_mass_[side][i].mass;
+      moment_rate.col(i) = joint_axis[i].cross(subtree_moment - subtree_mass * joint_origin[i]);
+    }
+    leg_terms.noalias() += moment_rate.leftCols<3>() * hip_rates;
+    leg_terms.noalias() += moment_rate.rightCols<3>() * lower_rates;
   }
+  if (jacobian != nullptr) *jacobian = Eigen::Matrix3d::Identity() + leg_terms / total_mass_;
   return moment / total_mass_;
 }
 
+Eigen::Vector3d WalkingIk::comAtWaist(const WalkingIkTarget& target,
+                                      const Eigen::Vector3d& waist_position,
+                                      Eigen::Matrix3d* jacobian) const {
+  const Pose soles[2] = {soleTarget(target.left_foot), soleTarget(target.right_foot)};
+  LegAngles angles[2];
+  bool reachable = true;
+  return comForWaist(waist_position, rotZ(target.waist_yaw), soles, angles, reachable, jacobian);
+}
+
 WalkingIkResult WalkingIk::solve(const WalkingIkTarget& target, Eigen::Ref<Eigen::VectorXd> q) const {
+  return solveFrom(target, reference_com_offset_, q);
+}
+
+WalkingIkResult WalkingIk::solveFrom(const WalkingIkTarget& target,
+                                     const Eigen::Vector3d& com_offset,
+                                     Eigen::Ref<Eigen::VectorXd> q) const {
   if (q.size() != model_.nq()) {
     throw std::invalid_argument("walking IK: configuration of size " + std::to_string(q.size()) +
                                 ", expected " + std::to_string(model_.nq()));
@@ -224,11 +292,18 @@ WalkingIkResult WalkingIk::solve(const WalkingIkTarget& target, Eigen::Ref<Eigen
   LegAngles angles[2];
   bool reachable = true;
 
-  // Newton on the waist position p: CoM(p) = target. Initial guess: the reference posture's
-  // CoM offset from the waist. Jacobian by forward differences, reused while the residual
-  // shrinks fast (chord method), recomputed otherwise.
-  Eigen::Vector3d p = target.com - waist_rotation * reference_com_offset_;
-  Eigen::Vector3d residual = comForWaist(p, waist_rotation, soles, angles, reachable) - target.com;
+  // Newton on the waist position p: CoM(p) = target. Initial guess: the CoM offset from the
+  // waist `com_offset` (waist yaw frame). The analytic Jacobian (comAtWaist) comes with the
+  // first evaluation; it is reused while the residual shrinks fast (chord method), recomputed
+  // otherwise. Forward differences replace it when a leg is out of reach (the sole then misses
+  // its target and the analytic Jacobian, which holds the soles, does not apply) or when it is
+  // not finite (a straight knee).
+  Eigen::Vector3d p = target.com - waist_rotation * com_offset;
+  Eigen::Matrix3d jacobian;
+  Pose reached[2];  // the soles by forward kinematics of the last evaluation's leg angles
+  Eigen::Vector3d residual =
+      comForWaist(p, waist_rotation, soles, angles, reachable, &jacobian, reached) - target.com;
+  bool jacobian_at_p = true;  // `jacobian` was evaluated at the current p
   Eigen::Matrix3d jacobian_inverse;
   bool have_jacobian = false;
   double previous_norm = residual.norm();
@@ -239,21 +314,31 @@ WalkingIkResult WalkingIk::solve(const WalkingIkTarget& target, Eigen::Ref<Eigen
       break;
     }
     if (!have_jacobian) {
-      Eigen::Matrix3d jacobian;
-      LegAngles scratch[2];
-      bool scratch_reachable = true;
-      for (int i = 0; i < 3; ++i) {
-        Eigen::Vector3d shifted = p;
-        shifted(i) += settings_.jacobian_step;
-        jacobian.col(i) = (comForWaist(shifted, waist_rotation, soles, scratch, scratch_reachable) -
-                           target.com - residual) / settings_.jacobian_step;
+      if (!jacobian_at_p && reachable) {  // evaluate again, with the Jacobian
+        comForWaist(p, waist_rotation, soles, angles, reachable, &jacobian, reached);
+        jacobian_at_p = true;
+        ++result.iterations;
       }
-      result.iterations += 3;
+      if (!reachable || !jacobian.allFinite()) {
+        LegAngles scratch[2];
+        bool scratch_reachable = true;
+        for (int i = 0; i < 3; ++i) {
+          Eigen::Vector3d shifted = p;
+          shifted(i) += settings_.jacobian_step;
+          jacobian.col(i) =
+              (comForWaist(shifted, waist_rotation, soles, scratch, scratch_reachable) -
+               target.com - residual) / settings_.jacobian_step;
+        }
+        result.iterations += 3;
+      }
       jacobian_inverse = jacobian.inverse();
       have_jacobian = true;
     }
     p -= jacobian_inverse * residual;
-    residual = comForWaist(p, waist_rotation, soles, angles, reachable) - target.com;
+    // Without the Jacobian: should the next step need a new one, p is evaluated again with it.
+    residual = comForWaist(p, waist_rotation, soles, angles, reachable, nullptr, reached) -
+               target.com;
+    jacobian_at_p = false;
     ++result.iterations;
     const double norm = residual.norm();
     if (norm > 0.25 * previous_norm) have_jacobian = false;  // slow: refresh the Jacobian
@@ -262,12 +347,11 @@ WalkingIkResult WalkingIk::solve(const WalkingIkTarget& target, Eigen::Ref<Eigen
   result.com_error = residual.norm();
 
   q = reference_;
-  RobotModel::setFreeFlyer(q, p, Eigen::Quaterniond(Eigen::AngleAxisd(target.waist_yaw,
-                                                                       Eigen::Vector3d::UnitZ())));
+  q.head<3>() = p;  // free-flyer: position, then the yaw quaternion (w, x, y, z)
+  q.segment<4>(3) << std::cos(0.5 * target.waist_yaw), 0.0, 0.0, std::sin(0.5 * target.waist_yaw);
   for (int side = 0; side < 2; ++side) {
     for (int i = 0; i < 6; ++i) q(legs_[side].q_index[i]) = angles[side](i);
-    const Pose sole = legForwardKinematics(static_cast<Side>(side), Pose{waist_rotation, p},
-                                           angles[side]);
+    const Pose& sole = reached[side];
     result.foot_position_error =
         std::max(result.foot_position_error, (sole.position - soles[side].position).norm());
     result.foot_rotation_error = std::max(
@@ -320,6 +404,15 @@ WalkingIkTrajectory WalkingIk::solveTrajectory(const WalkTrajectory& walk,
   out.solve_time.resize(n);
   Eigen::VectorXd q(model_.nq());
   WalkingIkTarget target;
+  // Warm start: the CoM offset from the waist (in the waist yaw frame) of each sample is
+  // extrapolated (quadratic) from the three previous solutions; the walk is smooth at 5 ms, so
+  // this is much closer than the reference posture's offset and Newton needs one step instead
+  // of four. After a sample that was not solved, the start is the reference again.
+  Eigen::Vector3d com_offset = reference_com_offset_;
+  // The last solutions' offsets, most recent first.
+  Eigen::Vector3d offsets[3] = {Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(),
+                                Eigen::Vector3d::Zero()};
+  int solved_in_a_row = 0;
   for (std::size_t i = 0; i < n; ++i) {
     const auto row = static_cast<Eigen::Index>(i);
     target.left_foot = walk.left_foot[i];
@@ -327,10 +420,26 @@ WalkingIkTrajectory WalkingIk::solveTrajectory(const WalkTrajectory& walk,
     target.com = com.row(row).transpose();
     target.waist_yaw = walk.free_flyer_yaw[i];
     const auto start = std::chrono::steady_clock::now();
-    const WalkingIkResult& r = out.samples[i] = solve(target, q);
+    const WalkingIkResult& r = out.samples[i] = solveFrom(target, com_offset, q);
     out.solve_time[i] =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     out.q.row(row) = q.transpose();
+    if (r.status == WalkingIkStatus::kSolved) {
+      offsets[2] = offsets[1];
+      offsets[1] = offsets[0];
+      offsets[0] = rotZ(target.waist_yaw).transpose() * (target.com - q.head<3>());
+      ++solved_in_a_row;
+      if (solved_in_a_row >= 3) {
+        com_offset = 3.0 * (offsets[0] - offsets[1]) + offsets[2];
+      } else if (solved_in_a_row == 2) {
+        com_offset = 2.0 * offsets[0] - offsets[1];
+      } else {
+        com_offset = offsets[0];
+      }
+    } else {
+      solved_in_a_row = 0;
+      com_offset = reference_com_offset_;
+    }
     if (r.status != WalkingIkStatus::kSolved) ++out.failures;
     out.max_com_error = std::max(out.max_com_error, r.com_error);
     out.max_foot_position_error = std::max(out.max_foot_position_error, r.foot_position_error);

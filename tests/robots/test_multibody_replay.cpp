@@ -351,3 +351,59 @@ TEST(MultibodyReplay, WalkReplayTiming) {
 }
 
 }  // namespace
+
+namespace {
+
+// Without joint torques the joints that stay constant over a run are welded (fewer Simbody
+// bodies): the base wrench, ZMP and CoM are those of the full system up to round-off, and a
+// later run with other constant values or other moving joints rebuilds the welded system.
+TEST(MultibodyReplay, WeldingConstantJointsKeepsTheWrenchZmpAndCom) {
+  const RobotModel& model = hrp2();
+  MultibodyReplay full(model);
+  wpg::robots::MultibodyReplaySettings settings;
+  settings.joint_torques = false;
+  MultibodyReplay welded(model, settings);
+  const int n = 60;
+  auto trajectory = [&](double arm_offset, bool move_chest) {
+    Eigen::MatrixXd q(n, model.nq());
+    const Eigen::VectorXd q0 = model.halfSitting();
+    for (int k = 0; k < n; ++k) {
+      const double t = kDt * k;
+      Eigen::VectorXd qk = q0;
+      RobotModel::setFreeFlyer(
+          qk, q0.head<3>() + Eigen::Vector3d(0.2 * t, 0.03 * std::sin(5 * t), 0.0),
+          Eigen::Quaterniond(Eigen::AngleAxisd(0.3 * t, Eigen::Vector3d::UnitZ())));
+      for (int i = 0; i < 12; ++i) qk(7 + i) += 0.2 * std::sin(3.0 * t + i);  // legs move
+      qk(7 + model.jointIndex("LARM_JOINT1")) += arm_offset;  // constant over the run
+      if (move_chest) qk(7 + model.jointIndex("CHEST_JOINT0")) += 0.3 * t * t;
+      q.row(k) = qk.transpose();
+    }
+    return q;
+  };
+  double max_wrench = 0.0, max_zmp = 0.0, max_com = 0.0;
+  Eigen::MatrixXd first_com;
+  for (const auto& [arm_offset, move_chest] : {std::pair{0.0, false}, std::pair{0.4, false},
+                                               std::pair{0.4, true}}) {
+    const Eigen::MatrixXd q = trajectory(arm_offset, move_chest);
+    const auto expected = full.run(q, kDt);  // a copy: both replays keep their own result
+    const auto& result = welded.run(q, kDt);
+    EXPECT_EQ(result.joint_torques.size(), 0);
+    max_wrench =
+        std::max(max_wrench, (result.base_wrench - expected.base_wrench).cwiseAbs().maxCoeff());
+    max_zmp = std::max(max_zmp, (result.zmp - expected.zmp).cwiseAbs().maxCoeff());
+    max_com = std::max(max_com, (result.com - expected.com).cwiseAbs().maxCoeff());
+    // the arm's offset moves the CoM: a welded system left from the first run would miss it
+    if (first_com.size() == 0) {
+      first_com = expected.com;
+    } else {
+      EXPECT_GT((expected.com - first_com).cwiseAbs().maxCoeff(), 1e-4);
+    }
+  }
+  std::printf("welded constant joints vs full system: wrench %.2e N (N m), ZMP %.2e m, CoM %.2e m\n",
+              max_wrench, max_zmp, max_com);
+  EXPECT_LT(max_wrench, 1e-9);
+  EXPECT_LT(max_zmp, 1e-12);
+  EXPECT_LT(max_com, 1e-14);
+}
+
+}  // namespace

@@ -239,3 +239,97 @@ TEST(WalkingIk, SolvesAWalkTrajectory) {
 }
 
 }  // namespace
+
+namespace {
+
+// Walking-like random targets (as in WholeBodyIkReachesFeetAndCom), and a waist position near
+// the solution.
+WalkingIkTarget randomWalkingTarget(std::mt19937& rng) {
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  const double yaw = M_PI * u(rng);
+  const Eigen::Matrix3d r = rpy(0, 0, yaw);
+  const Eigen::Vector3d centre(u(rng), u(rng), 0.0);
+  WalkingIkTarget target;
+  const double step = 0.12 * u(rng);
+  target.left_foot.head<3>() = centre + r * Eigen::Vector3d(step, 0.095 + 0.02 * u(rng), 0.0);
+  target.right_foot.head<3>() = centre + r * Eigen::Vector3d(-step, -0.095 - 0.02 * u(rng), 0.0);
+  target.left_foot(2) = 0.025 + 0.025 * u(rng);
+  target.left_foot(3) = yaw + 0.1 * u(rng);
+  target.right_foot(3) = yaw + 0.1 * u(rng);
+  target.waist_yaw = 0.5 * (target.left_foot(3) + target.right_foot(3));
+  target.com = centre + r * Eigen::Vector3d(0.02 * u(rng), 0.06 * u(rng), 0.0);
+  target.com.z() = 0.814;
+  return target;
+}
+
+// The analytic d CoM / d waist position (the Newton Jacobian of solve()) against central
+// differences of the same CoM function.
+TEST(WalkingIk, AnalyticComJacobianMatchesFiniteDifferences) {
+  const RobotModel& model = hrp2();
+  const WalkingIk ik(model);
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  Eigen::VectorXd q(model.nq());
+  double max_error = 0.0, max_off_identity = 0.0;
+  for (int trial = 0; trial < 200; ++trial) {
+    const WalkingIkTarget target = randomWalkingTarget(rng);
+    ASSERT_EQ(ik.solve(target, q).status, WalkingIkStatus::kSolved) << "trial " << trial;
+    const Eigen::Vector3d waist =
+        q.head<3>() + 0.01 * Eigen::Vector3d(u(rng), u(rng), u(rng));  // off the solution
+    Eigen::Matrix3d analytic;
+    const Eigen::Vector3d com = ik.comAtWaist(target, waist, &analytic);
+    EXPECT_EQ(com, ik.comAtWaist(target, waist));  // the Jacobian does not change the CoM
+    const double h = 1e-6;
+    Eigen::Matrix3d numeric;
+    for (int i = 0; i < 3; ++i) {
+      const Eigen::Vector3d step = h * Eigen::Vector3d::Unit(i);
+      numeric.col(i) = (ik.comAtWaist(target, waist + step) - ik.comAtWaist(target, waist - step)) /
+                       (2.0 * h);
+    }
+    max_error = std::max(max_error, (analytic - numeric).cwiseAbs().maxCoeff());
+    max_off_identity =
+        std::max(max_off_identity, (analytic - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff());
+  }
+  std::printf("CoM / waist Jacobian: analytic - central differences max %.2e (entries differ from "
+              "the identity by up to %.2f)\n", max_error, max_off_identity);
+  EXPECT_LT(max_error, 1e-8);
+  EXPECT_GT(max_off_identity, 0.05);  // the legs' share: not a trivial identity
+}
+
+// The warm start of solveTrajectory (extrapolated from the previous samples) converges to the
+// same configurations as independent solves, in fewer CoM evaluations.
+TEST(WalkingIk, WarmStartedTrajectoryMatchesIndependentSolves) {
+  const RobotModel& model = hrp2();
+  const WalkingIk ik(model);
+  wpg::WalkTrajectory walk;
+  const int n = 400;
+  for (int i = 0; i < n; ++i) {
+    const double t = 0.005 * i;
+    walk.time.push_back(t);
+    walk.com.emplace_back(0.1 * t, 0.05 * std::sin(2 * M_PI * t), 0.814);
+    walk.left_foot.emplace_back(0.0, 0.095, 0.0, 0.1 * t);
+    walk.right_foot.emplace_back(0.1 * t, -0.095, 0.04 * std::sin(M_PI * t), 0.0);
+    walk.free_flyer_yaw.push_back(0.05 * t);
+  }
+  const auto out = ik.solveTrajectory(walk);
+  ASSERT_EQ(out.failures, 0);
+  Eigen::VectorXd q(model.nq());
+  double max_difference = 0.0;
+  int warm_evaluations = 0, cold_evaluations = 0;
+  for (int i = 0; i < n; ++i) {
+    WalkingIkTarget target;
+    target.left_foot = walk.left_foot[i];
+    target.right_foot = walk.right_foot[i];
+    target.com = walk.com[i];
+    target.waist_yaw = walk.free_flyer_yaw[i];
+    cold_evaluations += ik.solve(target, q).iterations;
+    warm_evaluations += out.samples[i].iterations;
+    max_difference = std::max(max_difference, (out.q.row(i).transpose() - q).cwiseAbs().maxCoeff());
+  }
+  std::printf("warm-started IK: max |q - q(independent)| %.2e, %d vs %d CoM evaluations\n",
+              max_difference, warm_evaluations, cold_evaluations);
+  EXPECT_LT(max_difference, 1e-10);
+  EXPECT_LT(2 * warm_evaluations, cold_evaluations);
+}
+
+}  // namespace

@@ -29,6 +29,11 @@ namespace wpg::robots {
 
 struct MultibodyReplaySettings {
   double gravity = 9.81;  // [m/s^2], along -z (WalkingParameters::gravity)
+  // Joint torques of run() (result().joint_torques). Without them, run() welds the joints whose
+  // value is the same in every sample (their velocity and acceleration are exactly 0): Simbody
+  // then has fewer bodies (HRP-2 walking: 13 instead of 31, the upper body held in its posture)
+  // and gives the same base wrench, ZMP and CoM up to round-off, at about half the cost.
+  bool joint_torques = true;
 };
 
 struct MultibodyReplayResult {
@@ -36,7 +41,7 @@ struct MultibodyReplayResult {
   Eigen::MatrixXd velocity;       // n x nv, velocity layout of robot_model.hpp
   Eigen::MatrixXd acceleration;   // n x nv
   Eigen::MatrixXd base_wrench;    // n x 6: moment about the world origin [N m], force [N]; world
-  Eigen::MatrixXd joint_torques;  // n x joints [N m or N]
+  Eigen::MatrixXd joint_torques;  // n x joints [N m or N]; 0 x joints without joint_torques
   Eigen::MatrixXd zmp;            // n x 2, world, on z = 0 [m]
   Eigen::MatrixXd com;            // n x 3, whole-body CoM, world [m]
 };
@@ -87,16 +92,24 @@ class MultibodyReplay {
   struct Simbody;  // the Simbody system, state and buffers (simbody_dynamics.cpp)
   const MultibodyReplayResult& runImpl(const Eigen::Ref<const Eigen::MatrixXd>& q, double dt,
                                        const Eigen::Ref<const Eigen::MatrixXd>* com_force);
-  void sampleDynamics(const Eigen::Ref<const Eigen::VectorXd>& q,
+  // The system for a run of q: the full one, or (without joint torques) the one with the
+  // joints constant over q welded, rebuilt only when that set or their values change.
+  Simbody& simbodyFor(const Eigen::Ref<const Eigen::MatrixXd>& q);
+  void sampleDynamics(Simbody& simbody, const Eigen::Ref<const Eigen::VectorXd>& q,
                       const Eigen::Ref<const Eigen::VectorXd>& v,
                       const Eigen::Ref<const Eigen::VectorXd>& a, InverseDynamicsSample& out,
                       Eigen::Ref<Eigen::VectorXd> joint_torques);
 
   const RobotModel& model_;
   MultibodyReplaySettings settings_;
-  std::unique_ptr<Simbody> simbody_;
+  std::unique_ptr<Simbody> simbody_;  // every joint a mobility (inverseDynamics, torques)
+  std::unique_ptr<Simbody> welded_;   // the last run's constant joints welded (may be null)
   MultibodyReplayResult result_;
-  Eigen::VectorXd q_, v_, a_, tau_;  // per-sample buffers
+  // differentiate() on transposed trajectories (nq x n in, nv x n out: one sample per column).
+  void differentiateSamples(const Eigen::MatrixXd& qt, double dt, Eigen::MatrixXd& vt,
+                            Eigen::MatrixXd& at) const;
+  Eigen::MatrixXd qt_, vt_, at_;  // run(): q, velocity, acceleration, one sample per column
+  Eigen::VectorXd tau_;           // per-sample joint torques
 };
 
 }  // namespace wpg::robots

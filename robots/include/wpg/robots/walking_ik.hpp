@@ -3,7 +3,7 @@
 // exactly through an analytic 6-DoF leg IK, the upper body keeps a reference posture (SRDF
 // "half_sitting"), the waist (root link) keeps roll = pitch = 0 and the requested yaw, and its
 // position is found by Newton iterations so that the WHOLE-BODY centre of mass equals the
-// requested CoM (the pattern generator's CoM).
+// requested CoM (the pattern generator's CoM), with the analytic Jacobian of comAtWaist().
 //
 // Leg structure required by the analytic IK (checked at construction, HRP-2's): from the root,
 // six revolute joints with axes z, x, y, y, y, x (hip yaw, hip roll, hip pitch, knee, ankle
@@ -34,7 +34,8 @@ struct WalkingIkSettings {
   std::string reference_posture = "half_sitting";  // SRDF state held by every non-leg joint
   double com_tolerance = 1e-12;  // [m] Newton stops when |CoM(q) - target| <= this
   int max_iterations = 30;       // Newton iterations on the waist position
-  double jacobian_step = 1e-6;   // [m] forward-difference step of the CoM / waist Jacobian
+  double jacobian_step = 1e-6;   // [m] forward-difference step of the CoM / waist Jacobian when
+                                 // a leg is out of reach (else the Jacobian is analytic)
   double joint_limit_tolerance = 1e-9;  // [rad or m] a joint beyond its limit by more is reported
 };
 
@@ -104,9 +105,20 @@ class WalkingIk {
   bool solveLeg(Side side, const Pose& waist, const Pose& sole, LegAngles& angles) const;
   // Forward kinematics of the sole frame for given leg angles (root at `waist`).
   Pose legForwardKinematics(Side side, const Pose& waist, const LegAngles& angles) const;
+  // The whole-body CoM that solve() matches: root at `waist_position` with yaw
+  // target.waist_yaw (level), legs on the feet of `target` by solveLeg, upper body in the
+  // reference posture. With `jacobian`, also d CoM / d waist_position, analytic: with M the
+  // total mass, I + (1 / M) sum over the legs of G D, where D = d(leg angles) / d(waist position)
+  // = -J^-1 (I; 0) (J: the 6 x 6 sole Jacobian of the leg angles; the soles are held) and G
+  // column i = a_i x sum_{k >= i} m_k (x_k - o_i) (joint axis a_i through o_i, leg body CoMs
+  // x_k). Meaningful while both feet are reachable (a straight knee makes J singular).
+  Eigen::Vector3d comAtWaist(const WalkingIkTarget& target, const Eigen::Vector3d& waist_position,
+                             Eigen::Matrix3d* jacobian = nullptr) const;
 
   // IK of every sample of a walk: feet and free-flyer yaw from `walk`, CoM from `com`
-  // (n x 3, e.g. a CoM corrected by the dynamic filter) or from walk.com.
+  // (n x 3, e.g. a CoM corrected by the dynamic filter) or from walk.com. Newton starts from
+  // the previous samples' solutions (extrapolated), not from the reference posture as solve()
+  // does: the same configurations within the CoM tolerance, in one step instead of four.
   WalkingIkTrajectory solveTrajectory(const WalkTrajectory& walk) const;
   WalkingIkTrajectory solveTrajectory(const WalkTrajectory& walk,
                                       const Eigen::Ref<const Eigen::MatrixXd>& com) const;
@@ -115,6 +127,8 @@ class WalkingIk {
   struct Leg {
     std::array<int, 6> body{};     // body indices, hip yaw first
     std::array<int, 6> q_index{};  // indices into q
+    std::array<Eigen::Vector3d, 6> origin{};  // joint origins in the parent body frame
+    std::array<int, 6> axis{};     // joint axes: 0 x, 1 y, 2 z (z x y y y x)
     Eigen::Vector3d hip = Eigen::Vector3d::Zero();  // hip yaw origin in the root frame
     double thigh = 0.0, shank = 0.0;  // hip-pitch -> knee, knee -> ankle (along -z) [m]
     double lateral = 0.0;             // y offset hip-pitch frame -> ankle (knee + ankle) [m]
@@ -123,10 +137,18 @@ class WalkingIk {
   struct LegMassPoint { double mass; Eigen::Vector3d com; };  // in its body frame
 
   Leg makeLeg(const std::string& sole_frame) const;
-  // Whole-body CoM for the waist at (p, yaw), legs by IK; also the leg angles and reachability.
+  // solve() with the initial waist position target.com - Rz(waist_yaw) com_offset.
+  WalkingIkResult solveFrom(const WalkingIkTarget& target, const Eigen::Vector3d& com_offset,
+                            Eigen::Ref<Eigen::VectorXd> q) const;
+  // Whole-body CoM for the waist at (p, yaw), legs by IK; also the leg angles, reachability
+  // and, when `jacobian` is not null, d CoM / d p (comAtWaist); when `reached_soles` is not
+  // null, the two sole poses (left, right) that the leg angles reach (forward kinematics).
   Eigen::Vector3d comForWaist(const Eigen::Vector3d& p, const Eigen::Matrix3d& waist_rotation,
-                              const Pose (&soles)[2], LegAngles (&angles)[2],
-                              bool& reachable) const;
+                              const Pose (&soles)[2], LegAngles (&angles)[2], bool& reachable,
+                              Eigen::Matrix3d* jacobian = nullptr,
+                              Pose* reached_soles = nullptr) const;
+  // pose <- pose * (joint i of the leg at `angle`): the joint origin, then the rotation.
+  static void advanceLeg(const Leg& leg, int i, double angle, Pose& pose);
 
   const RobotModel& model_;
   WalkingIkSettings settings_;
