@@ -89,12 +89,9 @@ void NmpcSolver::shiftActiveSet(const NmpcModel& model, bool step_completed) {
   checkModel(model);
   const NmpcLayout& L = model.layout();
   int kept = 0;
-  int family = 0;
   for (int k = 0; k < active_count_; ++k) {
     const int row = active_set_(k);
-    // rows are remembered in increasing order within a solve's active set only loosely: find
-    // the family of each (few families, a short walk from the previous one)
-    family = model.familyOfRow(row);
+    const int family = model.familyOfRow(row);  // each family shifts its own rows
     if (family < 0) continue;
     const int first = model.familyFirstRow(family);
     const int local = model.family(family).shiftedRow(L, row - first, step_completed);

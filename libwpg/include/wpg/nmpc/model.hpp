@@ -34,7 +34,8 @@ class NmpcModel {
   int familyRowCount(int index) const {
     return family_first_row_[index + 1] - family_first_row_[index];
   }
-  // Index of the family owning inequality row `row` (not for the hot loop: linear search).
+  // Index of the family owning inequality row `row`, -1 past the last (a search over at most
+  // kMaxConstraintFamilies ranges; no allocation).
   int familyOfRow(int row) const;
 
   const WalkingParameters& parameters() const { return parameters_; }
