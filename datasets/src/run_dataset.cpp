@@ -187,7 +187,10 @@ void writeMpcLog(H5::Group& run, const WalkTrajectory& trajectory) {
     status.push_back(static_cast<std::uint8_t>(row.status));
   }
   writeInts(mpc, "qp_iterations", qp_iterations,
-            {"1", nullptr, "active-set iterations, summed over the SQP iterations", nullptr});
+            {"1", nullptr,
+             "working-set updates of the QP solver (warm start included), summed over the "
+             "QPs of the iteration",
+             nullptr});
   writeInts(mpc, "sqp_iterations", sqp_iterations,
             {"1", nullptr, "QPs solved in this iteration (Gauss-Newton SQP iterations)",
              nullptr});
