@@ -7,16 +7,26 @@
 #include "nmpc_internal.hpp"
 
 namespace wpg {
+namespace {
+
+// The public entry points below: a vector of one entry per variable of U, and a problem of
+// the model's sizes (NmpcModel::checkProblem); else std::invalid_argument.
+void checkSizes(const char* function, const char* vector, Eigen::Index size,
+                const NmpcModel& model, const NmpcProblem& problem) {
+  if (size != model.layout().variableCount()) {
+    throw std::invalid_argument(std::string(function) + ": expected " + vector + " of " +
+                                std::to_string(model.layout().variableCount()) +
+                                " entries, got " + std::to_string(size));
+  }
+  model.checkProblem(problem);
+}
+
+}  // namespace
 
 void buildCostGradient(const NmpcModel& model, const NmpcProblem& problem,
                        Eigen::Ref<Eigen::VectorXd> gradient) {
+  checkSizes("buildCostGradient", "a gradient", gradient.size(), model, problem);
   const NmpcLayout& L = model.layout();
-  if (gradient.size() != L.variableCount()) {
-    throw std::invalid_argument("buildCostGradient: expected a gradient of " +
-                                std::to_string(L.variableCount()) + " entries, got " +
-                                std::to_string(gradient.size()));
-  }
-  model.checkProblem(problem);
   const LipmPrediction& P = model.prediction();
   const WalkingParameters& w = model.parameters();
   const int N = L.horizon, nf = L.steps;
@@ -58,13 +68,8 @@ void buildCostGradient(const NmpcModel& model, const NmpcProblem& problem,
 
 double evaluateCost(const NmpcModel& model, const NmpcProblem& problem,
                     const Eigen::Ref<const Eigen::VectorXd>& U) {
+  checkSizes("evaluateCost", "U", U.size(), model, problem);
   const NmpcLayout& L = model.layout();
-  if (U.size() != L.variableCount()) {
-    throw std::invalid_argument("evaluateCost: expected U of " +
-                                std::to_string(L.variableCount()) + " entries, got " +
-                                std::to_string(U.size()));
-  }
-  model.checkProblem(problem);
   const LipmPrediction& P = model.prediction();
   const WalkingParameters& w = model.parameters();
   const int N = L.horizon, nf = L.steps;
