@@ -50,8 +50,9 @@ void SwingFootTrajectory::replan(double t, const Eigen::Vector3d& target) {
 Eigen::Vector4d SwingFootTrajectory::poseAt(double t) const {
   const double duration = landing_time_ - lift_off_time_;
   const double s = duration > 0.0 ? std::clamp((t - lift_off_time_) / duration, 0.0, 1.0) : 1.0;
-  const double u = s * (1.0 - s);
-  const double z = step_height_ * 64.0 * u * u * u;
+  // eq. of the header: the quintic rest-to-rest profile on each half of the swing
+  const double x = 2.0 * std::min(s, 1.0 - s);
+  const double z = step_height_ * x * x * x * (10.0 + x * (-15.0 + 6.0 * x));
   return {axes_[0].evaluate(t - plan_time_)(0), axes_[1].evaluate(t - plan_time_)(0), z,
           axes_[2].evaluate(t - plan_time_)(0)};
 }

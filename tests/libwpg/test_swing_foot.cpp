@@ -84,12 +84,21 @@ TEST(SwingFootTrajectory, HeightProfile) {
   EXPECT_NEAR(swing.poseAt(t0)(2), 0.0, 1e-15);
   EXPECT_NEAR(swing.poseAt(t1)(2), 0.0, 1e-15);
   EXPECT_NEAR(swing.poseAt(0.5 * (t0 + t1))(2), height, 1e-12);
+  // fifth-order rise and fall (paper Sec. III-A): at a quarter of the swing the quintic
+  // rest-to-rest profile is at half the height (the former degree-6 curve: 27/64 of it)
+  EXPECT_NEAR(swing.poseAt(t0 + 0.25 * (t1 - t0))(2), 0.5 * height, 1e-12);
+  EXPECT_NEAR(swing.poseAt(t0 + 0.75 * (t1 - t0))(2), 0.5 * height, 1e-12);
   // Zero vertical velocity at lift-off and landing (one-sided differences, inside the swing).
   const double h = 1e-4;
   EXPECT_NEAR((swing.poseAt(t0 + h)(2) - swing.poseAt(t0)(2)) / h, 0.0, 1e-6);
   EXPECT_NEAR((swing.poseAt(t1)(2) - swing.poseAt(t1 - h)(2)) / h, 0.0, 1e-6);
   // Zero vertical velocity at the apex; height never negative nor above the step height.
   EXPECT_NEAR(rate(swing, 0.5 * (t0 + t1), 2), 0.0, 1e-8);
+  // ... and zero vertical acceleration there (each quintic ends at rest: C2 at the apex)
+  const double apex = 0.5 * (t0 + t1), d = 1e-4;
+  EXPECT_NEAR((swing.poseAt(apex + d)(2) - 2 * swing.poseAt(apex)(2) + swing.poseAt(apex - d)(2)) /
+                  (d * d),
+              0.0, 1e-2);  // the former curve: -2.4 m/s^2
   for (int k = 0; k <= 140; ++k) {
     const double z = swing.poseAt(t0 + k * 0.005)(2);
     EXPECT_GE(z, 0.0);

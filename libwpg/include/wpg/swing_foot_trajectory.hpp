@@ -3,8 +3,12 @@
 // order to retrieve 3D trajectories for the feet"). Horizontal position and yaw: a quintic
 // re-planned at every NMPC sample from the foot's current position, velocity and
 // acceleration to the latest planned landing, arriving with zero velocity and acceleration.
-// Height: a fixed profile of the swing time, h * 64 s^3 (1 - s)^3, which reaches the step
-// height at mid-swing and leaves and touches the ground with zero velocity and acceleration.
+// Height: fifth-order polynomials too, as the paper says: a quintic rest-to-rest rise
+// h (10 x^3 - 15 x^4 + 6 x^5), x = 2 s, over the first half of the swing (s = swing time
+// fraction) and its mirror image down over the second: the step height at mid-swing, zero
+// velocity and acceleration at lift-off, apex and touch-down (C2 throughout). Until
+// 2026-11 this was one degree-6 curve h 64 s^3 (1 - s)^3, with the same apex and end
+// conditions (issue #9 item 9).
 #include <Eigen/Core>
 
 namespace wpg {
