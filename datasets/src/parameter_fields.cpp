@@ -52,6 +52,8 @@ const std::vector<WalkingField>& walkingFields() {
       polygonField("feasibility_x", &P::feasibility_x),
       polygonField("feasibility_y", &P::feasibility_y),
       numberField("max_step_yaw_change", &P::max_step_yaw_change),
+      numberField("max_landing_speed", &P::max_landing_speed),
+      numberField("max_landing_yaw_rate", &P::max_landing_yaw_rate),
       numberField("weight_velocity", &P::weight_velocity),
       numberField("weight_yaw", &P::weight_yaw),
       numberField("weight_cop", &P::weight_cop),

@@ -75,6 +75,13 @@ const MpcIterationLog& PatternGenerator::update(double time, const Eigen::Vector
                     Eigen::Vector2d(com_x_(1), com_y_(1)), problem_);
   problem_.com_x = com_x_;
   problem_.com_y = com_y_;
+  // Landing bound (landing_bound family): the landing planned at the previous sample is the
+  // warm start's step 0 (shiftPlan moved step 1 there when the step before was completed).
+  const WalkingParameters& w = model_.parameters();
+  problem_.landing_bounded = gait_.swinging() && !phase_start.structure_changed;
+  problem_.previous_landing = plannedStep(0);
+  problem_.landing_time_left =
+      (w.stepSamples() - 1 - gait_.phaseSample()) * w.sampling_period;
   problem_.obstacles = obstacles_.distance();
   if (gait_.standing()) {
     problem_.obstacle_slot.setConstant(-1);

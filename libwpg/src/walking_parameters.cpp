@@ -92,6 +92,8 @@ void WalkingParameters::validate() const {
   require(polygon.contains(stop_step, 1e-12), "stop_foot_separation",
           "a side-by-side step inside the feasibility polygon", stop_foot_separation);
   requirePositive(max_step_yaw_change, "max_step_yaw_change");
+  requireNonNegative(max_landing_speed, "max_landing_speed");
+  requireNonNegative(max_landing_yaw_rate, "max_landing_yaw_rate");
   requirePositive(weight_velocity, "weight_velocity");
   requirePositive(weight_yaw, "weight_yaw");
   require(velocity_window_samples >= 1 && velocity_window_samples <= horizon_length,

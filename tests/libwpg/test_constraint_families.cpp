@@ -37,19 +37,22 @@ using namespace wpg_test;
 TEST(ConstraintFamilies, BuiltInFamiliesInTheLayoutsOrder) {
   const NmpcModel model(WalkingParameters(), 3);
   const NmpcLayout& L = model.layout();
-  ASSERT_EQ(model.familyCount(), 4);
-  const char* names[4] = {"cop", "step_feasibility", "yaw_bound", "obstacle"};
-  const int first[4] = {L.copRow(0, 0), L.feasibilityRow(0, 0), L.yawRow(0, true),
-                        L.firstObstacleRow()};
-  for (int k = 0; k < 4; ++k) {
+  ASSERT_EQ(model.familyCount(), 5);
+  const char* names[5] = {"cop", "step_feasibility", "yaw_bound", "obstacle", "landing_bound"};
+  const int first[5] = {L.copRow(0, 0), L.feasibilityRow(0, 0), L.yawRow(0, true),
+                        L.firstObstacleRow(), L.landingRow(0, true)};
+  for (int k = 0; k < 5; ++k) {
     EXPECT_STREQ(model.family(k).name(), names[k]);
     EXPECT_EQ(model.familyFirstRow(k), first[k]);
   }
-  EXPECT_EQ(model.familyFirstRow(3) + model.familyRowCount(3), L.inequalityCount());
+  EXPECT_EQ(model.familyRowCount(4), 6);
+  EXPECT_EQ(model.familyFirstRow(4) + model.familyRowCount(4), L.inequalityCount());
+  EXPECT_EQ(L.builtinRowCount(), L.inequalityCount());
   EXPECT_EQ(model.family(0).group(), RelaxationGroup::kBalance);
   EXPECT_EQ(model.family(1).group(), RelaxationGroup::kKinematics);
   EXPECT_EQ(model.family(2).group(), RelaxationGroup::kKinematics);
   EXPECT_EQ(model.family(3).group(), RelaxationGroup::kObstacle);
+  EXPECT_EQ(model.family(4).group(), RelaxationGroup::kKinematics);
   EXPECT_STREQ(model.family(2).unit(), "rad");
 }
 
@@ -58,6 +61,8 @@ TEST(ConstraintFamilies, BuiltInFamiliesInTheLayoutsOrder) {
 TEST(ConstraintFamilies, EachFamilyMatchesFiniteDifferences) {
   WalkingParameters w;
   w.max_step_yaw_change = 0.17;
+  w.max_landing_speed = 0.4;  // landing bound on (off by default)
+  w.max_landing_yaw_rate = 1.5;
   const NmpcModel model(w, 4);
   const NmpcLayout& L = model.layout();
   const wpg::ObstacleSet obstacles(wpg_test::threeObstacles());
@@ -68,6 +73,9 @@ TEST(ConstraintFamilies, EachFamilyMatchesFiniteDifferences) {
       NmpcProblem problem = randomProblem(model, pattern, FootSide::kLeft, mode, rng);
       problem.obstacles = &obstacles;
       problem.obstacle_slot << 2, -1, 0, 1;
+      problem.landing_bounded = true;
+      problem.previous_landing = Vector3d(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1));
+      problem.landing_time_left = 0.3;
       VectorXd U = randomU(model, problem, rng);
       for (int i = 0; i < L.steps; ++i) {  // steps 2 cm clear of every obstacle boundary
         for (int attempt = 0;; ++attempt) {
@@ -91,7 +99,7 @@ TEST(ConstraintFamilies, EachFamilyMatchesFiniteDifferences) {
       }
     }
   }
-  EXPECT_EQ(points, 4 * 3 * model.patternCount());
+  EXPECT_EQ(points, 5 * 3 * model.patternCount());
 }
 
 // A new family is one class and one registration: its rows come after the built-in ones, the
@@ -103,14 +111,14 @@ TEST(ConstraintFamilies, AddedFamilyIsEnforced) {
   // tighter: at 0.3 m/s the step after next wants to land ~0.5 m ahead of the support.
   const double reach = 0.3;
   model.addConstraintFamily(std::make_shared<StepReach>(reach));
-  ASSERT_EQ(model.familyCount(), 5);
-  EXPECT_EQ(model.familyFirstRow(4), model.layout().builtinRowCount());
+  ASSERT_EQ(model.familyCount(), 6);
+  EXPECT_EQ(model.familyFirstRow(5), model.layout().builtinRowCount());
   EXPECT_EQ(model.layout().inequalityCount(), model.layout().builtinRowCount() + w.previewed_steps);
   Rng rng(5);
   for (int trial = 0; trial < 10; ++trial) {
     const NmpcProblem problem = randomProblem(model, trial % 8, FootSide::kRight, FixedMode::kNone, rng);
     const VectorXd U = randomU(model, problem, rng);
-    EXPECT_LE(wpg::checkConstraintJacobian(model, problem, U, 4).worst, 1e-6);
+    EXPECT_LE(wpg::checkConstraintJacobian(model, problem, U, 5).worst, 1e-6);
   }
 
   // Walk forward with the paper's families, then solve the same samples with the added one.
@@ -128,7 +136,7 @@ TEST(ConstraintFamilies, AddedFamilyIsEnforced) {
       const wpg::NmpcSolveResult result = solver.solve(model, generator.problem(), settings);
       ASSERT_EQ(result.status, IterationStatus::kSolved) << "sample " << k;
       wpg::evaluateConstraints(model, generator.problem(), solver.plan(), g, nullptr);
-      const auto rows = g.segment(model.familyFirstRow(4), model.familyRowCount(4));
+      const auto rows = g.segment(model.familyFirstRow(5), model.familyRowCount(5));
       EXPECT_LE(rows.maxCoeff(), 1e-8) << "sample " << k;
       if (rows.maxCoeff() > -1e-8) ++binding;
       EXPECT_LE(g.maxCoeff(), 1e-8) << "sample " << k;
@@ -219,9 +227,9 @@ TEST(ConstraintFamilies, ObstacleRowsRelaxFirst) {
     const wpg::NmpcSolveResult result =
         solver.solve(model, samples.problems[i], wpg::GeneratorSettings());
     EXPECT_EQ(result.status, IterationStatus::kRelaxedObstacle) << i;
-    EXPECT_EQ(result.relaxed_families, 1u << 4) << i;
-    EXPECT_LE(result.slack[5], 1e-12) << i;
-    for (int k = 0; k < 4; ++k) EXPECT_LE(result.slack[k], 1e-12) << i;
+    EXPECT_EQ(result.relaxed_families, 1u << 5) << i;
+    EXPECT_LE(result.slack[6], 1e-12) << i;
+    for (int k = 0; k < 5; ++k) EXPECT_LE(result.slack[k], 1e-12) << i;
   }
 }
 

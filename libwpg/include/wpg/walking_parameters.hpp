@@ -62,6 +62,17 @@ struct WalkingParameters {
   // --- orientation, eq. (16): |yaw(step) - yaw(previous step)| <= bound. Paper: 0.05 rad;
   //     the authors' code uses 0.17 rad (needed for the paper's own 0.2 rad/s turns).
   double max_step_yaw_change = 0.05;   // [rad]
+  // --- swing-foot landing bound (Sec. III-C3, last paragraph; landing_bound family): while a
+  //     foot swings, its landing may move from the one planned at the previous sample by at
+  //     most what the foot can travel at this speed in the time left before touchdown. Values
+  //     of the authors' code (jrl-umi3218/jrl-walkgen, src/ZMPRefTrajectoryGeneration/
+  //     nmpc_generator.cpp, updateFootVelIneqConstraint: xvmax = yvmax = 0.4 m/s,
+  //     yawvmax = 1.5 rad/s). 0 switches the bound off (x and y, or yaw). Off by default: with
+  //     the authors' values on HRP-2's `push` the swing foot's peak acceleration rises (18 ->
+  //     31 m/s^2, the correction is pushed to the last sample) and a push at 3.9 s that is
+  //     rejected without the bound makes the robot fall (robots/hrp2/README.md).
+  double max_landing_speed = 0.0;      // [m/s]
+  double max_landing_yaw_rate = 0.0;   // [rad/s]
   // --- cost weights, eq. (5) and Sec. V-D ----------------------------------------------------
   double weight_velocity = 2.5;        // alpha: linear velocity tracking (J1)
   // J1 tracks the CoM velocity averaged over this many samples (the current one and those

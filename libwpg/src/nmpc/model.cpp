@@ -35,12 +35,13 @@ NmpcModel::NmpcModel(const WalkingParameters& parameters, int obstacle_slots)
   prediction_ = LipmPrediction(N, parameters_.sampling_period, parameters_.com_height,
                                parameters_.gravity);
 
-  // The paper's families, in the row order of NmpcLayout's copRow .. obstacleRow.
+  // The paper's families, in the row order of NmpcLayout's copRow .. landingRow.
   family_first_row_.push_back(0);
   addConstraintFamily(makeCopConstraint());
   addConstraintFamily(makeStepFeasibilityConstraint());
   addConstraintFamily(makeYawBoundConstraint());
   addConstraintFamily(makeObstacleConstraint());
+  addConstraintFamily(makeLandingBoundConstraint());
 
   // J1's velocity: the mean over a window of K samples of the predicted velocities (K = 1:
   // the paper's instantaneous C'_{k+1}); the window of sample j reaches back to j - K + 1.

@@ -73,11 +73,12 @@ class NamedConstraintFamily : public ConstraintFamily {
 };
 
 // The built-in families of the paper, in their registration order (rows as NmpcLayout's
-// copRow, feasibilityRow, yawRow, obstacleRow).
+// copRow, feasibilityRow, yawRow, obstacleRow, landingRow).
 std::unique_ptr<ConstraintFamily> makeCopConstraint();              // eq. (9)-(13)
 std::unique_ptr<ConstraintFamily> makeStepFeasibilityConstraint();  // eq. (14)-(15)
 std::unique_ptr<ConstraintFamily> makeYawBoundConstraint();         // eq. (16)-(17)
 std::unique_ptr<ConstraintFamily> makeObstacleConstraint();         // eq. (18)-(19)
+std::unique_ptr<ConstraintFamily> makeLandingBoundConstraint();     // Sec. III-C3, last para.
 
 // g(U) of every family of the model, stacked, and when jacobian != nullptr its exact Jacobian
 // dg/dU (every term, including the yaw derivative of the CoP rows through the current CoM

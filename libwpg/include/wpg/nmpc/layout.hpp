@@ -34,7 +34,12 @@ struct NmpcLayout {
     return kCopEdges * horizon + feasibility_edges * steps + 2 * steps + obstacle_slots * step + slot;
   }
   int firstObstacleRow() const { return obstacleRow(0, 0); }
-  int builtinRowCount() const { return obstacleRow(steps, 0); }
+  // landing_bound: x, y, yaw of previewed step 0, upper then lower
+  static constexpr int kLandingRows = 6;
+  int landingRow(int axis, bool upper) const {
+    return obstacleRow(steps, 0) + 2 * axis + (upper ? 0 : 1);
+  }
+  int builtinRowCount() const { return obstacleRow(steps, 0) + kLandingRows; }
   int inequalityCount() const { return inequality_rows; }
   int maxEqualityCount() const { return 3 * steps; }
 };
