@@ -45,7 +45,10 @@ TEST(ConstraintFamilies, BuiltInFamiliesInTheLayoutsOrder) {
     EXPECT_STREQ(model.family(k).name(), names[k]);
     EXPECT_EQ(model.familyFirstRow(k), first[k]);
   }
-  EXPECT_EQ(model.familyRowCount(4), 6);
+  EXPECT_EQ(model.familyRowCount(4), 0);  // the landing bound is off by default: no rows
+  WalkingParameters bounded;
+  bounded.max_landing_speed = 0.4;
+  EXPECT_EQ(NmpcModel(bounded, 3).familyRowCount(4), NmpcLayout::kLandingRows);
   EXPECT_EQ(model.familyFirstRow(4) + model.familyRowCount(4), L.inequalityCount());
   EXPECT_EQ(L.builtinRowCount(), L.inequalityCount());
   EXPECT_EQ(model.family(0).group(), RelaxationGroup::kBalance);

@@ -31,7 +31,9 @@ class LandingBoundConstraint final : public NamedConstraintFamily {
   // Rows mix metres (x, y) and radians (yaw); the family's slack is reported in metres.
   LandingBoundConstraint()
       : NamedConstraintFamily("landing_bound", "m", RelaxationGroup::kKinematics) {}
-  int rowCount(const NmpcLayout&) const override { return NmpcLayout::kLandingRows; }
+  // No rows when the bound is off (both rates 0): the family stays registered (its slack
+  // column is always there) but adds nothing to the QP.
+  int rowCount(const NmpcLayout& L) const override { return L.landing_rows; }
 
   void evaluate(const NmpcModel& model, const NmpcProblem& problem,
                 const Eigen::Ref<const Eigen::VectorXd>& U, Eigen::Ref<Eigen::VectorXd> g,

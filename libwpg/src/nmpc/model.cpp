@@ -32,6 +32,9 @@ NmpcModel::NmpcModel(const WalkingParameters& parameters, int obstacle_slots)
   layout_.steps = nf;
   layout_.feasibility_edges = feasibility_left_.edgeCount();
   layout_.obstacle_slots = obstacle_slots;
+  const bool landing_bound =
+      parameters_.max_landing_speed > 0.0 || parameters_.max_landing_yaw_rate > 0.0;
+  layout_.landing_rows = landing_bound ? NmpcLayout::kLandingRows : 0;
   prediction_ = LipmPrediction(N, parameters_.sampling_period, parameters_.com_height,
                                parameters_.gravity);
 

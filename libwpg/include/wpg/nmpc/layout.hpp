@@ -34,12 +34,14 @@ struct NmpcLayout {
     return kCopEdges * horizon + feasibility_edges * steps + 2 * steps + obstacle_slots * step + slot;
   }
   int firstObstacleRow() const { return obstacleRow(0, 0); }
-  // landing_bound: x, y, yaw of previewed step 0, upper then lower
+  // landing_bound: x, y, yaw of previewed step 0, upper then lower; the rows exist only when
+  // the bound is on (landing_rows = kLandingRows), so that it costs nothing when off
   static constexpr int kLandingRows = 6;
+  int landing_rows = 0;
   int landingRow(int axis, bool upper) const {
     return obstacleRow(steps, 0) + 2 * axis + (upper ? 0 : 1);
   }
-  int builtinRowCount() const { return obstacleRow(steps, 0) + kLandingRows; }
+  int builtinRowCount() const { return obstacleRow(steps, 0) + landing_rows; }
   int inequalityCount() const { return inequality_rows; }
   int maxEqualityCount() const { return 3 * steps; }
 };
