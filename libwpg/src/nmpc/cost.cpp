@@ -26,6 +26,17 @@ void checkSizes(const char* function, const char* vector, Eigen::Index size,
 void buildCostGradient(const NmpcModel& model, const NmpcProblem& problem,
                        Eigen::Ref<Eigen::VectorXd> gradient) {
   checkSizes("buildCostGradient", "a gradient", gradient.size(), model, problem);
+  nmpc_internal::costGradient(model, problem, gradient);
+}
+
+double evaluateCost(const NmpcModel& model, const NmpcProblem& problem,
+                    const Eigen::Ref<const Eigen::VectorXd>& U) {
+  checkSizes("evaluateCost", "U", U.size(), model, problem);
+  return nmpc_internal::cost(model, problem, U);
+}
+
+void nmpc_internal::costGradient(const NmpcModel& model, const NmpcProblem& problem,
+                                 Eigen::Ref<Eigen::VectorXd> gradient) {
   const NmpcLayout& L = model.layout();
   const LipmPrediction& P = model.prediction();
   const WalkingParameters& w = model.parameters();
@@ -66,9 +77,8 @@ void buildCostGradient(const NmpcModel& model, const NmpcProblem& problem,
   gradient.segment(L.stepYaw(), nf) = -w.weight_yaw * problem.yaw_reference;
 }
 
-double evaluateCost(const NmpcModel& model, const NmpcProblem& problem,
-                    const Eigen::Ref<const Eigen::VectorXd>& U) {
-  checkSizes("evaluateCost", "U", U.size(), model, problem);
+double nmpc_internal::cost(const NmpcModel& model, const NmpcProblem& problem,
+                           const Eigen::Ref<const Eigen::VectorXd>& U) {
   const NmpcLayout& L = model.layout();
   const LipmPrediction& P = model.prediction();
   const WalkingParameters& w = model.parameters();

@@ -205,6 +205,12 @@ void evaluateConstraints(const NmpcModel& model, const NmpcProblem& problem,
                   : std::string()));
   }
   model.checkProblem(problem);
+  nmpc_internal::stackConstraints(model, problem, U, g, jacobian);
+}
+
+void nmpc_internal::stackConstraints(const NmpcModel& model, const NmpcProblem& problem,
+                                     const Eigen::Ref<const Eigen::VectorXd>& U,
+                                     Eigen::Ref<Eigen::VectorXd> g, Eigen::MatrixXd* jacobian) {
   if (jacobian) jacobian->setZero();
   for (int k = 0; k < model.familyCount(); ++k) {
     const int first = model.familyFirstRow(k), rows = model.familyRowCount(k);

@@ -8,7 +8,21 @@
 #include "wpg/nmpc/layout.hpp"
 #include "wpg/nmpc/problem.hpp"
 
+namespace wpg {
+class NmpcModel;
+}
+
 namespace wpg::nmpc_internal {
+
+// The bodies of evaluateConstraints, buildCostGradient and evaluateCost without their size
+// checks: for the solver, whose entry point has checked the model and the problem once.
+void stackConstraints(const NmpcModel& model, const NmpcProblem& problem,
+                      const Eigen::Ref<const Eigen::VectorXd>& U, Eigen::Ref<Eigen::VectorXd> g,
+                      Eigen::MatrixXd* jacobian);
+void costGradient(const NmpcModel& model, const NmpcProblem& problem,
+                  Eigen::Ref<Eigen::VectorXd> gradient);
+double cost(const NmpcModel& model, const NmpcProblem& problem,
+            const Eigen::Ref<const Eigen::VectorXd>& U);
 
 // Stack storage for per-sample temporaries (the horizon is at most 200 samples, validated).
 using HorizonVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 200, 1>;

@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "nmpc_internal.hpp"
 #include "wpg/nmpc/cost.hpp"
 
 namespace wpg {
@@ -173,11 +174,11 @@ NmpcSolveResult NmpcSolver::runSqp(const NmpcModel& model, const NmpcProblem& pr
   // A QP that cannot be used: keep the time-shifted previous plan (plan_ is untouched).
   auto fall_back = [&](IterationStatus status) {
     raise(result, status);
-    result.cost = evaluateCost(model, problem, plan_);
+    result.cost = nmpc_internal::cost(model, problem, plan_);
     return result;
   };
 
-  buildCostGradient(model, problem, ws.gradient);
+  nmpc_internal::costGradient(model, problem, ws.gradient);
   int me = buildStepEqualities(model, problem, ws.equality_matrix, ws.equality_vector);
   ws.linearization = plan_;
   for (int i = 0; i < L.steps; ++i) {
@@ -199,7 +200,8 @@ NmpcSolveResult NmpcSolver::runSqp(const NmpcModel& model, const NmpcProblem& pr
   const int max_iterations = iterations > 0 ? iterations : settings.max_sqp_iterations;
   for (int it = 0; it < max_iterations; ++it) {
     // eq. (21b)/(22b): g(U_lin) + G (U - U_lin) <= 0  <=>  G U <= G U_lin - g(U_lin)
-    evaluateConstraints(model, problem, ws.linearization, ws.constraints, &ws.jacobian);
+    nmpc_internal::stackConstraints(model, problem, ws.linearization, ws.constraints,
+                                    &ws.jacobian);
     ws.upper.noalias() = ws.jacobian * ws.linearization;
     ws.upper -= ws.constraints;
     ws.solver.setActiveSetGuess(active_set_.data(), active_count_);
@@ -241,7 +243,7 @@ NmpcSolveResult NmpcSolver::runSqp(const NmpcModel& model, const NmpcProblem& pr
   if (iterations == 0 && result.last_step_norm >= settings.sqp_tolerance)
     raise(result, IterationStatus::kNotConverged);
   plan_ = ws.linearization;
-  result.cost = evaluateCost(model, problem, plan_);
+  result.cost = nmpc_internal::cost(model, problem, plan_);
   return result;
 }
 
