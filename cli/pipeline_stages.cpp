@@ -57,10 +57,6 @@ void checkFilterSettings(const datasets::Scenario& scenario, const std::string& 
   }
 }
 
-WalkResult generateScenarioWalk(const datasets::Scenario& scenario) {
-  return generateWalk(scenario.walking, scenario.request);
-}
-
 double ReplayOutcome::realTimeFactor() const {
   return analysis::realTimeFactor(walk_duration, wall_time);
 }

@@ -26,9 +26,6 @@ robots::RobotModel loadRobotModel(const std::string& robot);
 // Riccati iteration does not converge), naming `scenario_path`.
 void checkFilterSettings(const datasets::Scenario& scenario, const std::string& scenario_path);
 
-// Stages NMPC and interpolation: generateWalk with the scenario's parameters and request.
-WalkResult generateScenarioWalk(const datasets::Scenario& scenario);
-
 // Stage replay + filter, with the wall time it took.
 struct ReplayOutcome {
   MultibodyValidation validation;

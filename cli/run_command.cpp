@@ -82,7 +82,7 @@ int runCommand(const RunOptions& options) {
 
   WalkResult result;
   try {
-    result = generateScenarioWalk(scenario);
+    result = generateWalk(scenario.walking, scenario.request);
   } catch (const std::invalid_argument& e) {
     throw UsageError(aboutFile(scenario_path, e.what()));
   }

@@ -81,6 +81,11 @@ ObstacleSet::ObstacleSet(std::vector<Obstacle> obstacles) : obstacles_(std::move
   }
 }
 
+double stepCentreClearance(const ObstacleDistanceOracle& distance, int index, double margin,
+                           const Eigen::Vector2d& centre, double foot_radius) {
+  return distance.signedDistance(index, centre, nullptr) - margin - foot_radius;
+}
+
 double circleSignedDistance(const Eigen::Vector2d& center, double radius,
                             const Eigen::Vector2d& point, Eigen::Vector2d* gradient) {
   const Eigen::Vector2d d = point - center;

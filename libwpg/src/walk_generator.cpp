@@ -28,8 +28,8 @@ void requireFeetClear(const OnlineWalkingGenerator& generator, const WalkRequest
   for (int o = 0; o < static_cast<int>(request.obstacles.size()); ++o) {
     for (FootSide side : {FootSide::kLeft, FootSide::kRight}) {
       const Eigen::Vector3d& foot = generator.patternGenerator().footPose(side);
-      const double clearance = distance.signedDistance(o, foot.head<2>(), nullptr) -
-                               request.obstacles[o].margin - foot_radius;
+      const double clearance = stepCentreClearance(distance, o, request.obstacles[o].margin,
+                                                   foot.head<2>(), foot_radius);
       if (clearance < 0.0) {
         throw std::invalid_argument(
             "'obstacles[" + std::to_string(o) + "]': expected the obstacle, its margin and " +
@@ -48,8 +48,9 @@ void checkLandingsClear(const WalkingParameters& parameters, const WalkRequest& 
   for (const Footstep& step : result.trajectory.footsteps) {
     if (step.landing_time <= 0.0) continue;
     for (int o = 0; o < static_cast<int>(request.obstacles.size()); ++o) {
-      const double clearance = distance.signedDistance(o, step.pose.head<2>(), nullptr) -
-                               request.obstacles[o].margin - parameters.obstacle_foot_radius;
+      const double clearance =
+          stepCentreClearance(distance, o, request.obstacles[o].margin, step.pose.head<2>(),
+                              parameters.obstacle_foot_radius);
       if (clearance < -1e-6 && result.success) {
         result.success = false;
         result.message = "the step landing at t = " + std::to_string(step.landing_time) +

@@ -40,8 +40,8 @@ FootstepObstacleReport checkFootsteps(const World& world, const wpg::WalkingPara
       }
       report.foot_distance[s] = std::min(report.foot_distance[s], clearance + margin);
       // The NMPC's obstacle row (eq. 18-19): the margin grown by the sole radius.
-      const double centre = world.signedDistance(i, pose.head<2>(), nullptr) - margin -
-                            parameters.obstacle_foot_radius;
+      const double centre = wpg::stepCentreClearance(world, i, margin, pose.head<2>(),
+                                                     parameters.obstacle_foot_radius);
       if (centre < report.centre_clearance[s]) {
         report.centre_clearance[s] = centre;
         report.centre_clearance_obstacle[s] = i;

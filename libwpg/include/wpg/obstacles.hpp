@@ -83,6 +83,14 @@ double circleSignedDistance(const Eigen::Vector2d& center, double radius,
 double polygonSignedDistance(const std::vector<Eigen::Vector2d>& polygon,
                              const Eigen::Vector2d& point, Eigen::Vector2d* gradient);
 
+// The margin of the NMPC's obstacle constraint (eq. 18-19, nmpc/obstacle_constraint.cpp) at a
+// step centre: signed distance to obstacle `index` - its `margin` - `foot_radius` (the walking
+// parameter obstacle_foot_radius), >= 0 when the constraint holds. The one definition behind
+// the start check and the landing check of generateWalk, the dataset's step_centre_clearance
+// and planning/'s footstep report.
+double stepCentreClearance(const ObstacleDistanceOracle& distance, int index, double margin,
+                           const Eigen::Vector2d& centre, double foot_radius);
+
 // Centre and radius of a circle enclosing the obstacle (cheap reach test).
 void boundingCircle(const Obstacle& obstacle, Eigen::Vector2d* center, double* radius);
 
