@@ -15,9 +15,30 @@ WalkingField integerField(const char* name, int WalkingParameters::*member) {
 WalkingField polygonField(const char* name, std::array<double, 5> WalkingParameters::*member) {
   return {name, nullptr, nullptr, member, nullptr};
 }
-WalkingField headingField(const char* name, HeadingReference WalkingParameters::*member) {
-  return {name, nullptr, nullptr, nullptr, member};
+WalkingField choiceField(const char* name, const WalkingChoice* choice) {
+  return {name, nullptr, nullptr, nullptr, choice};
 }
+
+const WalkingChoice kHeadingReference{
+    "support_foot or command",
+    [](const std::string& name, WalkingParameters* p) {
+      return parseHeadingReference(name, &p->heading_reference);
+    },
+    [](const WalkingParameters& p) { return headingReferenceName(p.heading_reference); }};
+
+const WalkingChoice kZeroCommandGait{
+    "stop or step_in_place",
+    [](const std::string& name, WalkingParameters* p) {
+      return parseZeroCommandGait(name, &p->zero_command);
+    },
+    [](const WalkingParameters& p) { return zeroCommandGaitName(p.zero_command); }};
+
+const WalkingChoice kStandingPushResponse{
+    "step or stand",
+    [](const std::string& name, WalkingParameters* p) {
+      return parseStandingPushResponse(name, &p->standing_push_response);
+    },
+    [](const WalkingParameters& p) { return standingPushResponseName(p.standing_push_response); }};
 
 }  // namespace
 
@@ -38,8 +59,12 @@ const std::vector<WalkingField>& walkingFields() {
       integerField("double_support_samples", &P::double_support_samples),
       integerField("previewed_steps", &P::previewed_steps),
       integerField("start_double_support_samples", &P::start_double_support_samples),
+      choiceField("zero_command", &kZeroCommandGait),
+      choiceField("standing_push_response", &kStandingPushResponse),
+      integerField("push_start_double_support_samples", &P::push_start_double_support_samples),
+      integerField("push_step_swing_samples", &P::push_step_swing_samples),
       integerField("velocity_window_samples", &P::velocity_window_samples),
-      headingField("heading_reference", &P::heading_reference),
+      choiceField("heading_reference", &kHeadingReference),
       numberField("control_period", &P::control_period),
       numberField("foot_length", &P::foot_length),
       numberField("foot_width", &P::foot_width),
@@ -86,9 +111,9 @@ void readWalkingFields(const Entries& entries, const std::string& prefix, bool r
     } else if (field.integer) {
       parameters->*field.integer =
           readInteger(node, key, std::numeric_limits<int>::min(), "an integer", source);
-    } else if (field.heading) {
-      if (!node.IsScalar() || !parseHeadingReference(node.Scalar(), &(parameters->*field.heading)))
-        source.fail(key, "support_foot or command", node);
+    } else if (field.choice) {
+      if (!node.IsScalar() || !field.choice->parse(node.Scalar(), parameters))
+        source.fail(key, field.choice->expected, node);
     } else {
       const Eigen::Matrix<double, 5, 1> values =
           readVector<5>(node, key, "a list of 5 numbers [m]", source);
@@ -104,8 +129,8 @@ void emitWalkingFields(YAML::Emitter& out, const WalkingParameters& parameters) 
       out << formatNumber(parameters.*field.number);
     } else if (field.integer) {
       out << parameters.*field.integer;
-    } else if (field.heading) {
-      out << headingReferenceName(parameters.*field.heading);
+    } else if (field.choice) {
+      out << field.choice->name(parameters);
     } else {
       emitNumbers(out, (parameters.*field.polygon).data(), 5);
     }

@@ -22,13 +22,20 @@ void emitNumbers(YAML::Emitter& out, const double* values, int count);
 
 // --- walking parameters: one YAML key per WalkingParameters field, same name ---------------
 
-// Exactly one member pointer is set.
+// A field that takes one of a few names (an enum of WalkingParameters).
+struct WalkingChoice {
+  const char* expected;  // the accepted names, for messages ("stop or step_in_place")
+  bool (*parse)(const std::string& name, WalkingParameters* parameters);  // false: not a name
+  const char* (*name)(const WalkingParameters& parameters);
+};
+
+// Exactly one member pointer (or `choice`) is set.
 struct WalkingField {
   const char* name;
   double WalkingParameters::*number;
   int WalkingParameters::*integer;
   std::array<double, 5> WalkingParameters::*polygon;
-  HeadingReference WalkingParameters::*heading;
+  const WalkingChoice* choice;
 };
 
 // In the struct's order (walking_parameters.hpp); the resolved YAML keeps it.

@@ -42,50 +42,80 @@ void GaitScheduler::reset(const Eigen::Vector3d& pose) {
   start_remaining_ = 0;
   zero_command_steps_ = 0;
   stop_step_ = false;
+  push_start_ = false;
+  short_first_swing_ = false;
+  lift_off_sample_ = 0;
   structure_changed_ = true;
 }
 
-GaitScheduler::SampleStart GaitScheduler::beginSample(const Eigen::Vector3d& command) {
+GaitScheduler::SampleStart GaitScheduler::beginSample(const Eigen::Vector3d& command,
+                                                      const Eigen::Vector2d& capture_point) {
   const int S = samples_per_step_;
   const bool zero = isZeroCommand(command);
+  // A zero command halts the walk only when the gait stops on it.
+  const bool halt = zero && parameters_.zero_command == ZeroCommandGait::kStop;
   SampleStart start;
-  if (start_remaining_ > 0 && zero) {
+  if (start_remaining_ > 0 && halt && !push_start_) {
     start_remaining_ = 0;  // start cancelled: back to standing
     standing_ = true;
     structure_changed_ = true;
   }
   if (standing_) {
-    if (!zero) {
-      // Start: the foot that swings first is on the side of the lateral / turning motion.
-      const FootSide swing_first =
-          (command.y() < 0.0 || (command.y() == 0.0 && command.z() < 0.0)) ? FootSide::kRight
-                                                                           : FootSide::kLeft;
+    const bool pushed = parameters_.standing_push_response == StandingPushResponse::kStep &&
+                        outsideStandingSupport(capture_point);
+    if (!halt || pushed) {
+      FootSide swing_first = FootSide::kLeft;
+      if (!zero) {
+        // The foot that swings first is on the side of the lateral / turning motion.
+        if (command.y() < 0.0 || (command.y() == 0.0 && command.z() < 0.0))
+          swing_first = FootSide::kRight;
+      } else if (pushed) {
+        // The foot on the side the capture point went to steps out under it (ties: left).
+        const Eigen::Vector3d mid = 0.5 * (left_ + right_);
+        const Eigen::Vector2d offset = capture_point - mid.head<2>();
+        const double lateral = -std::sin(mid.z()) * offset.x() + std::cos(mid.z()) * offset.y();
+        if (lateral < 0.0) swing_first = FootSide::kRight;
+      }
+      const bool push_start = pushed && halt;  // a non-zero command starts as it always does
       standing_ = false;
       support_side_ = swing_first;  // as if swing_first had been the support foot ...
       phase_sample_ = S - 1;        // ... and the other foot had just landed, after
-      start_remaining_ = parameters_.start_double_support_samples - 1;  // the starting double support
+      start_remaining_ = (pushed ? parameters_.push_start_double_support_samples
+                                 : parameters_.start_double_support_samples) -
+                         1;  // the starting double support
       zero_command_steps_ = 0;
       stop_step_ = false;
+      push_start_ = push_start;
+      short_first_swing_ = pushed;
       structure_changed_ = true;
       start.started = true;
       start.first_swing = swing_first;
     }
   } else if (start_remaining_ == 0) {
-    if (phase_sample_ == 0) {
-      zero_command_steps_ = zero ? zero_command_steps_ + 1 : 0;
-      stop_step_ = zero && zero_command_steps_ >= 2;
-    } else if (!zero) {
+    if (phase_sample_ == lift_off_sample_) {
+      zero_command_steps_ = halt ? zero_command_steps_ + 1 : 0;
+      stop_step_ = halt && zero_command_steps_ >= 2;
+    } else if (!halt) {
       stop_step_ = false;
     }
-    if (phase_sample_ == S - 1 && stop_step_ && zero) {
+    if (phase_sample_ == S - 1 && stop_step_ && halt) {
       standing_ = true;  // the final step has landed side by side
       stop_step_ = false;
+      push_start_ = false;
       structure_changed_ = true;
     }
   }
   start.structure_changed = structure_changed_;
   structure_changed_ = false;
   return start;
+}
+
+bool GaitScheduler::outsideStandingSupport(const Eigen::Vector2d& capture_point) const {
+  const StandingRectangle rectangle = standingRectangle();
+  const double c = std::cos(rectangle.centre.z()), s = std::sin(rectangle.centre.z());
+  const Eigen::Vector2d d = capture_point - rectangle.centre.head<2>();
+  return std::abs(c * d.x() + s * d.y()) > rectangle.half_length ||
+         std::abs(-s * d.x() + c * d.y()) > rectangle.half_width;
 }
 
 SupportState GaitScheduler::supportState() const {
@@ -95,15 +125,20 @@ SupportState GaitScheduler::supportState() const {
 
 // Double support on parallel side-by-side feet: the hull of both margin-reduced soles is a
 // rectangle about the point between the ankles.
-void GaitScheduler::setDoubleSupport(PhaseStructure& phase) const {
+GaitScheduler::StandingRectangle GaitScheduler::standingRectangle() const {
   const WalkingParameters& w = parameters_;
   const Eigen::Vector3d mid = 0.5 * (left_ + right_);
   const double c = std::cos(mid.z()), s = std::sin(mid.z());
   const Eigen::Vector2d offset = (left_ - right_).head<2>();
   const double separation = std::abs(-s * offset.x() + c * offset.y());
-  phase.support_pose = mid;
-  phase.support_half_length = w.copHalfLength();
-  phase.support_half_width = 0.5 * separation + w.copHalfWidth();
+  return {mid, w.copHalfLength(), 0.5 * separation + w.copHalfWidth()};
+}
+
+void GaitScheduler::setDoubleSupport(PhaseStructure& phase) const {
+  const StandingRectangle rectangle = standingRectangle();
+  phase.support_pose = rectangle.centre;
+  phase.support_half_length = rectangle.half_length;
+  phase.support_half_width = rectangle.half_width;
 }
 
 void GaitScheduler::fillPhase(const NmpcModel& model, PhaseStructure& phase) const {
@@ -167,9 +202,13 @@ GaitScheduler::SampleEnd GaitScheduler::endSample(const Eigen::Vector3d& planned
       end.landed = true;
     }
     if (phase_sample_ == S - 1) {
-      // Step completed: the landed foot becomes the support.
+      // Step completed: the landed foot becomes the support. The first swing after a push
+      // start lifts off later in the step (a swing of push_step_swing_samples).
       support_side_ = otherSide(support_side_);
-      phase_sample_ = 0;
+      lift_off_sample_ =
+          short_first_swing_ ? S - 1 - parameters_.push_step_swing_samples : 0;
+      short_first_swing_ = false;
+      phase_sample_ = lift_off_sample_;
       end.step_completed = true;
     } else {
       ++phase_sample_;

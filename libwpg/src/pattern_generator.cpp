@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <utility>
 
 namespace wpg {
@@ -61,7 +62,13 @@ const MpcIterationLog& PatternGenerator::update(double time, const Eigen::Vector
   time_ = time;
   command_ = command;
 
-  const GaitScheduler::SampleStart phase_start = gait_.beginSample(command);
+  // The capture point c + c'/omega0 of the LIPM (eq. 3): where the CoP would have to be to
+  // bring the CoM to rest; out of a standing robot's reach it must step.
+  const WalkingParameters& w = model_.parameters();
+  const double omega0 = std::sqrt(w.gravity / w.com_height);
+  const Eigen::Vector2d capture_point(com_x_(0) + com_x_(1) / omega0,
+                                      com_y_(0) + com_y_(1) / omega0);
+  const GaitScheduler::SampleStart phase_start = gait_.beginSample(command, capture_point);
   if (phase_start.started) {
     references_.restartHeading(gait_.feetMeanYaw());
     seedPlanFromStanding(command, phase_start.first_swing);
@@ -77,7 +84,6 @@ const MpcIterationLog& PatternGenerator::update(double time, const Eigen::Vector
   problem_.com_y = com_y_;
   // Landing bound (landing_bound family): the landing planned at the previous sample is the
   // warm start's step 0 (shiftPlan moved step 1 there when the step before was completed).
-  const WalkingParameters& w = model_.parameters();
   problem_.landing_bounded = gait_.swinging() && !phase_start.structure_changed;
   problem_.previous_landing = plannedStep(0);
   problem_.landing_time_left =
@@ -164,7 +170,7 @@ void PatternGenerator::readPlan(double time) {
   plan_.swing_side = otherSide(gait_.supportSide());
   plan_.swing_target = plannedStep(0);
   plan_.landing_time = time + (S - 1 - m) * w.sampling_period;
-  plan_.lift_off_time = time - m * w.sampling_period;
+  plan_.lift_off_time = time - (m - gait_.liftOffSample()) * w.sampling_period;
 }
 
 // The warm start of the next real-time iteration: the jerks one sample earlier and, when a

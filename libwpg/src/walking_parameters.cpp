@@ -39,6 +39,36 @@ const char* headingReferenceName(HeadingReference reference) {
   return reference == HeadingReference::kCommand ? "command" : "support_foot";
 }
 
+bool parseZeroCommandGait(const std::string& name, ZeroCommandGait* out) {
+  if (name == "stop") {
+    *out = ZeroCommandGait::kStop;
+  } else if (name == "step_in_place") {
+    *out = ZeroCommandGait::kStepInPlace;
+  } else {
+    return false;
+  }
+  return true;
+}
+
+const char* zeroCommandGaitName(ZeroCommandGait gait) {
+  return gait == ZeroCommandGait::kStepInPlace ? "step_in_place" : "stop";
+}
+
+bool parseStandingPushResponse(const std::string& name, StandingPushResponse* out) {
+  if (name == "step") {
+    *out = StandingPushResponse::kStep;
+  } else if (name == "stand") {
+    *out = StandingPushResponse::kStand;
+  } else {
+    return false;
+  }
+  return true;
+}
+
+const char* standingPushResponseName(StandingPushResponse response) {
+  return response == StandingPushResponse::kStand ? "stand" : "step";
+}
+
 void WalkingParameters::validate() const {
   requirePositive(com_height, "com_height");
   requirePositive(gravity, "gravity");
@@ -64,6 +94,14 @@ void WalkingParameters::validate() const {
           "start_double_support_samples",
           "an integer in [1, single_support_samples + double_support_samples]",
           start_double_support_samples);
+  require(push_start_double_support_samples >= 1 &&
+              push_start_double_support_samples <= stepSamples(),
+          "push_start_double_support_samples",
+          "an integer in [1, single_support_samples + double_support_samples]",
+          push_start_double_support_samples);
+  require(push_step_swing_samples >= 1 && push_step_swing_samples <= single_support_samples,
+          "push_step_swing_samples", "an integer in [1, single_support_samples]",
+          push_step_swing_samples);
   requirePositive(control_period, "control_period");
   const double ratio = sampling_period / control_period;
   require(std::abs(ratio - std::round(ratio)) < 1e-9 && ratio >= 1.0, "control_period",

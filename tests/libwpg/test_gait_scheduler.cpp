@@ -1,6 +1,7 @@
 // GaitScheduler, the walking phase bookkeeping, on its own: start (starting double support,
 // first swing side), steps (swing, landing, completion), stop (free step, side-by-side step,
-// standing), and the PhaseStructure it gives each sample.
+// standing), stepping in place, steps started by a push, and the PhaseStructure it gives each
+// sample.
 #include <gtest/gtest.h>
 
 #include <Eigen/Core>
@@ -10,6 +11,7 @@
 
 namespace {
 
+using Eigen::Vector2d;
 using Eigen::Vector3d;
 using wpg::FootSide;
 using wpg::GaitScheduler;
@@ -24,8 +26,8 @@ TEST(GaitScheduler, StandsUntilANonZeroCommand) {
   EXPECT_EQ(gait.footPose(FootSide::kLeft), Vector3d(1.0, 2.095, 0.0));
   EXPECT_EQ(gait.footPose(FootSide::kRight), Vector3d(1.0, 1.905, 0.0));
   // The first sample after a reset has a new structure; standing on does not.
-  EXPECT_TRUE(gait.beginSample(Vector3d::Zero()).structure_changed);
-  const GaitScheduler::SampleStart still = gait.beginSample(Vector3d::Zero());
+  EXPECT_TRUE(gait.beginSample(Vector3d::Zero(), Vector2d(1.0, 2.0)).structure_changed);
+  const GaitScheduler::SampleStart still = gait.beginSample(Vector3d::Zero(), Vector2d(1.0, 2.0));
   EXPECT_FALSE(still.structure_changed);
   EXPECT_FALSE(still.started);
   EXPECT_EQ(gait.supportState(), SupportState::kDouble);
@@ -46,7 +48,7 @@ TEST(GaitScheduler, FirstSwingIsOnTheSideOfTheMotion) {
         std::pair{Vector3d(0.2, -0.1, 0.0), FootSide::kRight},
         std::pair{Vector3d(0.2, 0.0, -0.1), FootSide::kRight}}) {
     GaitScheduler gait(w);
-    const GaitScheduler::SampleStart start = gait.beginSample(command);
+    const GaitScheduler::SampleStart start = gait.beginSample(command, Vector2d::Zero());
     EXPECT_TRUE(start.started);
     EXPECT_TRUE(start.structure_changed);
     EXPECT_EQ(start.first_swing, side) << command.transpose();
@@ -64,7 +66,7 @@ TEST(GaitScheduler, StartsStepsAndStops) {
   double t = 0.0;
   bool starting = false, swinging = false;  // during the sample
   auto sample = [&](const Vector3d& command, const Vector3d& landing) {
-    const GaitScheduler::SampleStart start = gait.beginSample(command);
+    const GaitScheduler::SampleStart start = gait.beginSample(command, Vector2d::Zero());
     gait.fillPhase(model, problem.phase);
     starting = gait.starting();
     swinging = gait.swinging();
@@ -119,6 +121,82 @@ TEST(GaitScheduler, StartsStepsAndStops) {
   EXPECT_TRUE(fixed_side_by_side);
   EXPECT_TRUE(gait.standing());
   EXPECT_LE(samples_to_stand, 2 * S + 1);
+}
+
+// zero_command: step_in_place: a zero command starts a standing robot (normal starting double
+// support) and never stops it.
+TEST(GaitScheduler, StepInPlaceStartsAndNeverStops) {
+  WalkingParameters w;
+  w.zero_command = wpg::ZeroCommandGait::kStepInPlace;
+  GaitScheduler gait(w);
+  const GaitScheduler::SampleStart start = gait.beginSample(Vector3d::Zero(), Vector2d::Zero());
+  EXPECT_TRUE(start.started);
+  EXPECT_EQ(start.first_swing, FootSide::kLeft);
+  int landings = 0;
+  for (int k = 0; k < w.start_double_support_samples + 6 * w.stepSamples(); ++k) {
+    if (k > 0) EXPECT_FALSE(gait.beginSample(Vector3d::Zero(), Vector2d::Zero()).started);
+    EXPECT_FALSE(gait.standing()) << "sample " << k;
+    const Vector3d in_place = gait.footPose(wpg::otherSide(gait.supportSide()));
+    landings += gait.endSample(in_place, 0.1 * (k + 1)).landed ? 1 : 0;
+  }
+  EXPECT_EQ(landings, 6);
+}
+
+// standing_push_response: step: a capture point inside the standing rectangle changes nothing;
+// out of it the robot starts after push_start_double_support_samples, the foot on the capture
+// point's side first; a zero command then stops it again (free step, side-by-side step).
+TEST(GaitScheduler, PushedStandingRobotStepsThenStops) {
+  const WalkingParameters w;
+  const double half_length = w.copHalfLength();
+  const double half_width = 0.5 * w.initial_foot_separation + w.copHalfWidth();
+  {
+    GaitScheduler gait(w);
+    gait.reset(Vector3d(1.0, 2.0, 0.5));
+    EXPECT_FALSE(gait.outsideStandingSupport(Vector2d(1.0, 2.0)));
+    // Just inside / just outside along the rotated axes (yaw 0.5).
+    const Vector2d along(std::cos(0.5), std::sin(0.5)), across(-std::sin(0.5), std::cos(0.5));
+    EXPECT_FALSE(gait.outsideStandingSupport(Vector2d(1.0, 2.0) + 0.99 * half_length * along));
+    EXPECT_TRUE(gait.outsideStandingSupport(Vector2d(1.0, 2.0) + 1.01 * half_length * along));
+    EXPECT_FALSE(gait.outsideStandingSupport(Vector2d(1.0, 2.0) - 0.99 * half_width * across));
+    EXPECT_TRUE(gait.outsideStandingSupport(Vector2d(1.0, 2.0) - 1.01 * half_width * across));
+    EXPECT_FALSE(gait.beginSample(Vector3d::Zero(), Vector2d(1.0, 2.0)).started);
+    const GaitScheduler::SampleStart pushed =
+        gait.beginSample(Vector3d::Zero(), Vector2d(1.0, 2.0) - 1.5 * half_width * across);
+    EXPECT_TRUE(pushed.started);
+    EXPECT_EQ(pushed.first_swing, FootSide::kRight);  // pushed to the right
+  }
+  {
+    WalkingParameters stand = w;
+    stand.standing_push_response = wpg::StandingPushResponse::kStand;
+    GaitScheduler gait(stand);
+    EXPECT_FALSE(gait.beginSample(Vector3d::Zero(), Vector2d(0.1, 0.0)).started);
+    EXPECT_TRUE(gait.standing());
+  }
+  GaitScheduler gait(w);
+  const Vector2d ahead(2.0 * half_length, 0.0);  // a sagittal push: ties go to the left foot
+  const GaitScheduler::SampleStart start = gait.beginSample(Vector3d::Zero(), ahead);
+  ASSERT_TRUE(start.started);
+  EXPECT_EQ(start.first_swing, FootSide::kLeft);
+  // push_start_double_support_samples, then a swing of push_step_swing_samples; the zero
+  // command does not cancel the start, and after the side-by-side step the robot stands again.
+  int samples = 0, landings = 0, first_swing_sample = -1, first_landing_sample = -1;
+  double t = 0.0;
+  while (samples < 10 * w.stepSamples()) {
+    if (samples > 0) gait.beginSample(Vector3d::Zero(), Vector2d::Zero());
+    if (gait.standing()) break;
+    if (gait.swinging() && first_swing_sample < 0) first_swing_sample = samples;
+    const Vector3d support = gait.footPose(gait.supportSide());
+    const double side = gait.supportSide() == FootSide::kLeft ? -1.0 : 1.0;
+    t += w.sampling_period;
+    const bool landed = gait.endSample(support + Vector3d(0.05, side * 0.2, 0.0), t).landed;
+    if (landed && first_landing_sample < 0) first_landing_sample = samples;
+    landings += landed ? 1 : 0;
+    ++samples;
+  }
+  EXPECT_TRUE(gait.standing());
+  EXPECT_EQ(first_swing_sample, w.push_start_double_support_samples);
+  EXPECT_EQ(first_landing_sample - first_swing_sample + 1, w.push_step_swing_samples);
+  EXPECT_EQ(landings, 2);  // the step that catches the push (the free step), the final step
 }
 
 }  // namespace

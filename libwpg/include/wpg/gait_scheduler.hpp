@@ -13,7 +13,15 @@
 //    command starts walking: a double support of start_double_support_samples in which the
 //    CoP samples may use both feet (the CoM must first move towards the first support foot,
 //    which needs the CoP on the other side of it), then the first lift-off. A zero command is
-//    followed by one free step to slow down, then a side-by-side step, then standing again.
+//    followed by one free step to slow down, then a side-by-side step, then standing again
+//    (zero_command: stop), or keeps the robot stepping in place (zero_command: step_in_place,
+//    which also starts a standing robot).
+//  * Pushed while standing (standing_push_response: step): when the capture point leaves the
+//    standing double-support rectangle, the CoP can no longer stop the CoM (LIPM, eq. 3) and
+//    the robot starts stepping after push_start_double_support_samples, the foot on the
+//    capture point's side first, with a short first swing (push_step_swing_samples: the
+//    capture point runs away from the CoP as e^(omega0 t), ~11x in a 0.7 s swing); with a zero
+//    command it then stops again as above.
 #include <Eigen/Core>
 
 #include "wpg/nmpc.hpp"
@@ -50,8 +58,13 @@ class GaitScheduler {
     // of the previous active set do not describe this sample's problem.
     bool structure_changed = false;
   };
-  // Phase bookkeeping at the start of an NMPC sample for the clamped robot-frame command.
-  SampleStart beginSample(const Eigen::Vector3d& command);
+  // Phase bookkeeping at the start of an NMPC sample for the clamped robot-frame command and
+  // the CoM's capture point (x, y) c + c'/omega0 at that instant (world frame).
+  SampleStart beginSample(const Eigen::Vector3d& command, const Eigen::Vector2d& capture_point);
+
+  // The capture point is outside the rectangle in which a standing robot keeps its CoP (the
+  // hull of both margin-reduced soles, as fillPhase gives it to the NMPC).
+  bool outsideStandingSupport(const Eigen::Vector2d& capture_point) const;
 
   // The phase structure of the current sample (and its CoP rows' steps, from the model).
   void fillPhase(const NmpcModel& model, PhaseStructure& phase) const;
@@ -73,6 +86,9 @@ class GaitScheduler {
   SupportState supportState() const;
   FootSide supportSide() const { return support_side_; }
   int phaseSample() const { return phase_sample_; }
+  // Phase time at which the current step's swing foot lifted off: 0, or later for the short
+  // first swing of a push start (S - 1 - push_step_swing_samples).
+  int liftOffSample() const { return lift_off_sample_; }
   // Pose (x, y, yaw) on the ground; for the swing foot, its lift-off pose.
   const Eigen::Vector3d& footPose(FootSide side) const {
     return side == FootSide::kLeft ? left_ : right_;
@@ -83,6 +99,11 @@ class GaitScheduler {
 
  private:
   Eigen::Vector3d& foot(FootSide side) { return side == FootSide::kLeft ? left_ : right_; }
+  struct StandingRectangle {
+    Eigen::Vector3d centre;  // the point between the ankles (x, y, yaw)
+    double half_length, half_width;
+  };
+  StandingRectangle standingRectangle() const;
   void setDoubleSupport(PhaseStructure& phase) const;
 
   WalkingParameters parameters_;
@@ -95,6 +116,9 @@ class GaitScheduler {
   int start_remaining_ = 0;     // > 0: starting double support, samples left before S-1
   int zero_command_steps_ = 0;  // consecutive step starts with a zero command
   bool stop_step_ = false;      // the current swing is the final side-by-side step
+  bool push_start_ = false;     // the current start was triggered by a push, not a command
+  bool short_first_swing_ = false;  // the next swing is a push start's short one
+  int lift_off_sample_ = 0;     // phase time at which the current step's swing lifted off
   bool structure_changed_ = false;
 };
 

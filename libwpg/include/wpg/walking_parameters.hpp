@@ -29,6 +29,29 @@ enum class HeadingReference {
 bool parseHeadingReference(const std::string& name, HeadingReference* out);
 const char* headingReferenceName(HeadingReference reference);
 
+// What the gait does with a zero velocity command.
+enum class ZeroCommandGait {
+  // Slow down with one free step, put the feet side by side with a final step, then stand
+  // (the authors' code). A standing robot with a zero command stays standing.
+  kStop,
+  // Step in place: the steps go on at the gait's pace with the feet where the NMPC puts them
+  // (the paper's on-the-spot pushes, Sec. V-B, are applied to a robot stepping in place). A
+  // standing robot with a zero command starts stepping.
+  kStepInPlace,
+};
+bool parseZeroCommandGait(const std::string& name, ZeroCommandGait* out);  // stop / step_in_place
+const char* zeroCommandGaitName(ZeroCommandGait gait);
+
+// What a standing robot does when a perturbation carries its capture point c + c'/omega0 out of
+// the region its CoP can reach (the double-support rectangle of the standing NMPC): with the
+// CoP alone it cannot stop the CoM any more (LIPM, eq. 3), only a step can.
+enum class StandingPushResponse {
+  kStep,   // start stepping at once (push_start_double_support_samples), then stop again
+  kStand,  // keep standing: the CoP constraints alone (a large enough push makes it fall)
+};
+bool parseStandingPushResponse(const std::string& name, StandingPushResponse* out);  // step / stand
+const char* standingPushResponseName(StandingPushResponse response);
+
 struct WalkingParameters {
   // --- template model (Sec. II) -------------------------------------------------------------
   double com_height = 0.814;           // h [m], CoM height above the ground, eq. (3)
@@ -42,6 +65,15 @@ struct WalkingParameters {
   // Double support before the first lift-off when starting from standing: the CoP may use
   // both feet while the CoM moves over the first support foot (at most one step's samples).
   int start_double_support_samples = 8;
+  ZeroCommandGait zero_command = ZeroCommandGait::kStop;
+  StandingPushResponse standing_push_response = StandingPushResponse::kStep;
+  // Double support before the first lift-off when a push starts the steps of a standing robot
+  // (standing_push_response: step): short, because the capture point diverges from the
+  // support as e^(omega0 t) (a full start_double_support_samples would let it run away).
+  int push_start_double_support_samples = 2;
+  // Swing duration (samples) of the first step after a push start: shorter than a regular
+  // step's single support, so that the foot lands before the capture point has run away.
+  int push_step_swing_samples = 3;
   double control_period = 0.005;       // [s], interpolation (robot control) period
   // --- feet (Fig. 4) ------------------------------------------------------------------------
   double foot_length = 0.2172;         // sole length along the foot x axis [m], ankle centred
