@@ -37,26 +37,38 @@ using namespace wpg_test;
 TEST(ConstraintFamilies, BuiltInFamiliesInTheLayoutsOrder) {
   const NmpcModel model(WalkingParameters(), 3);
   const NmpcLayout& L = model.layout();
-  ASSERT_EQ(model.familyCount(), 5);
-  const char* names[5] = {"cop", "step_feasibility", "yaw_bound", "obstacle", "landing_bound"};
-  const int first[5] = {L.copRow(0, 0), L.feasibilityRow(0, 0), L.yawRow(0, true),
-                        L.firstObstacleRow(), L.landingRow(0, true)};
-  for (int k = 0; k < 5; ++k) {
+  ASSERT_EQ(model.familyCount(), 6);
+  const char* names[6] = {"cop",      "step_feasibility", "yaw_bound",
+                          "obstacle", "landing_bound",    "landing_yaw_bound"};
+  const int first[6] = {L.copRow(0, 0),       L.feasibilityRow(0, 0), L.yawRow(0, true),
+                        L.firstObstacleRow(), L.landingRow(0, true),  L.landingRow(2, true)};
+  for (int k = 0; k < 6; ++k) {
     EXPECT_STREQ(model.family(k).name(), names[k]);
     EXPECT_EQ(model.familyFirstRow(k), first[k]);
   }
-  EXPECT_EQ(model.familyRowCount(4), 0);  // the landing bound is off by default: no rows
+  // The landing bounds are off by default: no rows; each has its rows when its rate is on.
+  EXPECT_EQ(model.familyRowCount(4), 0);
+  EXPECT_EQ(model.familyRowCount(5), 0);
   WalkingParameters bounded;
   bounded.max_landing_speed = 0.4;
-  EXPECT_EQ(NmpcModel(bounded, 3).familyRowCount(4), NmpcLayout::kLandingRows);
-  EXPECT_EQ(model.familyFirstRow(4) + model.familyRowCount(4), L.inequalityCount());
+  EXPECT_EQ(NmpcModel(bounded, 3).familyRowCount(4), NmpcLayout::kLandingPositionRows);
+  EXPECT_EQ(NmpcModel(bounded, 3).familyRowCount(5), 0);
+  bounded.max_landing_yaw_rate = 1.5;
+  const NmpcModel both(bounded, 3);
+  EXPECT_EQ(both.familyRowCount(5), NmpcLayout::kLandingYawRows);
+  EXPECT_EQ(both.familyFirstRow(5), both.layout().landingRow(2, true));
+  EXPECT_EQ(both.familyFirstRow(5) + both.familyRowCount(5), both.layout().inequalityCount());
+  EXPECT_EQ(model.familyFirstRow(5) + model.familyRowCount(5), L.inequalityCount());
   EXPECT_EQ(L.builtinRowCount(), L.inequalityCount());
   EXPECT_EQ(model.family(0).group(), RelaxationGroup::kBalance);
   EXPECT_EQ(model.family(1).group(), RelaxationGroup::kKinematics);
   EXPECT_EQ(model.family(2).group(), RelaxationGroup::kKinematics);
   EXPECT_EQ(model.family(3).group(), RelaxationGroup::kObstacle);
   EXPECT_EQ(model.family(4).group(), RelaxationGroup::kKinematics);
+  EXPECT_EQ(model.family(5).group(), RelaxationGroup::kKinematics);
   EXPECT_STREQ(model.family(2).unit(), "rad");
+  EXPECT_STREQ(model.family(4).unit(), "m");
+  EXPECT_STREQ(model.family(5).unit(), "rad");
 }
 
 // Each family on its own rows (wpg::checkConstraintJacobian), at random points of every
@@ -102,7 +114,7 @@ TEST(ConstraintFamilies, EachFamilyMatchesFiniteDifferences) {
       }
     }
   }
-  EXPECT_EQ(points, 5 * 3 * model.patternCount());
+  EXPECT_EQ(points, 6 * 3 * model.patternCount());
 }
 
 // A new family is one class and one registration: its rows come after the built-in ones, the
@@ -114,14 +126,14 @@ TEST(ConstraintFamilies, AddedFamilyIsEnforced) {
   // tighter: at 0.3 m/s the step after next wants to land ~0.5 m ahead of the support.
   const double reach = 0.3;
   model.addConstraintFamily(std::make_shared<StepReach>(reach));
-  ASSERT_EQ(model.familyCount(), 6);
-  EXPECT_EQ(model.familyFirstRow(5), model.layout().builtinRowCount());
+  ASSERT_EQ(model.familyCount(), 7);
+  EXPECT_EQ(model.familyFirstRow(6), model.layout().builtinRowCount());
   EXPECT_EQ(model.layout().inequalityCount(), model.layout().builtinRowCount() + w.previewed_steps);
   Rng rng(5);
   for (int trial = 0; trial < 10; ++trial) {
     const NmpcProblem problem = randomProblem(model, trial % 8, FootSide::kRight, FixedMode::kNone, rng);
     const VectorXd U = randomU(model, problem, rng);
-    EXPECT_LE(wpg::checkConstraintJacobian(model, problem, U, 5).worst, 1e-6);
+    EXPECT_LE(wpg::checkConstraintJacobian(model, problem, U, 6).worst, 1e-6);
   }
 
   // Walk forward with the paper's families, then solve the same samples with the added one.
@@ -139,7 +151,7 @@ TEST(ConstraintFamilies, AddedFamilyIsEnforced) {
       const wpg::NmpcSolveResult result = solver.solve(model, generator.problem(), settings);
       ASSERT_EQ(result.status, IterationStatus::kSolved) << "sample " << k;
       wpg::evaluateConstraints(model, generator.problem(), solver.plan(), g, nullptr);
-      const auto rows = g.segment(model.familyFirstRow(5), model.familyRowCount(5));
+      const auto rows = g.segment(model.familyFirstRow(6), model.familyRowCount(6));
       EXPECT_LE(rows.maxCoeff(), 1e-8) << "sample " << k;
       if (rows.maxCoeff() > -1e-8) ++binding;
       EXPECT_LE(g.maxCoeff(), 1e-8) << "sample " << k;
@@ -230,9 +242,10 @@ TEST(ConstraintFamilies, ObstacleRowsRelaxFirst) {
     const wpg::NmpcSolveResult result =
         solver.solve(model, samples.problems[i], wpg::GeneratorSettings());
     EXPECT_EQ(result.status, IterationStatus::kRelaxedObstacle) << i;
-    EXPECT_EQ(result.relaxed_families, 1u << 5) << i;
-    EXPECT_LE(result.slack[6], 1e-12) << i;
-    for (int k = 0; k < 5; ++k) EXPECT_LE(result.slack[k], 1e-12) << i;
+    const int never = model.familyCount() - 2, reach = model.familyCount() - 1;
+    EXPECT_EQ(result.relaxed_families, 1u << never) << i;
+    EXPECT_LE(result.slack[reach], 1e-12) << i;
+    for (int k = 0; k < never; ++k) EXPECT_LE(result.slack[k], 1e-12) << i;
   }
 }
 

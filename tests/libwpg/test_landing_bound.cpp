@@ -23,7 +23,8 @@ using wpg::NmpcProblem;
 using wpg::WalkingParameters;
 using namespace wpg_test;
 
-constexpr int kLandingFamily = 4;  // registration order (NmpcModel's constructor)
+constexpr int kLandingFamily = 4;     // x, y (registration order, NmpcModel's constructor)
+constexpr int kLandingYawFamily = 5;  // yaw
 
 WalkingParameters boundOn() {
   WalkingParameters w;
@@ -36,6 +37,9 @@ TEST(LandingBound, RowsBoundTheLandingAroundThePreviousOne) {
   const WalkingParameters w = boundOn();
   const NmpcModel model(w, 0);
   ASSERT_STREQ(model.family(kLandingFamily).name(), "landing_bound");
+  ASSERT_STREQ(model.family(kLandingYawFamily).name(), "landing_yaw_bound");
+  // Its rows follow the x, y rows: six rows in all, x, y, yaw, upper then lower.
+  ASSERT_EQ(model.familyFirstRow(kLandingYawFamily), model.familyFirstRow(kLandingFamily) + 4);
   const wpg::NmpcLayout& L = model.layout();
   Rng rng(3);
   NmpcProblem problem = randomProblem(model, 3, FootSide::kLeft, FixedMode::kNone, rng);
@@ -53,8 +57,10 @@ TEST(LandingBound, RowsBoundTheLandingAroundThePreviousOne) {
   const double expected[6] = {0.05 - 0.12, -0.05 - 0.12, -0.2 - 0.12,
                               0.2 - 0.12,  -0.5 - 0.45, 0.5 - 0.45};
   for (int r = 0; r < 6; ++r) EXPECT_NEAR(rows(r), expected[r], 1e-12) << "row " << r;
-  const wpg::JacobianCheck check = wpg::checkConstraintJacobian(model, problem, U, kLandingFamily);
-  EXPECT_LE(check.worst, 1e-6);
+  for (const int family : {kLandingFamily, kLandingYawFamily}) {
+    const wpg::JacobianCheck check = wpg::checkConstraintJacobian(model, problem, U, family);
+    EXPECT_LE(check.worst, 1e-6) << model.family(family).name();
+  }
 
   // Inactive: a fixed landing, no swing, or the bound switched off.
   NmpcProblem fixed = problem;
@@ -65,12 +71,17 @@ TEST(LandingBound, RowsBoundTheLandingAroundThePreviousOne) {
   unbounded.landing_bounded = false;
   wpg::evaluateConstraints(model, unbounded, U, g, nullptr);
   EXPECT_EQ(g.segment(first, 6), VectorXd::Constant(6, -1.0));
+  // x, y off: no rows of its own; yaw still on.
   WalkingParameters off = w;
   off.max_landing_speed = 0.0;
   const NmpcModel model_off(off, 0);
-  wpg::evaluateConstraints(model_off, problem, U, g, nullptr);
-  EXPECT_EQ(g.segment(first, 4), VectorXd::Constant(4, -1.0));  // x, y off, yaw still on
-  EXPECT_NEAR(g(first + 5), 0.5 - 0.45, 1e-12);
+  EXPECT_EQ(model_off.familyRowCount(kLandingFamily), 0);
+  ASSERT_EQ(model_off.familyRowCount(kLandingYawFamily), 2);
+  VectorXd g_off(model_off.layout().inequalityCount());
+  wpg::evaluateConstraints(model_off, problem, U, g_off, nullptr);
+  const int yaw_first = model_off.familyFirstRow(kLandingYawFamily);
+  EXPECT_NEAR(g_off(yaw_first), -0.5 - 0.45, 1e-12);
+  EXPECT_NEAR(g_off(yaw_first + 1), 0.5 - 0.45, 1e-12);
 }
 
 // Sample after sample of a walk pushed sideways during a swing: the generator gives the

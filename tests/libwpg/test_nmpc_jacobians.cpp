@@ -93,7 +93,8 @@ TEST(NmpcJacobian, ObstacleRowsMatchFiniteDifferences) {
   const NmpcLayout& L = model.layout();
   ASSERT_EQ(L.obstacle_slots, slots);
   ASSERT_EQ(L.inequalityCount(), 4 * L.horizon + L.feasibility_edges * L.steps + 2 * L.steps +
-                                     slots * L.steps + L.landing_rows);
+                                     slots * L.steps + L.landing_position_rows +
+                                     L.landing_yaw_rows);
   const std::vector<wpg::Obstacle> obstacles = wpg_test::threeObstacles();
   const wpg::AnalyticObstacleDistance distance(obstacles);
   Rng rng(31);

@@ -14,7 +14,8 @@
 //       step inside the previous step's polygon  (14)-(15)  5 rows per step
 //       yaw change between consecutive steps     (16)-(17)  2 rows per step
 //       obstacle avoidance                       (18)-(19)  1 row per step and obstacle slot
-//       swing foot's landing bound      Sec. III-C3 last paragraph, 6 rows (off by default)
+//       swing foot's landing bound      Sec. III-C3 last paragraph: x, y (4 rows) and yaw (2 rows)
+//                                       as two families, each off by default
 //   wpg/nmpc/numdiff.hpp            finite-difference check of any family's Jacobian
 //   wpg/nmpc/solver.hpp             Gauss-Newton SQP, staged relaxation, LMPC baseline
 #include "wpg/nmpc/constraint_family.hpp"

@@ -94,7 +94,7 @@ struct WalkingParameters {
   // --- orientation, eq. (16): |yaw(step) - yaw(previous step)| <= bound. Paper: 0.05 rad;
   //     the authors' code uses 0.17 rad (needed for the paper's own 0.2 rad/s turns).
   double max_step_yaw_change = 0.05;   // [rad]
-  // --- swing-foot landing bound (Sec. III-C3, last paragraph; landing_bound family): while a
+  // --- swing-foot landing bound (Sec. III-C3, last paragraph; landing_bound and landing_yaw_bound families): while a
   //     foot swings, its landing may move from the one planned at the previous sample by at
   //     most what the foot can travel at this speed in the time left before touchdown. Values
   //     of the authors' code (jrl-umi3218/jrl-walkgen, src/ZMPRefTrajectoryGeneration/

@@ -18,8 +18,10 @@
 // at rest in T_left, a landing change d adds at most ~1.9 d / T_left <= 1.9 v_max to its
 // speed, however late the change comes.
 //
-// 6 rows (x, y, yaw; upper then lower), linear in U. Inactive (g = -1) when no foot swings,
-// when step 0 is fixed (landed, final step) and for an axis whose bound is 0 (off).
+// Two families, so that each relaxes with a slack in one unit: landing_bound (x, y: 4 rows,
+// metres) and landing_yaw_bound (yaw: 2 rows, radians); upper then lower row per axis, linear
+// in U. A family whose rate is 0 (off) has no rows; the rows are inactive (g = -1) when no
+// foot swings and when step 0 is fixed (landed, final step).
 #include "nmpc_internal.hpp"
 #include "wpg/nmpc/model.hpp"
 
@@ -28,12 +30,14 @@ namespace {
 
 class LandingBoundConstraint final : public NamedConstraintFamily {
  public:
-  // Rows mix metres (x, y) and radians (yaw); the family's slack is reported in metres.
-  LandingBoundConstraint()
-      : NamedConstraintFamily("landing_bound", "m", RelaxationGroup::kKinematics) {}
-  // No rows when the bound is off (both rates 0): the family stays registered (its slack
-  // column is always there) but adds nothing to the QP.
-  int rowCount(const NmpcLayout& L) const override { return L.landing_rows; }
+  // Axes [first_axis, last_axis) of (x, y, yaw).
+  LandingBoundConstraint(const char* name, const char* unit, int first_axis, int last_axis)
+      : NamedConstraintFamily(name, unit, RelaxationGroup::kKinematics),
+        first_axis_(first_axis),
+        last_axis_(last_axis) {}
+  int rowCount(const NmpcLayout& L) const override {
+    return first_axis_ == 2 ? L.landing_yaw_rows : L.landing_position_rows;
+  }
 
   void evaluate(const NmpcModel& model, const NmpcProblem& problem,
                 const Eigen::Ref<const Eigen::VectorXd>& U, Eigen::Ref<Eigen::VectorXd> g,
@@ -41,14 +45,15 @@ class LandingBoundConstraint final : public NamedConstraintFamily {
     const NmpcLayout& L = model.layout();
     const WalkingParameters& w = model.parameters();
     g.setConstant(-1.0);
-    if (!problem.landing_bounded || L.steps == 0 || problem.phase.step_fixed(0)) return;
+    if (rowCount(L) == 0 || !problem.landing_bounded || L.steps == 0 ||
+        problem.phase.step_fixed(0))
+      return;
     const double rates[3] = {w.max_landing_speed, w.max_landing_speed, w.max_landing_yaw_rate};
     const int columns[3] = {L.stepX(), L.stepY(), L.stepYaw()};
-    for (int axis = 0; axis < 3; ++axis) {
-      if (rates[axis] <= 0.0) continue;  // this axis is switched off
+    for (int axis = first_axis_; axis < last_axis_; ++axis) {
       const double bound = rates[axis] * problem.landing_time_left;
       const double change = U(columns[axis]) - problem.previous_landing(axis);
-      const int upper = 2 * axis, lower = 2 * axis + 1;
+      const int upper = 2 * (axis - first_axis_), lower = upper + 1;
       g(upper) = change - bound;
       g(lower) = -change - bound;
       if (!jacobian) continue;
@@ -61,12 +66,19 @@ class LandingBoundConstraint final : public NamedConstraintFamily {
   int shiftedRow(const NmpcLayout&, int row, bool step_completed) const override {
     return step_completed ? -1 : row;
   }
+
+ private:
+  int first_axis_, last_axis_;
 };
 
 }  // namespace
 
 std::unique_ptr<ConstraintFamily> makeLandingBoundConstraint() {
-  return std::make_unique<LandingBoundConstraint>();
+  return std::make_unique<LandingBoundConstraint>("landing_bound", "m", 0, 2);
+}
+
+std::unique_ptr<ConstraintFamily> makeLandingYawBoundConstraint() {
+  return std::make_unique<LandingBoundConstraint>("landing_yaw_bound", "rad", 2, 3);
 }
 
 }  // namespace wpg

@@ -32,9 +32,9 @@ NmpcModel::NmpcModel(const WalkingParameters& parameters, int obstacle_slots)
   layout_.steps = nf;
   layout_.feasibility_edges = feasibility_left_.edgeCount();
   layout_.obstacle_slots = obstacle_slots;
-  const bool landing_bound =
-      parameters_.max_landing_speed > 0.0 || parameters_.max_landing_yaw_rate > 0.0;
-  layout_.landing_rows = landing_bound ? NmpcLayout::kLandingRows : 0;
+  layout_.landing_position_rows =
+      parameters_.max_landing_speed > 0.0 ? NmpcLayout::kLandingPositionRows : 0;
+  layout_.landing_yaw_rows = parameters_.max_landing_yaw_rate > 0.0 ? NmpcLayout::kLandingYawRows : 0;
   prediction_ = LipmPrediction(N, parameters_.sampling_period, parameters_.com_height,
                                parameters_.gravity);
 
@@ -45,6 +45,7 @@ NmpcModel::NmpcModel(const WalkingParameters& parameters, int obstacle_slots)
   addConstraintFamily(makeYawBoundConstraint());
   addConstraintFamily(makeObstacleConstraint());
   addConstraintFamily(makeLandingBoundConstraint());
+  addConstraintFamily(makeLandingYawBoundConstraint());
 
   // J1's velocity: the mean over a window of K samples of the predicted velocities (K = 1:
   // the paper's instantaneous C'_{k+1}); the window of sample j reaches back to j - K + 1.

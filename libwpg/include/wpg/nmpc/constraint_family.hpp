@@ -78,7 +78,8 @@ std::unique_ptr<ConstraintFamily> makeCopConstraint();              // eq. (9)-(
 std::unique_ptr<ConstraintFamily> makeStepFeasibilityConstraint();  // eq. (14)-(15)
 std::unique_ptr<ConstraintFamily> makeYawBoundConstraint();         // eq. (16)-(17)
 std::unique_ptr<ConstraintFamily> makeObstacleConstraint();         // eq. (18)-(19)
-std::unique_ptr<ConstraintFamily> makeLandingBoundConstraint();     // Sec. III-C3, last para.
+std::unique_ptr<ConstraintFamily> makeLandingBoundConstraint();     // Sec. III-C3, last para.: x, y
+std::unique_ptr<ConstraintFamily> makeLandingYawBoundConstraint();  // Sec. III-C3, last para.: yaw
 
 // g(U) of every family of the model, stacked, and when jacobian != nullptr its exact Jacobian
 // dg/dU (every term, including the yaw derivative of the CoP rows through the current CoM

@@ -34,14 +34,21 @@ struct NmpcLayout {
     return kCopEdges * horizon + feasibility_edges * steps + 2 * steps + obstacle_slots * step + slot;
   }
   int firstObstacleRow() const { return obstacleRow(0, 0); }
-  // landing_bound: x, y, yaw of previewed step 0, upper then lower; the rows exist only when
-  // the bound is on (landing_rows = kLandingRows), so that it costs nothing when off
-  static constexpr int kLandingRows = 6;
-  int landing_rows = 0;
+  // landing_bound: x, y of previewed step 0, upper then lower (4 rows, metres), then
+  // landing_yaw_bound: its yaw (2 rows, radians); each family's rows exist only when its rate
+  // is on (> 0), so that a bound that is off costs nothing
+  static constexpr int kLandingPositionRows = 4;
+  static constexpr int kLandingYawRows = 2;
+  int landing_position_rows = 0;
+  int landing_yaw_rows = 0;
+  // axis 0 = x, 1 = y (landing_bound), 2 = yaw (landing_yaw_bound)
   int landingRow(int axis, bool upper) const {
-    return obstacleRow(steps, 0) + 2 * axis + (upper ? 0 : 1);
+    const int first = obstacleRow(steps, 0) + (axis == 2 ? landing_position_rows : 2 * axis);
+    return first + (upper ? 0 : 1);
   }
-  int builtinRowCount() const { return obstacleRow(steps, 0) + landing_rows; }
+  int builtinRowCount() const {
+    return obstacleRow(steps, 0) + landing_position_rows + landing_yaw_rows;
+  }
   int inequalityCount() const { return inequality_rows; }
   int maxEqualityCount() const { return 3 * steps; }
 };

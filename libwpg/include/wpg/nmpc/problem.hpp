@@ -51,7 +51,7 @@ struct NmpcProblem {
   // walked (0 with the paper's instantaneous tracking, velocity_window_samples = 1)
   Eigen::VectorXd velocity_past_x, velocity_past_y;
   Eigen::VectorXd yaw_reference;           // nf: reference yaw of each step (J2)
-  // Swing-foot landing bound (landing_bound family): while a foot swings, the landing
+  // Swing-foot landing bound (landing_bound, landing_yaw_bound families): while a foot swings, the landing
   // (x, y, yaw) planned at the previous sample and the time left before touchdown. Unset
   // (no row active) when no foot swings or there is no previous plan of this swing.
   bool landing_bounded = false;
