@@ -45,10 +45,12 @@ struct DynamicFilterLoopSettings {
   // the command that starts it is news to a causal filter (12 mm max after 1.3 s). Online is
   // what a robot runs and what `wpg bench` times; a generated dataset is better offline.
   DynamicFilterMode mode = DynamicFilterMode::kOffline;
-  // Online only. true: the paper's loop of Fig. 3, the WPG's initial CoM state := the
+  // Online only. true: the paper's Fig. 3 read literally, the WPG's initial CoM state := the
   // filter's corrected state at every NMPC iteration (OnlineDynamicFilter::absorbCorrection);
-  // measured unstable here (the robot falls within 5 s), hence false by default: an open loop,
-  // the correction only added to the CoM sent to the IK.
+  // measured unstable here (the robot falls within 5 s). false (default): the correction only
+  // goes to the CoM sent to the IK and the NMPC restarts from its own CoM state, which is what
+  // the authors' code does (jrl-walkgen, ZMPVelocityReferencedSQP::OnLine: the NMPC's initial
+  // condition is its LIPM state itCoM; deltaCOMTraj_deq_ is added to FinalCOMTraj_deq only).
   bool reinitialize_wpg = false;
 };
 
