@@ -7,7 +7,9 @@ x and y against time, and the NMPC solve time per iteration over the support pha
 run was replayed on the multibody model (`zmp_multibody`, `wpg run --filter`, `wpg replay`),
 a bottom row draws the analogue of the paper's Fig. 6: reference CoP (solid blue), multibody
 ZMP before the dynamic filter (dash-dot red) and after it (dashed green) for x and y over a
-few seconds of steady walking, and the distance |CoP - ZMP| over the whole walk.
+few seconds of steady walking, and the distance |CoP - ZMP| over the whole walk, with the
+filter that ran (online: the loop of Fig. 3, or offline) and, for filter_settings.mode both,
+the offline pass's errors beside the online ones.
 
     /usr/bin/python3 plot_run.py RUN.h5 [-o FIG.png] [--run NAME]
 
@@ -55,7 +57,11 @@ SCHEMA_DATASETS = ("time", "com", "cop", "support", "footsteps", "footstep_side"
 # The multibody replay (optional): datasets of the run group, and the attributes of multibody/.
 MULTIBODY_DATASETS = ("zmp_multibody", "zmp_multibody_filtered", "com_filtered")
 MULTIBODY_ATTRIBUTES = ("zmp_error_rms_before", "zmp_error_max_before", "zmp_error_rms_after",
-                        "zmp_error_max_after", "ik_failures", "filtered")
+                        "zmp_error_max_after", "ik_failures", "filtered",
+                        # filter_settings.mode both: the offline pass beside the online loop
+                        "offline_zmp_error_rms_before", "offline_zmp_error_max_before",
+                        "offline_zmp_error_rms_after", "offline_zmp_error_max_after",
+                        "wpg_reinitialized")
 # Fig. 6 of the paper: reference CoP solid blue, ZMP before the filter dash-dot red, after the
 # filter dashed green.
 FIG6_REFERENCE = dict(color="tab:blue", linestyle="-", linewidth=1.4)
@@ -223,6 +229,8 @@ def read_runs(path, only=None):
                     group.get("multibody"), h5py.Group) else {}
                 multibody.update({key: float(attributes[key]) for key in MULTIBODY_ATTRIBUTES
                                   if key in attributes})
+                # "online" (the loop of Fig. 3) or "offline"; absent in older files (offline)
+                multibody["filter_mode"] = as_text(attributes.get("filter_mode")) or "offline"
                 run["multibody"] = multibody
             # a batch may store each run's own scenario text on its group
             run["scenario_text"] = as_text(group.attrs.get("scenario")) or scenario_text
@@ -516,13 +524,22 @@ def draw_fig6(axes, run):
         mm(mb.get("zmp_error_rms_before", float("nan"))),
         mm(mb.get("zmp_error_max_before", float("nan"))))
     if filtered:
-        ax.plot(time, 1e3 * np.linalg.norm(cop - after, axis=1), label="after the filter",
-                **dict(FIG6_AFTER, linewidth=0.9))
-        title = "|CoP - multibody ZMP|: RMS %s -> %s, max %s -> %s" % (
+        mode = mb.get("filter_mode") or "offline"
+        if mode == "online":
+            mode += ", WPG re-initialised" if mb.get("wpg_reinitialized") else ", open loop"
+        ax.plot(time, 1e3 * np.linalg.norm(cop - after, axis=1),
+                label="after the filter (%s)" % mode, **dict(FIG6_AFTER, linewidth=0.9))
+        title = "|CoP - multibody ZMP|, %s filter: RMS %s -> %s, max %s -> %s" % (
+            mode,
             mm(mb.get("zmp_error_rms_before", float("nan"))),
             mm(mb.get("zmp_error_rms_after", float("nan"))),
             mm(mb.get("zmp_error_max_before", float("nan"))),
             mm(mb.get("zmp_error_max_after", float("nan"))))
+        if "offline_zmp_error_rms_after" in mb:
+            # mode both: the offline pass over the open-loop walk, for comparison
+            title += "\noffline pass (open-loop walk): RMS %s -> %s, max %s -> %s" % (
+                mm(mb["offline_zmp_error_rms_before"]), mm(mb["offline_zmp_error_rms_after"]),
+                mm(mb["offline_zmp_error_max_before"]), mm(mb["offline_zmp_error_max_after"]))
     ax.axvspan(t0, t1, facecolor="none", edgecolor="0.3", linestyle=":", linewidth=1.0)
     ax.set_title(title, fontsize=9)
     ax.set_ylabel("distance [mm]")

@@ -11,6 +11,7 @@
 #include "wpg/analysis/run_summary.hpp"
 #include "wpg/datasets/run_dataset.hpp"
 #include "wpg/preview_control.hpp"
+#include "wpg/robots/online_filter_loop.hpp"
 #include "wpg/robots/walk_replay.hpp"
 
 // The FCL world of planning/ (the post-run footstep checks), used as soon as the executable
@@ -80,6 +81,44 @@ ReplayOutcome replayScenarioWalk(const robots::RobotModel& model,
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   outcome.walk_duration = analysis::walkDuration(walk);
   return outcome;
+}
+
+ScenarioRun runScenario(const robots::RobotModel* model, const datasets::Scenario& scenario) {
+  ScenarioRun run;
+  const bool online = scenario.filter && model != nullptr &&
+                      scenario.filter_loop.mode != DynamicFilterMode::kOffline;
+  if (!online) {
+    run.result = generateWalk(scenario.walking, scenario.request);
+    if (model) run.replay = replayScenarioWalk(*model, scenario, run.result.trajectory, scenario.filter);
+    return run;
+  }
+  robots::OnlineFilterLoopSettings settings;
+  settings.preview = scenario.filter_settings;
+  settings.reinitialize_wpg = scenario.filter_loop.reinitialize_wpg;
+  ReplayOutcome outcome;
+  const auto start = std::chrono::steady_clock::now();
+  robots::OnlineFilterRun loop;
+  try {
+    loop = robots::runOnlineFilterLoop(*model, scenario.walking, scenario.request, settings);
+  } catch (const std::runtime_error& e) {
+    throw std::runtime_error(std::string("cannot replay the walk: ") + e.what());
+  }
+  outcome.wall_time =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  run.result = std::move(loop.walk);
+  outcome.validation = std::move(loop.validation);
+  outcome.walk_duration = analysis::walkDuration(run.result.trajectory);
+  if (scenario.filter_loop.mode == DynamicFilterMode::kBoth) {
+    // The offline pass needs the open-loop walk (the online one's CoM jumps where the WPG was
+    // re-initialised): generated again without the loop.
+    const WalkResult open_loop = generateWalk(scenario.walking, scenario.request);
+    const ReplayOutcome offline = replayScenarioWalk(*model, scenario, open_loop.trajectory, true);
+    outcome.validation.has_offline_comparison = true;
+    outcome.validation.offline_before = offline.validation.before;
+    outcome.validation.offline_after = offline.validation.after;
+  }
+  run.replay = std::move(outcome);
+  return run;
 }
 
 std::optional<ObstacleClearances> writeScenarioDataset(const std::string& path,

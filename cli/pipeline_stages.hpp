@@ -39,6 +39,18 @@ ReplayOutcome replayScenarioWalk(const robots::RobotModel& model,
                                  const datasets::Scenario& scenario, const WalkTrajectory& walk,
                                  bool filter);
 
+// Stages walk + replay + filter as the scenario says (`scenario.replay`, `filter`,
+// `filter_settings.mode`): generateWalk then replayScenarioWalk (no filter, or mode offline),
+// or the online loop of the paper's Fig. 3 (robots/online_filter_loop.hpp: the walk and its
+// filter together; mode both also runs generateWalk + the offline pass, whose ZMP errors
+// go to validation.offline_*). `model` is needed (non-null) when the scenario replays.
+// Throws std::invalid_argument for a walk the generator rejects (as generateWalk).
+struct ScenarioRun {
+  WalkResult result;
+  std::optional<ReplayOutcome> replay;
+};
+ScenarioRun runScenario(const robots::RobotModel* model, const datasets::Scenario& scenario);
+
 // The least clearances of the landed footsteps to the scenario's obstacles (FCL world,
 // wpg/planning/obstacle_checks.hpp), minima over the steps [m].
 struct ObstacleClearances {

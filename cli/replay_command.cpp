@@ -28,7 +28,10 @@ int replayCommand(const ReplayOptions& options) {
     // scenario says what ran.
     scenario = datasets::loadScenarioText(
         stored.scenario_yaml, origin,
-        {"replay=true", std::string("filter=") + (options.filter ? "true" : "false")},
+        // A stored walk can only be filtered offline: the online loop (Fig. 3) filters while
+        // the walk is generated, and re-initialises the WPG (mode online or both).
+        {"replay=true", std::string("filter=") + (options.filter ? "true" : "false"),
+         "filter_settings.mode=offline"},
         robotsDirectory());
   } catch (const datasets::InputError& e) {
     throw UsageError(e.what());

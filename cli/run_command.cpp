@@ -80,14 +80,14 @@ int runCommand(const RunOptions& options) {
     if (folder == folder.parent_path()) break;
   }
 
-  WalkResult result;
+  ScenarioRun run;
   try {
-    result = generateWalk(scenario.walking, scenario.request);
+    run = runScenario(model ? &*model : nullptr, scenario);
   } catch (const std::invalid_argument& e) {
     throw UsageError(aboutFile(scenario_path, e.what()));
   }
-  std::optional<ReplayOutcome> replay;
-  if (model) replay = replayScenarioWalk(*model, scenario, result.trajectory, scenario.filter);
+  const WalkResult& result = run.result;
+  const std::optional<ReplayOutcome>& replay = run.replay;
 
   if (dataset_path.has_parent_path()) {
     fs::create_directories(dataset_path.parent_path(), ec);

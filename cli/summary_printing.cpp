@@ -86,6 +86,26 @@ void printMultibodySummary(std::ostream& out, const ReplayOutcome& outcome) {
         << fixed(1e3 * chain.max, 3) << " ms; replay" << (zmp.filtered ? " + filter " : " ")
         << fixed(outcome.realTimeFactor(), 0) << "x real time\n";
   }
+  const analysis::TickTiming ticks = analysis::tickTiming(v);
+  if (ticks.measured && ticks.nmpc_ticks.count > 0) {
+    out << "tick      with the NMPC " << fixed(1e3 * ticks.nmpc_ticks.mean, 3)
+        << " ms average, max " << fixed(1e3 * ticks.nmpc_ticks.max, 3) << " ms; every tick "
+        << fixed(1e3 * ticks.all_ticks.mean, 3) << " ms average (" << ticks.all_ticks.count
+        << " control periods)\n";
+  }
+  if (!v.filter_mode.empty()) {
+    out << "filter    " << v.filter_mode
+        << (v.filter_mode == "online"
+                ? (v.wpg_reinitialized ? " (WPG re-initialised every NMPC iteration)" : " (open loop)")
+                : "");
+    if (v.has_offline_comparison) {
+      out << "; offline pass: RMS " << fixed(1e3 * v.offline_before.rms, 1) << " mm -> "
+          << fixed(1e3 * v.offline_after.rms, 1) << " mm, max "
+          << fixed(1e3 * v.offline_before.max, 1) << " mm -> "
+          << fixed(1e3 * v.offline_after.max, 1) << " mm";
+    }
+    out << '\n';
+  }
 }
 
 void reportDatasetAndFigure(const std::string& dataset_path, const std::string& figure_path,

@@ -82,6 +82,8 @@ std::string emitResolved(const Scenario& scenario) {
   out << YAML::Key << "filter" << YAML::Value << scenario.filter;
   out << YAML::Key << "filter_settings" << YAML::Value << YAML::Flow << YAML::BeginMap;
   emitSettingFields(out, filterSettingFields(), scenario.filter_settings);
+  out << YAML::Key << "mode" << YAML::Value << dynamicFilterModeName(scenario.filter_loop.mode);
+  out << YAML::Key << "reinitialize_wpg" << YAML::Value << scenario.filter_loop.reinitialize_wpg;
   out << YAML::EndMap;
 
   out << YAML::Key << "walking" << YAML::Value << YAML::BeginMap;

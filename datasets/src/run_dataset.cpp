@@ -5,7 +5,7 @@
 // hdf5_writing.cpp, the values of the `checks` group and the timing summaries are computed in
 // run_checks.cpp.
 //
-// Why ~500 lines: one writer function per group of the schema (run, mpc, obstacles, checks,
+// Why ~550 lines: one writer function per group of the schema (run, mpc, obstacles, checks,
 // multibody, timing), each a list of datasets with their units and descriptions; the pieces
 // that are not layout (HDF5 helpers, checks) already live in their own files.
 #include "wpg/datasets/run_dataset.hpp"
@@ -370,6 +370,12 @@ void checkMultibodySizes(const MultibodyValidation& multibody, const WalkTraject
         "zmp_multibody_filtered is " + shape(multibody.zmp_multibody_filtered) + ", expected " +
             (filtered ? std::to_string(n) + " x 2 (com_filtered is given)"
                       : std::string("empty (com_filtered is empty)")));
+  check(multibody.tick_stage_time.size() == 0 ||
+            (multibody.tick_stage_time.cols() == 4 &&
+             multibody.tick_stage_time.rows() ==
+                 static_cast<Eigen::Index>(multibody.tick_nmpc.size())),
+        "tick_stage_time is " + shape(multibody.tick_stage_time) + ", expected " +
+            std::to_string(multibody.tick_nmpc.size()) + " x 4 (one row per tick_nmpc entry)");
   check(multibody.chain_stage_time.rows() == multibody.chain_time.size() &&
             multibody.chain_stage_time.cols() == 4,
         "chain_stage_time is " + shape(multibody.chain_stage_time) + ", expected " +
@@ -432,6 +438,17 @@ void writeMultibody(H5::Group& run, const Scenario& scenario, const MultibodyVal
   writeDoubleAttribute(group, "filter_error_weight", scenario.filter_settings.error_weight);
   writeDoubleAttribute(group, "filter_input_weight", scenario.filter_settings.input_weight);
   writeDoubleAttribute(group, "filter_preview_time", scenario.filter_settings.preview_time);
+  // Which filter produced com_filtered (wpg/dynamic_filter.hpp): "online" (the closed loop of
+  // Fig. 3), "offline" (one pass over the recorded walk), "" without the filter.
+  writeStringAttribute(group, "filter_mode", mb.filter_mode);
+  writeIntAttribute(group, "wpg_reinitialized", mb.wpg_reinitialized ? 1 : 0);
+  if (mb.has_offline_comparison) {
+    // filter_settings.mode both: the offline pass over the open-loop walk, for comparison.
+    writeDoubleAttribute(group, "offline_zmp_error_rms_before", mb.offline_before.rms);
+    writeDoubleAttribute(group, "offline_zmp_error_max_before", mb.offline_before.max);
+    writeDoubleAttribute(group, "offline_zmp_error_rms_after", mb.offline_after.rms);
+    writeDoubleAttribute(group, "offline_zmp_error_max_after", mb.offline_after.max);
+  }
 
   // Timing profile of the control chain per NMPC iteration (paper Sec. V-C).
   H5::Group timing = run.createGroup("timing");
@@ -450,6 +467,23 @@ void writeMultibody(H5::Group& run, const Scenario& scenario, const MultibodyVal
   writeDoubleAttribute(timing, "chain_time_std", statistics.std_dev);
   writeDoubleAttribute(timing, "chain_time_min", statistics.min);
   writeDoubleAttribute(timing, "chain_time_max", statistics.max);
+
+  // Per control period (the paper's unit: one 5 ms tick, Sec. V-C).
+  if (mb.tick_stage_time.rows() > 0) {
+    writeDoubles(timing, "tick_stage_time", rowMajor(mb.tick_stage_time), 4,
+                 {"s", nullptr,
+                  mb.tick_stages_measured
+                      ? "wall time of each stage in each control period (online loop: every "
+                        "stage measured in its own tick); wpg = the generator's step (the NMPC "
+                        "when it runs, the interpolation, the preview of the plan)"
+                      : "wall time of each stage in each control period (offline pass: the NMPC "
+                        "and the IK measured per tick, the multibody ZMP and the filter over the "
+                        "whole walk spread evenly)",
+                  "wpg, ik, multibody_zmp, filter"});
+    writeInts(timing, "tick_nmpc", std::vector<int>(mb.tick_nmpc.begin(), mb.tick_nmpc.end()),
+              {"1", nullptr, "1 when the NMPC ran in that control period", nullptr});
+    writeIntAttribute(timing, "tick_stages_measured", mb.tick_stages_measured ? 1 : 0);
+  }
 }
 
 void writeFile(const std::string& file_path, const Scenario& scenario, const WalkResult& result,

@@ -121,7 +121,8 @@ Scenario loadScenarioTree(YAML::Node root, const std::string& path,
         readBoolean(entry(entries, "replay"), "replay", "true or false", source)) {
       scenario.replay = true;
     }
-    scenario.filter_settings = readFilterSettings(entry(entries, "filter_settings"), source);
+    scenario.filter_settings =
+        readFilterSettings(entry(entries, "filter_settings"), source, &scenario.filter_loop);
   } catch (const YAML::Exception& error) {
     // Not expected (types are checked before conversion); still one line naming the file.
     throw InputError(oneLine(path + ": " + error.what()));

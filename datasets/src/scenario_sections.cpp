@@ -140,13 +140,29 @@ GeneratorSettings readGenerator(const YAML::Node& node, const Source& source) {
   return settings;
 }
 
-PreviewControlSettings readFilterSettings(const YAML::Node& node, const Source& source) {
+PreviewControlSettings readFilterSettings(const YAML::Node& node, const Source& source,
+                                          DynamicFilterLoopSettings* loop) {
   PreviewControlSettings settings;
   if (!node.IsDefined()) return settings;
+  std::vector<std::string> keys = settingNames(filterSettingFields());
+  keys.push_back("mode");
+  keys.push_back("reinitialize_wpg");
   const Entries entries =
-      readMap(node, "filter_settings", settingNames(filterSettingFields()),
-              "a map {error_weight, input_weight, preview_time}", source, /*null_is_empty=*/true);
+      readMap(node, "filter_settings", keys,
+              "a map {error_weight, input_weight, preview_time, mode, reinitialize_wpg}", source,
+              /*null_is_empty=*/true);
   readSettingFields(entries, "filter_settings", filterSettingFields(), source, &settings);
+  if (present(entries, "mode")) {
+    const YAML::Node mode = entry(entries, "mode");
+    if (!mode.IsScalar() || !parseDynamicFilterMode(mode.Scalar(), &loop->mode)) {
+      source.fail("filter_settings.mode", "online, offline or both", mode);
+    }
+  }
+  if (present(entries, "reinitialize_wpg")) {
+    loop->reinitialize_wpg = readBoolean(entry(entries, "reinitialize_wpg"),
+                                         "filter_settings.reinitialize_wpg", "true or false",
+                                         source);
+  }
   return settings;
 }
 

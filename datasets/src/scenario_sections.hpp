@@ -7,6 +7,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "wpg/dynamic_filter.hpp"
 #include "wpg/obstacles.hpp"
 #include "wpg/preview_control.hpp"
 #include "wpg/walk_request.hpp"
@@ -20,8 +21,10 @@ const std::vector<std::string>& topLevelKeys();
 
 // `generator:` (optional, defaults of GeneratorSettings).
 GeneratorSettings readGenerator(const YAML::Node& node, const Source& source);
-// `filter_settings:` (optional): the dynamic filter's preview controller.
-PreviewControlSettings readFilterSettings(const YAML::Node& node, const Source& source);
+// `filter_settings:` (optional): the dynamic filter's preview controller, and into `loop` its
+// mode (online | offline | both) and whether the online loop re-initialises the WPG.
+PreviewControlSettings readFilterSettings(const YAML::Node& node, const Source& source,
+                                          DynamicFilterLoopSettings* loop);
 // `reference:` (required, may be empty): the velocity command, times strictly ascending.
 std::vector<VelocityCommand> readReference(const YAML::Node& node, const Source& source);
 // `pushes:` (optional).

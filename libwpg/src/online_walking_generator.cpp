@@ -77,6 +77,98 @@ void OnlineWalkingGenerator::setPushAcceleration(
   push_ << acceleration(0), acceleration(1);
 }
 
+void OnlineWalkingGenerator::reinitializeCom(const Eigen::Ref<const Eigen::VectorXd>& com_x,
+                                             const Eigen::Ref<const Eigen::VectorXd>& com_y) {
+  requireFiniteVector("reinitializeCom", com_x, 3, "(x, x', x'')");
+  requireFiniteVector("reinitializeCom", com_y, 3, "(y, y', y'')");
+  if (!atSamplingInstant())
+    throw std::logic_error("OnlineWalkingGenerator::reinitializeCom: expected a sampling "
+                           "instant (the NMPC re-plans from the new state), got time " +
+                           std::to_string(time()) + " s inside a sampling period");
+  com_x_ = com_x;
+  com_y_ = com_y;
+  generator_.setComState(com_x_, com_y_);
+}
+
+void OnlineWalkingGenerator::previewReference(int ticks, WalkTrajectory& out) const {
+  if (atSamplingInstant())
+    throw std::logic_error("OnlineWalkingGenerator::previewReference: at a sampling instant "
+                           "the coming NMPC iteration has not run yet (call it after that "
+                           "step())");
+  const WalkingParameters& w = parameters();
+  const PatternGenerator& pg = generator_;
+  const NmpcLayout& L = pg.model().layout();
+  const Eigen::VectorXd& U = pg.solver().plan();
+  out.time.clear();
+  out.com.clear();
+  out.com_vel.clear();
+  out.com_acc.clear();
+  out.cop.clear();
+  out.left_foot.clear();
+  out.right_foot.clear();
+  out.free_flyer_yaw.clear();
+  out.support.clear();
+  // A copy of the phase bookkeeping, the swing polynomial and the CoM, advanced as step()
+  // and PatternGenerator::advance() would, with the plan's later jerks and steps instead of
+  // new NMPC solutions (shiftPlan's shift as index offsets).
+  GaitScheduler gait = pg.gait();
+  SwingFootTrajectory swing = swing_;
+  Eigen::Vector3d cx = com_x_, cy = com_y_;
+  long sample = sample_index_;
+  int sub = sub_sample_;
+  int jerk_offset = 0, step_offset = 0;
+  bool swinging = pg.plan().swinging;
+  FootSide swing_side = pg.plan().swing_side;
+  const Eigen::Vector3d command = pg.clampCommand(command_);
+  const auto planned_step = [&](int i) -> Eigen::Vector3d {
+    if (i < L.steps) return pg.plannedStep(i);
+    // Past the plan's steps (a window longer than the horizon): nominal steps.
+    Eigen::Vector3d previous = pg.plannedStep(L.steps - 1);
+    FootSide side = otherSide(gait.supportSide());
+    for (int k = L.steps; k <= i; ++k, side = otherSide(side))
+      previous = nominalStep(w, previous, side, command);
+    return previous;
+  };
+  for (int j = 0; j < ticks; ++j) {
+    const double t = sample * w.sampling_period + sub * w.control_period;
+    const double h = w.com_height;
+    out.time.push_back(t);
+    out.com.emplace_back(cx(0), cy(0), h);
+    out.com_vel.emplace_back(cx(1), cy(1), 0.0);
+    out.com_acc.emplace_back(cx(2), cy(2), 0.0);
+    out.cop.emplace_back(cx(0) - height_over_gravity_ * cx(2), cy(0) - height_over_gravity_ * cy(2));
+    const Eigen::Vector3d& l = gait.footPose(FootSide::kLeft);
+    const Eigen::Vector3d& r = gait.footPose(FootSide::kRight);
+    Eigen::Vector4d left(l.x(), l.y(), 0.0, l.z()), right(r.x(), r.y(), 0.0, r.z());
+    if (swinging) (swing_side == FootSide::kLeft ? left : right) = swing.poseAt(t);
+    out.left_foot.push_back(left);
+    out.right_foot.push_back(right);
+    out.free_flyer_yaw.push_back(0.5 * (left(3) + right(3)));
+    out.support.push_back(gait.supportState());
+    const int jerk = std::min(jerk_offset, L.horizon - 1);
+    integrateJerk(cx, U(L.jerkX() + jerk), w.control_period, 0.0);
+    integrateJerk(cy, U(L.jerkY() + jerk), w.control_period, 0.0);
+    if (++sub < sub_samples_) continue;
+    // The end of a sampling period, then the start of the next one (without its NMPC).
+    sub = 0;
+    ++sample;
+    const double start = sample * w.sampling_period;
+    if (gait.endSample(planned_step(step_offset), start).step_completed) ++step_offset;
+    ++jerk_offset;
+    const bool was_swinging = swinging;
+    gait.beginSample(command);
+    swinging = gait.swinging();
+    if (!swinging) continue;
+    swing_side = otherSide(gait.supportSide());
+    const int m = gait.phaseSample();
+    if (!was_swinging) {  // a new swing: its polynomial from the lift-off pose (runNmpcSample)
+      swing.start(gait.footPose(swing_side), start - m * w.sampling_period,
+                  start + (w.stepSamples() - 1 - m) * w.sampling_period, w.step_height);
+    }
+    swing.replan(start, planned_step(step_offset));
+  }
+}
+
 double OnlineWalkingGenerator::time() const {
   const WalkingParameters& w = parameters();
   return sample_index_ * w.sampling_period + sub_sample_ * w.control_period;

@@ -64,7 +64,8 @@ void checkLandingsClear(const WalkingParameters& parameters, const WalkRequest& 
 }  // namespace
 
 WalkResult generateWalk(const WalkingParameters& parameters, const WalkRequest& request,
-                        const ConstraintFamilies& extra_families) {
+                        const ConstraintFamilies& extra_families,
+                        ControlLoopObserver* observer) {
   parameters.validate();
   request.validate();
   OnlineWalkingGenerator generator(parameters, request.generator, extra_families);
@@ -89,6 +90,7 @@ WalkResult generateWalk(const WalkingParameters& parameters, const WalkRequest& 
     generator.setCommand(request.commandAt(k * T));
     for (int i = 0; i < sub_samples; ++i) {
       generator.setPushAcceleration(request.pushAccelerationAt(generator.time()));
+      if (observer) observer->beforeStep(generator);
       const ControlSample& sample = generator.step();
       if (generator.fallen()) {
         out.mpc.push_back(generator.lastIteration());
@@ -110,6 +112,7 @@ WalkResult generateWalk(const WalkingParameters& parameters, const WalkRequest& 
                            " s ended with status '" + iterationStatusName(log.status) + "'";
         }
       }
+      if (observer) observer->afterStep(generator, sample);
       record(sample, out);
       if (generator.landed()) out.footsteps.push_back(generator.lastLanding());
     }

@@ -27,6 +27,8 @@ Eigen::MatrixXd solveIk(const WalkingIk& ik, const RobotModel& model, const Walk
                         bool record) {
   WalkingIkTrajectory result = ik.solveTrajectory(walk, com);
   for (std::size_t i = 0; i < result.solve_time.size(); ++i) {
+    if (static_cast<Eigen::Index>(i) < out.tick_stage_time.rows())
+      out.tick_stage_time(static_cast<Eigen::Index>(i), 1) += result.solve_time[i];
     const Eigen::Index k = std::min<Eigen::Index>(static_cast<Eigen::Index>(i) / per_iteration,
                                                   out.chain_stage_time.rows() - 1);
     out.chain_stage_time(k, 1) += result.solve_time[i];
@@ -78,6 +80,17 @@ MultibodyValidation replayWalk(const RobotModel& model, const WalkingParameters&
   out.chain_stage_time = Eigen::MatrixXd::Zero(iterations, 4);
   for (Eigen::Index k = 0; k < static_cast<Eigen::Index>(walk.mpc.size()); ++k)
     out.chain_stage_time(k, 0) = walk.mpc[k].solve_time;
+  // Per control period (the closing sample is not one): the NMPC at its ticks, the IK per
+  // sample; the whole-walk ZMP and filter spread evenly below (tick_stages_measured false).
+  const Eigen::Index ticks = n - 1;
+  out.tick_stage_time = Eigen::MatrixXd::Zero(ticks, 4);
+  out.tick_nmpc.assign(static_cast<std::size_t>(ticks), 0);
+  for (Eigen::Index k = 0; k < static_cast<Eigen::Index>(walk.mpc.size()); ++k) {
+    const Eigen::Index tick = k * per_iteration;
+    if (tick >= ticks) break;
+    out.tick_stage_time(tick, 0) = walk.mpc[k].solve_time;
+    out.tick_nmpc[static_cast<std::size_t>(tick)] = 1;
+  }
 
   Eigen::MatrixXd com(n, 3), com_force(n, 3);
   for (Eigen::Index i = 0; i < n; ++i) {
@@ -122,8 +135,11 @@ MultibodyValidation replayWalk(const RobotModel& model, const WalkingParameters&
     // The whole-walk stages are spread evenly over the iterations (per-sample costs). The
     // validation replay of the corrected motion is not part of the control chain.
     out.chain_stage_time.col(3).setConstant(filter_time / iterations);
+    out.tick_stage_time.col(3).setConstant(filter_time / ticks);
+    out.filter_mode = dynamicFilterModeName(DynamicFilterMode::kOffline);
   }
   out.chain_stage_time.col(2).setConstant(zmp_time / iterations);
+  out.tick_stage_time.col(2).setConstant(zmp_time / ticks);
   out.chain_time = out.chain_stage_time.rowwise().sum();
   return out;
 }

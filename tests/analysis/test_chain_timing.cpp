@@ -59,3 +59,31 @@ TEST(RealTimeFactor, WalkDurationOverWallTime) {
   EXPECT_EQ(realTimeFactor(10.0, 0.0), 0.0);        // nothing measured
   EXPECT_EQ(realTimeFactor(10.0, -1.0), 0.0);
 }
+
+// The paper's unit: the ticks that contain an NMPC iteration, apart from the others.
+TEST(TickTiming, NmpcTicksApartFromTheOthers) {
+  MultibodyValidation v;
+  v.tick_stage_time.resize(5, 4);
+  // columns: WPG, IK, multibody ZMP, filter; ticks 0 and 3 ran the NMPC
+  v.tick_stage_time << 1e-4, 1e-3, 3e-3, 1e-5,  // 4.11 ms
+      1e-5, 1e-4, 0.0, 1e-5,                   // 0.12 ms
+      1e-5, 1e-4, 0.0, 1e-5,                   // 0.12 ms
+      3e-4, 1e-3, 2e-3, 1e-5,                  // 3.31 ms
+      1e-5, 1e-4, 0.0, 1e-5;                   // 0.12 ms
+  v.tick_nmpc = {1, 0, 0, 1, 0};
+  v.tick_stages_measured = true;
+  const wpg::analysis::TickTiming t = wpg::analysis::tickTiming(v);
+  EXPECT_TRUE(t.measured);
+  EXPECT_EQ(t.nmpc_ticks.count, 2u);
+  EXPECT_NEAR(t.nmpc_ticks.mean, 3.71e-3, 1e-15);
+  EXPECT_NEAR(t.nmpc_ticks.min, 3.31e-3, 1e-15);
+  EXPECT_NEAR(t.nmpc_ticks.max, 4.11e-3, 1e-15);
+  EXPECT_NEAR(t.nmpc_ticks.std_dev, 0.8e-3 / std::sqrt(2.0), 1e-15);
+  EXPECT_EQ(t.all_ticks.count, 5u);
+  EXPECT_NEAR(t.all_ticks.mean, (4.11e-3 + 3.31e-3 + 3 * 0.12e-3) / 5, 1e-15);
+  EXPECT_NEAR(t.stage_nmpc_ticks[2].mean, 2.5e-3, 1e-15);
+  EXPECT_NEAR(t.stage_all_ticks[2].mean, 1e-3, 1e-15);
+  // inconsistent sizes: nothing
+  v.tick_nmpc.pop_back();
+  EXPECT_EQ(wpg::analysis::tickTiming(v).all_ticks.count, 0u);
+}

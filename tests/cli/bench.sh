@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # bench.sh WPG: `wpg bench walk_forward --json FILE` prints the paper's Sec. V-C table (average,
-# standard deviation, minimum, maximum of the control chain per NMPC iteration, stage medians,
-# real-time factor) and writes the same numbers as JSON; an unknown scenario exits 2.
+# standard deviation, minimum, maximum of one 5 ms control tick that contains an NMPC
+# iteration, the paper's numbers beside, the stages, every tick, real-time factor, this
+# machine's CPU and OS) and writes the same numbers as JSON; an unknown scenario exits 2.
 set -euo pipefail
 # shellcheck source=common.sh
 source "$(dirname "$0")/common.sh"
@@ -12,8 +13,11 @@ make_workdir
 cat "$WORKDIR/stdout"
 [[ ! -s "$WORKDIR/stderr" ]] || fail "unexpected stderr: $(cat "$WORKDIR/stderr")"
 grep -q 'walk_forward' "$WORKDIR/stdout" || fail "no column for walk_forward"
-for row in Average 'Standard deviation' Minimum Maximum '  NMPC' '  IK' '  multibody ZMP' \
-           '  filter' 'Replay \+ filter real-time factor'; do
+grep -Eq '^Average .* 3\.950 +4\.000$' "$WORKDIR/stdout" || fail "no paper numbers beside the average"
+grep -q '^machine   this run: ' "$WORKDIR/stdout" || fail "no line about this machine"
+grep -q 'Core2 Duo E7500' "$WORKDIR/stdout" || fail "no line about the paper's machine"
+for row in Average 'Standard deviation' Minimum Maximum '  WPG' '  IK' '  multibody ZMP' \
+           '  filter' 'Loop real-time factor'; do
   grep -Eq "^${row}.* [0-9]+\.?[0-9]*x?\$" "$WORKDIR/stdout" || fail "no row '$row' with a number"
 done
 "$PYTHON" - "$WORKDIR/bench.json" <<'PY' || fail "bad JSON"
@@ -21,11 +25,17 @@ import json, sys
 data = json.load(open(sys.argv[1]))
 [row] = data["scenarios"]
 assert row["name"] == "walk_forward", row
-chain = row["chain_time"]
-assert 0 < chain["min"] <= chain["average"] <= chain["max"], chain
-assert chain["std"] >= 0, chain
-assert row["nmpc_iterations"] == 100, row
+tick = row["nmpc_tick_time"]
+assert 0 < tick["min"] <= tick["average"] <= tick["max"], tick
+assert tick["std"] >= 0, tick
+assert tick["count"] == 100, tick
+every = row["tick_time"]
+assert every["count"] == 2000, every
+assert every["average"] < tick["average"], (every, tick)  # the NMPC ticks are the heavy ones
+assert set(row["nmpc_tick_stage_mean"]) == {"wpg", "ik", "multibody_zmp", "filter"}, row
 assert row["real_time_factor"] > 1, row
+assert [p["name"] for p in data["paper"]] == ["paper A", "paper B"], data["paper"]
+assert data["cpu"] and data["os"], data
 assert row["zmp_error"]["rms_after"] * 3 < row["zmp_error"]["rms_before"], row
 PY
 status=0

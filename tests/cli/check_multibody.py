@@ -38,7 +38,15 @@ def main():
     group.add_argument("--filtered", action="store_true")
     group.add_argument("--not-filtered", action="store_true")
     parser.add_argument("--min-reduction", type=float, default=3.0)
+    parser.add_argument("--min-reduction-max", type=float, default=None,
+                        help="for the max error (default: --min-reduction)")
+    parser.add_argument("--mode", choices=("online", "offline"), default=None,
+                        help="the filter_mode attribute the file must hold")
+    parser.add_argument("--offline-comparison", action="store_true",
+                        help="the offline_zmp_error_* attributes of filter_settings.mode both")
     args = parser.parse_args()
+    if args.min_reduction_max is None:
+        args.min_reduction_max = args.min_reduction
     with h5py.File(args.run_file, "r") as f:
         for name, run in f["runs"].items():
             where = "/runs/%s" % name
@@ -77,15 +85,23 @@ def main():
                           "%s: ZMP error RMS %.4f -> %.4f m, not %gx smaller"
                           % (where, before, after, args.min_reduction))
                     before, after = attrs["zmp_error_max_before"], attrs["zmp_error_max_after"]
-                    check(after * args.min_reduction < before,
+                    check(after * args.min_reduction_max < before,
                           "%s: ZMP error max %.4f -> %.4f m, not %gx smaller"
-                          % (where, before, after, args.min_reduction))
+                          % (where, before, after, args.min_reduction_max))
                     # the attributes agree with the datasets
                     cop = run["cop"][()]
                     rms = np.sqrt(np.mean(np.sum((cop - run["zmp_multibody_filtered"][()]) ** 2, 1)))
                     check(abs(rms - attrs["zmp_error_rms_after"]) < 1e-9,
                           "%s: zmp_error_rms_after %.6f, the datasets give %.6f"
                           % (where, attrs["zmp_error_rms_after"], rms))
+                if args.mode:
+                    check(attrs.get("filter_mode") == args.mode,
+                          "%s/multibody: filter_mode %r, expected %r"
+                          % (where, attrs.get("filter_mode"), args.mode))
+                if args.offline_comparison:
+                    for key in ("offline_zmp_error_rms_before", "offline_zmp_error_max_before",
+                                "offline_zmp_error_rms_after", "offline_zmp_error_max_after"):
+                        check(key in attrs and attrs[key] > 0, "%s/multibody lacks %s" % (where, key))
             if check("timing" in run, where + "/timing missing"):
                 timing = run["timing"]
                 k = run["mpc/time"].shape[0]
@@ -100,6 +116,19 @@ def main():
                 check(np.all(chain > 0), where + "/timing/chain_time not positive")
                 check(abs(timing.attrs["chain_time_max"] - chain.max()) < 1e-15,
                       where + "/timing: chain_time_max disagrees")
+                # per control period: one row per tick (the closing sample is not one), the
+                # NMPC ticks those of the iterations
+                if check("tick_stage_time" in timing, where + "/timing/tick_stage_time missing"):
+                    ticks = timing["tick_stage_time"]
+                    check(ticks.shape == (n - 1, 4), "%s/timing/tick_stage_time shape %s"
+                          % (where, ticks.shape))
+                    check(ticks.attrs.get("columns") == "wpg, ik, multibody_zmp, filter",
+                          where + "/timing/tick_stage_time columns")
+                    flags = timing["tick_nmpc"][()]
+                    check(flags.shape == (n - 1,) and int(flags.sum()) == k,
+                          "%s/timing/tick_nmpc: %d NMPC ticks for %d iterations"
+                          % (where, int(flags.sum()), k))
+                    check(np.all(ticks[()] >= 0), where + "/timing/tick_stage_time negative")
 
 
 if __name__ == "__main__":

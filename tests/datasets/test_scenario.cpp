@@ -244,7 +244,8 @@ TEST(ShippedScenarios, ResolvedYamlListsEveryKey) {
         "com_height: 0.814", "horizon_length: 16", "max_step_yaw_change: 0.17",
         "feasibility_x: [-0.28, -0.2, 0.0, 0.2, 0.28]", "weight_jerk: 1.0e-05",
         "replay: false", "filter: false",
-        "filter_settings: {error_weight: 1.0, input_weight: 1.0e-06, preview_time: 1.6}"}) {
+        "filter_settings: {error_weight: 1.0, input_weight: 1.0e-06, preview_time: 1.6, mode: "
+        "offline, reinitialize_wpg: false}"}) {
     EXPECT_NE(yaml.find(key), std::string::npos) << "'" << key << "' missing in:\n" << yaml;
   }
 }
@@ -277,6 +278,35 @@ TEST(ShippedScenarios, ReplayAndFilterKeys) {
   } catch (const InputError& error) {
     const std::string message = error.what();
     EXPECT_EQ(message.rfind("run.h5:/scenario: key 'duration'", 0), 0u) << message;
+  }
+}
+
+// filter_settings.mode and .reinitialize_wpg (the online loop of Fig. 3): offline and no
+// re-initialisation by default, read, echoed in the resolved YAML and read back; a bad mode is
+// one InputError naming the key.
+TEST(ShippedScenarios, FilterModeKeys) {
+  const Scenario defaults = loadShipped("walk_forward", {"filter=true"});
+  EXPECT_EQ(defaults.filter_loop.mode, wpg::DynamicFilterMode::kOffline);
+  EXPECT_FALSE(defaults.filter_loop.reinitialize_wpg);
+  const Scenario online = loadShipped(
+      "walk_forward", {"filter=true", "filter_settings={mode: both, reinitialize_wpg: true}"});
+  EXPECT_EQ(online.filter_loop.mode, wpg::DynamicFilterMode::kBoth);
+  EXPECT_TRUE(online.filter_loop.reinitialize_wpg);
+  EXPECT_EQ(online.filter_settings.preview_time, 1.6);  // the other keys keep their defaults
+  const Scenario again =
+      wpg::datasets::loadScenarioText(online.resolved_yaml, "run.h5:/scenario", {}, kRobotsDir);
+  EXPECT_EQ(again.filter_loop.mode, wpg::DynamicFilterMode::kBoth);
+  EXPECT_TRUE(again.filter_loop.reinitialize_wpg);
+  for (const char* bad : {"filter_settings.mode=closed", "filter_settings.mode=[online]",
+                          "filter_settings.reinitialize_wpg=maybe"}) {
+    try {
+      loadShipped("walk_forward", {bad});
+      ADD_FAILURE() << bad << ": no InputError";
+    } catch (const InputError& error) {
+      const std::string message = error.what();
+      const std::string key(bad, std::string(bad).find('='));
+      EXPECT_NE(message.find(key), std::string::npos) << message;
+    }
   }
 }
 

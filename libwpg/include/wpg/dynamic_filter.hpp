@@ -4,6 +4,17 @@
 // the reference CoP. A second preview controller, driven by that ZMP error, yields a CoM
 // correction whose cart-table ZMP equals the error; added to the WPG's CoM it cancels the
 // error to first order ("one iteration of the dynamic filter is sufficient").
+//
+// Two ways to run it:
+//  * offline (dynamicFilterCorrection): over a whole recorded walk, the preview reading the
+//    walk's own future (non-causal: a robot cannot do this);
+//  * online (OnlineDynamicFilter): one control period at a time, the preview reading only
+//    what is known at that instant (the error of the motion the NMPC previews), and the WPG
+//    re-initialised from the corrected CoM state at every NMPC iteration (Fig. 3's loop). The
+//    loop itself needs the multibody model: robots/online_filter_loop.hpp.
+#include <cstdint>
+#include <string>
+
 #include <Eigen/Core>
 
 #include "wpg/preview_control.hpp"
@@ -15,5 +26,76 @@ namespace wpg {
 void dynamicFilterCorrection(const PreviewController& controller,
                              const Eigen::Ref<const Eigen::MatrixXd>& zmp_error,
                              Eigen::Ref<Eigen::MatrixXd> correction);
+
+// Which dynamic filter a run uses (scenario key filter_settings.mode).
+enum class DynamicFilterMode : std::uint8_t {
+  kOnline = 0,   // the paper's loop (Fig. 3), causal, one control period at a time
+  kOffline = 1,  // one pass over the whole recorded walk (non-causal preview)
+  kBoth = 2,     // the online loop's walk, and the offline pass on the open-loop walk for
+                 // comparison (its ZMP error statistics are stored beside the online ones)
+};
+const char* dynamicFilterModeName(DynamicFilterMode mode);  // "online", "offline", "both"
+bool parseDynamicFilterMode(const std::string& name, DynamicFilterMode* out);
+
+// How the online loop runs (scenario keys filter_settings.mode and .reinitialize_wpg).
+struct DynamicFilterLoopSettings {
+  // Offline by default, measured (README "Dynamic filter: online and offline"): on walk_forward
+  // and curve the offline pass leaves a ZMP error of 1.9 / 2.0 mm RMS, 4.2 / 4.5 mm max; the
+  // online loop (open) 3.6 / 3.4 mm RMS but 52 / 49 mm max, at the start of the walk, where
+  // the command that starts it is news to a causal filter (12 mm max after 1.3 s). Online is
+  // what a robot runs and what `wpg bench` times; a generated dataset is better offline.
+  DynamicFilterMode mode = DynamicFilterMode::kOffline;
+  // Online only. true: the paper's Fig. 3 read literally, the WPG's initial CoM state := the
+  // filter's corrected state at every NMPC iteration (OnlineDynamicFilter::absorbCorrection);
+  // measured unstable here (the robot falls within 5 s). false (default): the correction only
+  // goes to the CoM sent to the IK and the NMPC restarts from its own CoM state, which is what
+  // the authors' code does (jrl-walkgen, ZMPVelocityReferencedSQP::OnLine: the NMPC's initial
+  // condition is its LIPM state itCoM; deltaCOMTraj_deq_ is added to FinalCOMTraj_deq only).
+  bool reinitialize_wpg = false;
+};
+
+// The preview controller of the dynamic filter run one control period at a time, on the two
+// horizontal axes. Equals PreviewController::track when every window holds the true future of
+// the error (tested); online, the window is the error of the previewed motion.
+// Does not allocate.
+class OnlineDynamicFilter {
+ public:
+  // `controller` must outlive this filter.
+  explicit OnlineDynamicFilter(const PreviewController& controller);
+
+  // At rest at zero, no accumulated error.
+  void reset();
+
+  // The CoM correction at the current control instant (position, velocity, acceleration per
+  // axis, before step()): add it to the WPG's CoM state.
+  const Eigen::Vector3d& correctionX() const { return state_x_; }
+  const Eigen::Vector3d& correctionY() const { return state_y_; }
+
+  // One control period. `error_window`: rows = the ZMP error (reference CoP - multibody ZMP,
+  // x and y) at the current instant, then at the following control instants as far as they are
+  // known (at least one row; the last row is held beyond it, as track() holds the end of its
+  // reference). Moves the correction to the next control instant.
+  // Throws std::invalid_argument unless error_window is k x 2 with k >= 1 and finite.
+  void step(const Eigen::Ref<const Eigen::MatrixXd>& error_window);
+
+  // The re-initialisation of the WPG (paper Fig. 3: "the WPG is then reinitialized ... with the
+  // corrected initial states of the dynamic filter"): writes the correction (position,
+  // velocity, acceleration per axis) that the WPG adds to its CoM state, then restarts the
+  // filter at rest (reset()): the CoM sent to the robot stays continuous.
+  //
+  // Measured (robots/online_filter_loop.hpp, walk_forward): this loop is unstable, the robot
+  // falls within 2-5 s whatever the preview (0.8, 1.6 s) and R (1e-6, 1e-5). The error the
+  // filter sees, (WPG CoP - multibody ZMP), does not change when the WPG's CoM moves (both
+  // move together), so the filter asks for the same correction again after every absorption
+  // and the WPG integrates it. Two other absorptions were tried and fall too: keeping the
+  // integral of the error, and keeping the correction's cart-table ZMP (moving only position
+  // and velocity into the WPG).
+  void absorbCorrection(Eigen::Vector3d& absorbed_x, Eigen::Vector3d& absorbed_y);
+
+ private:
+  const PreviewController& controller_;
+  Eigen::Vector3d state_x_ = Eigen::Vector3d::Zero(), state_y_ = Eigen::Vector3d::Zero();
+  double error_sum_x_ = 0.0, error_sum_y_ = 0.0;
+};
 
 }  // namespace wpg

@@ -2,6 +2,7 @@
 // What the multibody replay and the dynamic filter (paper Sec. IV, Fig. 3 and 6) add to a
 // walk: plain data, filled by robots/ (Simbody) and written by datasets/ (HDF5), so that
 // neither of the two depends on the other.
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,23 @@ struct MultibodyValidation {
   // corrected CoM; the validation replay is not part of the chain): k entries [s].
   Eigen::VectorXd chain_time;
   Eigen::MatrixXd chain_stage_time;        // k x 4: NMPC, IK, multibody ZMP, preview filter [s]
+
+  // The same per control period (5 ms tick, the unit of the paper's Sec. V-C table): one row
+  // per step() of the generator (the closing sample of a walk is not one), columns as
+  // chain_stage_time, the first being the WPG's step() (the NMPC when it runs, plus the
+  // interpolation) [s].
+  Eigen::MatrixXd tick_stage_time;
+  std::vector<std::uint8_t> tick_nmpc;  // 1 when the NMPC ran in that control period
+  // true: every stage measured in its own tick (the online loop); false: the offline pass,
+  // where the IK is measured per sample but the multibody ZMP and the filter run over the
+  // whole walk and are spread evenly over the ticks (and the WPG's interpolation is not timed).
+  bool tick_stages_measured = false;
+
+  std::string filter_mode;        // "online", "offline" (dynamicFilterModeName); empty: no filter
+  bool wpg_reinitialized = false;  // online: the WPG re-initialised from the filter every NMPC iteration
+  // filter_mode "both": the offline pass over the open-loop walk, for comparison.
+  bool has_offline_comparison = false;
+  ZmpErrorStatistics offline_before, offline_after;
 };
 
 }  // namespace wpg

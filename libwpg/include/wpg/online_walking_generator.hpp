@@ -15,6 +15,7 @@
 
 #include "wpg/pattern_generator.hpp"
 #include "wpg/swing_foot_trajectory.hpp"
+#include "wpg/walk_trajectory.hpp"
 
 namespace wpg {
 
@@ -80,6 +81,28 @@ class OnlineWalkingGenerator {
   // The reference at the current time under the plan in force, without running the NMPC or
   // moving on (e.g. the closing sample of a recorded walk).
   const ControlSample& currentSample();
+
+  // The CoM state (position, velocity, acceleration) per axis at time() [m, m/s, m/s^2].
+  const Eigen::Vector3d& comStateX() const { return com_x_; }
+  const Eigen::Vector3d& comStateY() const { return com_y_; }
+  // Re-initialisation of the WPG (paper Fig. 3: the dynamic filter's corrected state becomes
+  // the initial CoM state of the next NMPC iteration). Only at a sampling instant (before the
+  // step() that runs the NMPC): the CoM state at time() becomes (com_x, com_y); the NMPC
+  // plans from it and the interpolation continues from it.
+  // Throws std::logic_error off a sampling instant, std::invalid_argument unless both have 3
+  // finite entries.
+  void reinitializeCom(const Eigen::Ref<const Eigen::VectorXd>& com_x,
+                       const Eigen::Ref<const Eigen::VectorXd>& com_y);
+
+  // What the plan in force previews (no NMPC run, no push, no state change): the reference at
+  // the next `ticks` control instants from time() on, as step() would give it if the NMPC
+  // kept its current solution (jerks and steps of the plan shifted in time). This is all a
+  // controller knows of the coming motion, e.g. the dynamic filter's preview (Sec. IV).
+  // Fills time, com, com_vel, com_acc, cop, the feet, free_flyer_yaw and support of `out`
+  // (cleared first; no allocation once its capacity suffices). Beyond the NMPC's horizon the
+  // last jerk is held. Throws std::logic_error at a sampling instant (the NMPC of the coming
+  // sample has not run: call it after the step() that ran it).
+  void previewReference(int ticks, WalkTrajectory& out) const;
 
   double time() const;                // [s], the instant the next step() starts at
   bool atSamplingInstant() const { return sub_sample_ == 0; }  // the next step() runs the NMPC

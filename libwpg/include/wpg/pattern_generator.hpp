@@ -65,6 +65,14 @@ class PatternGenerator {
 
   const Eigen::Vector3d& comX() const { return com_x_; }
   const Eigen::Vector3d& comY() const { return com_y_; }
+  // Replaces the CoM state (position, velocity, acceleration per axis) the next update()
+  // starts from: the re-initialisation of the WPG by the dynamic filter (paper Fig. 3).
+  void setComState(const Eigen::Vector3d& com_x, const Eigen::Vector3d& com_y) {
+    com_x_ = com_x;
+    com_y_ = com_y;
+  }
+  // Step `step` (0 = the landing of the current swing) of the plan in force: x, y, yaw.
+  Eigen::Vector3d plannedStep(int step) const;
   const Eigen::Vector3d& footPose(FootSide side) const {  // on the ground (swing: lift-off pose)
     return gait_.footPose(side);
   }
@@ -82,7 +90,6 @@ class PatternGenerator {
  private:
   // --- the NMPC's plan and its warm start, owned by the solver: the only code that touches
   //     them ---------------------------------------------------------------------------------
-  Eigen::Vector3d plannedStep(int step) const;
   void seedStep(int step, const Eigen::Vector3d& pose);
   void seedPlanFromStanding(const Eigen::Vector3d& command, FootSide first_swing);
   void dropWarmStart();

@@ -22,11 +22,28 @@ struct WalkResult {
   std::string message;  // one line: what went wrong first, empty on success
 };
 
+class OnlineWalkingGenerator;
+struct ControlSample;
+
+// A controller around the WPG inside generateWalk's loop (e.g. the dynamic filter's closed
+// loop of the paper's Fig. 3, robots/online_filter_loop.hpp): called around every control
+// period, it may re-initialise the generator's CoM at sampling instants.
+class ControlLoopObserver {
+ public:
+  virtual ~ControlLoopObserver() = default;
+  // Before the step() of each control period, command and push already set.
+  virtual void beforeStep(OnlineWalkingGenerator& generator) = 0;
+  // After each step() that did not end in a fall, with the sample it produced (recorded next).
+  virtual void afterStep(OnlineWalkingGenerator& generator, const ControlSample& sample) = 0;
+};
+
 // Throws std::invalid_argument on invalid parameters or request (validate()). The obstacle
 // rows use libwpg's exact 2-D signed distances (ObstacleSet); planning/'s FCL world checks the
 // footsteps after the run.
 // `extra_families`: constraint families added to the NMPC after the paper's ones.
+// `observer`: called around every control period (not owned; may be null).
 WalkResult generateWalk(const WalkingParameters& parameters, const WalkRequest& request,
-                        const ConstraintFamilies& extra_families = {});
+                        const ConstraintFamilies& extra_families = {},
+                        ControlLoopObserver* observer = nullptr);
 
 }  // namespace wpg

@@ -29,6 +29,22 @@ struct ChainTiming {
 // The chain timing of a replay (all zero when the replay recorded no timing).
 ChainTiming chainTiming(const MultibodyValidation& validation);
 
+// The paper's unit (Sec. V-C): one control period (5 ms tick) of the loop, from
+// MultibodyValidation::tick_stage_time. The paper's table counts only the ticks that contain
+// an NMPC iteration ("only counts the iteration when the NMPC is computed").
+struct TickTiming {
+  SampleStatistics nmpc_ticks;  // [s] the whole tick (sum of its stages), NMPC ticks only
+  SampleStatistics all_ticks;   // [s] the whole tick, every control period
+  // Per stage (ChainStage order; the first is the WPG's step), over the NMPC ticks and over
+  // every tick [s].
+  std::array<SampleStatistics, kChainStageCount> stage_nmpc_ticks{};
+  std::array<SampleStatistics, kChainStageCount> stage_all_ticks{};
+  // true when each stage was measured in its own tick (the online loop); false for the
+  // offline pass, whose multibody ZMP and filter are whole-walk times spread evenly.
+  bool measured = false;
+};
+TickTiming tickTiming(const MultibodyValidation& validation);
+
 // How many times faster than real time a computation ran: walk_duration / wall_time (both
 // [s]); 0 when wall_time is not positive (nothing measured).
 double realTimeFactor(double walk_duration, double wall_time);

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "wpg/datasets/input_error.hpp"
+#include "wpg/dynamic_filter.hpp"
 #include "wpg/preview_control.hpp"
 #include "wpg/walk_request.hpp"
 #include "wpg/walking_parameters.hpp"
@@ -28,6 +29,9 @@ struct Scenario {
   bool replay = false;
   bool filter = false;
   wpg::PreviewControlSettings filter_settings;  // Qe = 1, R = 1e-6, 1.6 s by default
+  // filter_settings.mode (online | offline | both, default online: the paper's Fig. 3 loop)
+  // and filter_settings.reinitialize_wpg (default true), wpg/dynamic_filter.hpp.
+  wpg::DynamicFilterLoopSettings filter_loop;
   // The whole scenario after merging the robot parameters and the overrides, emitted with
   // yaml-cpp: every key explicit (all walking parameters, all generator settings). Loading it
   // as a scenario file gives the same Scenario again (stored in every dataset).
