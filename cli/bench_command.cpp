@@ -51,7 +51,7 @@ struct BenchRow {
 };
 
 BenchRow measure(const datasets::Scenario& scenario, const robots::RobotModel& model) {
-  const WalkResult walk = generateWalk(scenario.walking, scenario.request);
+  const WalkResult walk = runScenarioWalk(scenario).result;  // a goal walk too
   const ReplayOutcome replay = replayScenarioWalk(model, scenario, walk.trajectory, true);
   BenchRow row;
   row.name = scenario.name;

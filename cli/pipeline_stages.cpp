@@ -21,6 +21,7 @@
 #include "wpg/planning/obstacle_checks.hpp"
 #include "wpg/planning/world.hpp"
 #endif
+#include "wpg/planning/goal_walk.hpp"
 
 namespace fs = std::filesystem;
 
@@ -57,6 +58,59 @@ void checkFilterSettings(const datasets::Scenario& scenario, const std::string& 
   }
 }
 
+void checkGoalRequest(const datasets::Scenario& scenario, const std::string& scenario_path) {
+  if (!scenario.goal.enabled) return;
+  try {
+    planning::checkGoalRequest(scenario.walking, scenario.request, scenario.goal);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(scenario_path + ": " + e.what());
+  }
+}
+
+WalkOutcome runScenarioWalk(const datasets::Scenario& scenario) {
+  WalkOutcome outcome;
+  if (!scenario.goal.enabled) {
+    outcome.result = generateWalk(scenario.walking, scenario.request);
+    return outcome;
+  }
+  planning::GoalWalkResult walk =
+      planning::walkToGoal(scenario.walking, scenario.request, scenario.goal);
+  outcome.result = std::move(walk.walk);
+  outcome.planning_time = walk.planning_time;
+  outcome.replans = walk.plans.empty() ? 0 : static_cast<int>(walk.plans.size()) - 1;
+  if (!walk.plans.empty()) outcome.route_length = walk.plans.front().plan.length;
+  datasets::GoalOutcome& goal = outcome.goal.emplace();
+  goal.goal_reached = walk.goal_reached;
+  goal.time_to_goal = walk.time_to_goal;
+  goal.final_pose = walk.final_pose;
+  goal.final_distance = walk.final_distance;
+  goal.final_yaw_error = walk.final_yaw_error;
+  goal.outcome = walk.outcome;
+  goal.status_codes = planning::planStatusCodes();
+  goal.trigger_codes = planning::planTriggerCodes();
+  for (const planning::PlanRecord& record : walk.plans) {
+    datasets::RoutePlanRecord row;
+    const planning::PlanStatistics& stats = record.plan.statistics;
+    row.time = record.time;
+    row.trigger = static_cast<int>(record.trigger);
+    row.status = static_cast<int>(record.plan.status);
+    row.start = record.start;
+    row.known_obstacles = record.known_obstacles;
+    row.planning_time = stats.time;
+    row.route_length = record.plan.length;
+    row.solution_length = stats.solution_length;
+    row.simplified_solution_length = stats.simplified_solution_length;
+    row.solution_clearance = stats.solved ? stats.solution_clearance : 0.0;
+    row.simplification_time = stats.simplification_time;
+    row.graph_states = stats.graph_states;
+    row.graph_motions = stats.graph_motions;
+    row.iterations = stats.iterations;
+    row.route = record.plan.waypoints;
+    goal.plans.push_back(std::move(row));
+  }
+  return outcome;
+}
+
 double ReplayOutcome::realTimeFactor() const {
   return analysis::realTimeFactor(walk_duration, wall_time);
 }
@@ -85,7 +139,8 @@ ReplayOutcome replayScenarioWalk(const robots::RobotModel& model,
 std::optional<ObstacleClearances> writeScenarioDataset(const std::string& path,
                                                        const datasets::Scenario& scenario,
                                                        const WalkResult& result,
-                                                       const MultibodyValidation* multibody) {
+                                                       const MultibodyValidation* multibody,
+                                                       const datasets::GoalOutcome* goal) {
 #ifdef WPG_CLI_WITH_PLANNING
   if (!scenario.request.obstacles.empty()) {
     const planning::World world(scenario.request.obstacles);
@@ -95,7 +150,7 @@ std::optional<ObstacleClearances> writeScenarioDataset(const std::string& path,
     clearances.clearance = report.clearance;
     clearances.clearance_obstacle = report.clearance_obstacle;
     clearances.foot_distance = report.foot_distance;
-    datasets::writeRunDataset(path, scenario, result, &clearances, multibody);
+    datasets::writeRunDataset(path, scenario, result, &clearances, multibody, goal);
     ObstacleClearances least;
     least.obstacle_count = world.obstacleCount();
     least.step_centre = report.min_centre_clearance;
@@ -104,7 +159,7 @@ std::optional<ObstacleClearances> writeScenarioDataset(const std::string& path,
     return least;
   }
 #endif
-  datasets::writeRunDataset(path, scenario, result, nullptr, multibody);
+  datasets::writeRunDataset(path, scenario, result, nullptr, multibody, goal);
   return std::nullopt;
 }
 

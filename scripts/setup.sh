@@ -13,6 +13,7 @@ build="$(realpath -m -- "${WPG_BUILD_DIR:-$repo/build}")"
 # scenario stored in the dataset: obstacles, command, foot size).
 packages=(build-essential cmake libeigen3-dev libhdf5-dev libcli11-dev libgtest-dev
           libbenchmark-dev libyaml-cpp-dev libfcl-dev libsimbody-dev liburdfdom-dev
+          libompl-dev libboost-serialization-dev libboost-filesystem-dev libboost-system-dev
           python3-h5py python3-matplotlib python3-yaml)
 
 missing=()
