@@ -137,25 +137,33 @@ void checkGoalRequest(const wpg::WalkingParameters& parameters, const wpg::WalkR
   const PlanningBounds bounds =
       planningBounds(request.obstacles, start, goal.goal.position, goal.planner);
   const World world(request.obstacles);
-  const auto check = [&](const Eigen::Vector2d& point, const std::string& key,
-                         const std::string& what) {
-    if (!bounds.contains(point)) {
-      throw std::invalid_argument("'" + key + "': expected " + what + " inside planner.bounds [" +
-                                  format(bounds.min.x()) + ", " + format(bounds.max.x()) + "] x [" +
-                                  format(bounds.min.y()) + ", " + format(bounds.max.y()) +
-                                  "], got [" + format(point.x()) + ", " + format(point.y()) + "]");
-    }
-    int nearest = -1;
-    const double clearance = world.clearance(point, &nearest);
-    if (clearance < radius) {
-      throw std::invalid_argument(
-          "'" + key + "': expected " + what + " clear of every obstacle grown by its margin and " +
-          "the robot radius " + format(radius, 3) + " m, but it is " +
-          format(radius - clearance, 3) + " m inside obstacles[" + std::to_string(nearest) + "]");
-    }
-  };
-  check(goal.goal.position, "goal.position", "the goal");
-  check(start, "planner", "the start (the origin)");
+  const std::string area = "[" + format(bounds.min.x()) + ", " + format(bounds.max.x()) + "] x [" +
+                           format(bounds.min.y()) + ", " + format(bounds.max.y()) + "]";
+  const Eigen::Vector2d& target = goal.goal.position;
+  if (!bounds.contains(target)) {
+    throw std::invalid_argument("'goal.position': expected a goal inside planner.bounds " + area +
+                                ", got [" + format(target.x()) + ", " + format(target.y()) + "]");
+  }
+  if (!bounds.contains(start)) {
+    throw std::invalid_argument("'planner.bounds': expected " + area +
+                                " to hold the start of the walk (the origin)");
+  }
+  int nearest = -1;
+  double clearance = world.clearance(target, &nearest);
+  if (clearance < radius) {
+    throw std::invalid_argument(
+        "'goal.position': expected a goal clear of every obstacle grown by its margin and the "
+        "robot radius " + format(radius, 3) + " m, but [" + format(target.x()) + ", " +
+        format(target.y()) + "] is " + format(radius - clearance, 3) + " m inside obstacles[" +
+        std::to_string(nearest) + "]");
+  }
+  clearance = world.clearance(start, &nearest);
+  if (clearance < radius) {
+    throw std::invalid_argument(
+        "'obstacles[" + std::to_string(nearest) + "]': expected the start of the walk (the "
+        "origin) clear of the obstacle grown by its margin and the robot radius " +
+        format(radius, 3) + " m, but the start is " + format(radius - clearance, 3) + " m inside");
+  }
 }
 
 GoalWalkResult walkToGoal(const wpg::WalkingParameters& parameters,
