@@ -62,7 +62,7 @@ void printGoalSummary(std::ostream& out, const WalkOutcome& walk) {
   }
   out << ", route " << fixed(walk.route_length, 1) << " m, " << walk.replans
       << (walk.replans == 1 ? " replan" : " replans") << ", planning "
-      << fixed(1e3 * walk.planning_time, 0) << " ms\n";
+      << fixed(1e3 * walk.planning_time, walk.planning_time < 0.01 ? 1 : 0) << " ms\n";
 }
 
 void printMultibodySummary(std::ostream& out, const ReplayOutcome& outcome) {

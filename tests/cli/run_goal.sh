@@ -13,7 +13,7 @@ status=0
 cat "$WORKDIR/stdout"; cat "$WORKDIR/stderr" >&2
 [[ $status == 0 ]] || fail "exit status $status"
 [[ ! -s "$WORKDIR/stderr" ]] || fail "unexpected output on stderr"
-grep -Eq '^goal      reached in [0-9.]+ s, route [0-9.]+ m, [0-9]+ replans?, planning [0-9]+ ms$' \
+grep -Eq '^goal      reached in [0-9.]+ s, route [0-9.]+ m, [0-9]+ replans?, planning [0-9.]+ ms$' \
   "$WORKDIR/stdout" || fail "no 'goal      reached in ...' line"
 # The FCL world's post-check of every step (wpg/planning/obstacle_checks.hpp) as printed.
 centre="$(sed -n 's/^obstacles .*(the NMPC.s constraint) \(-\{0,1\}[0-9.]*\) m.*/\1/p' "$WORKDIR/stdout")"
