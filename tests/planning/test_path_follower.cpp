@@ -146,6 +146,33 @@ TEST(GoalWalk, StopsStandingWithinTheToleranceOfPositionAndYaw) {
     ASSERT_EQ(again.walk.trajectory.com[i], walk.walk.trajectory.com[i]) << "sample " << i;
 }
 
+TEST(GoalWalk, APushThatThrowsTheRobotOffItsRouteMakesItReplanFromWhereItIs) {
+  const wpg::WalkingParameters parameters = goalWalking();
+  wpg::WalkRequest request;
+  request.duration = 40.0;
+  wpg::Push push;
+  push.t = 6.0;
+  push.force = Eigen::Vector2d(0.0, -40.0);  // larger pushes at this phase fell the NMPC alone
+  request.pushes = {push};
+  wpg::GoalRequest goal;
+  goal.enabled = true;
+  goal.goal = goalAt(3.0, 1.5);
+  goal.planner.replan_distance = 0.15;
+  const wpg::planning::GoalWalkResult walk = wpg::planning::walkToGoal(parameters, request, goal);
+  ASSERT_TRUE(walk.goal_reached) << walk.outcome;
+  ASSERT_GE(walk.plans.size(), 2u);
+  EXPECT_EQ(walk.plans[0].trigger, wpg::planning::PlanTrigger::kStart);
+  EXPECT_EQ(walk.plans[1].trigger, wpg::planning::PlanTrigger::kStrayed);
+  EXPECT_GT(walk.plans[1].time, push.t);
+  EXPECT_LT(walk.plans[1].time, push.t + 2.0);
+  // Replanned from where the robot was (its CoM), not from the old route.
+  const Eigen::Vector2d from = walk.plans[1].plan.waypoints.front().head<2>();
+  EXPECT_LT((from - walk.plans[1].start.head<2>()).norm(), 1e-9);
+  // At most one strayed replan per second.
+  for (std::size_t i = 2; i < walk.plans.size(); ++i)
+    EXPECT_GE(walk.plans[i].time - walk.plans[i - 1].time, 1.0 - 1e-9);
+}
+
 TEST(GoalWalk, WithoutAPlannerTheStraightLineIsFollowedAndNeverReplanned) {
   const wpg::WalkingParameters parameters = goalWalking();
   wpg::WalkRequest request;
