@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <mutex>
 #include <stdexcept>
 #include <thread>
 
@@ -112,6 +113,14 @@ std::uint32_t mixSeed(std::uint32_t seed, std::uint32_t stream) {
   return static_cast<std::uint32_t>(z ^ (z >> 31));
 }
 
+// The yaw in [-pi, pi): OMPL's SO2 bounds exclude +pi (a goal straight behind, atan2(0, -x) =
+// pi, was an invalid state and the plan timed out).
+double so2Yaw(double yaw) {
+  double wrapped = std::remainder(yaw, 2.0 * kPi);
+  if (wrapped >= kPi) wrapped -= 2.0 * kPi;
+  return wrapped;
+}
+
 double polylineLength(const std::vector<Eigen::Vector3d>& waypoints) {
   double length = 0.0;
   for (std::size_t i = 1; i < waypoints.size(); ++i)
@@ -206,7 +215,9 @@ RoutePlanner::RoutePlanner(World world, const wpg::RoutePlannerSettings& setting
     throw std::invalid_argument("'planner.bounds': expected min < max");
   }
   // OMPL logs to stderr by default ("Info: RRTConnect: ..."); the CLI keeps stderr for errors.
-  ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
+  // A process-wide setting: once, whatever the threads that make planners.
+  static std::once_flag silenced;
+  std::call_once(silenced, [] { ompl::msg::setLogLevel(ompl::msg::LOG_NONE); });
 }
 
 bool RoutePlanner::isValid(const Eigen::Vector2d& point) const {
@@ -248,9 +259,9 @@ RoutePlan RoutePlanner::plan(const Eigen::Vector3d& start, const Eigen::Vector3d
 
   ob::ScopedState<ob::SE2StateSpace> start_state(space), goal_state(space);
   start_state->setXY(start.x(), start.y());
-  start_state->setYaw(start.z());
+  start_state->setYaw(so2Yaw(start.z()));
   goal_state->setXY(goal.x(), goal.y());
-  goal_state->setYaw(goal.z());
+  goal_state->setYaw(so2Yaw(goal.z()));
   auto problem = std::make_shared<ob::ProblemDefinition>(si);
   problem->setStartAndGoalStates(start_state, goal_state);
   auto objective = std::make_shared<ob::PathLengthOptimizationObjective>(si);

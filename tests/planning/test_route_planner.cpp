@@ -140,6 +140,23 @@ TEST(RoutePlanner, OptimizingPlannersShortenTheRouteOfTheFirstSolution) {
   EXPECT_GT(star.statistics.iterations, 400);  // ran to its iteration cap (500), not the time
 }
 
+TEST(RoutePlanner, AnyYawIsAcceptedForTheStartAndTheGoal) {
+  // A goal straight behind the start has yaw atan2(0, -x) = +pi, outside OMPL's SO2 bounds
+  // [-pi, pi) unless wrapped; yaws of several turns too.
+  const std::vector<wpg::Obstacle> none;
+  wpg::RoutePlannerSettings settings;
+  settings.time_limit = 0.2;
+  const RoutePlanner planner(World(none), settings, kRadius,
+                             wpg::planning::planningBounds(none, kStart.head<2>(),
+                                                           Eigen::Vector2d(-3.0, 0.0), settings));
+  for (const double yaw : {M_PI, -M_PI, 3.0 * M_PI, 7.0, -20.0}) {
+    const RoutePlan plan = planner.plan(Eigen::Vector3d(0.0, 0.0, yaw),
+                                        Eigen::Vector3d(-3.0, 0.0, yaw), 1);
+    EXPECT_EQ(plan.status, PlanStatus::kExactSolution)
+        << "yaw " << yaw << ": " << wpg::planning::planStatusName(plan.status);
+  }
+}
+
 TEST(RoutePlanner, InvalidStartOrGoalIsReportedWithoutPlanning) {
   const RoutePlanner planner = makePlanner("rrtconnect");
   EXPECT_EQ(planner.plan(kStart, Eigen::Vector3d(2.6, 0.0, 0.0), 1).status,
