@@ -44,8 +44,8 @@ void writeGoal(H5::Group& run, const Scenario& scenario, const GoalOutcome& goal
   writeDoubleAttribute(plans, "robot_radius", settings.robot_radius);
   writeIntAttribute(plans, "count", static_cast<int>(goal.plans.size()));
   std::vector<std::uint8_t> status, trigger;
-  std::vector<double> time, start, planning_time, route_length, solution_length,
-      simplified_length, clearance, simplification_time, waypoints;
+  std::vector<double> time, start, planning_time, route_length, solution_length, simplified_length,
+      clearance, simplification_time, waypoints;
   std::vector<int> graph_states, graph_motions, iterations, known_obstacles, route_start,
       route_count;
   for (const RoutePlanRecord& plan : goal.plans) {
@@ -65,7 +65,8 @@ void writeGoal(H5::Group& run, const Scenario& scenario, const GoalOutcome& goal
     iterations.push_back(plan.iterations);
     route_start.push_back(static_cast<int>(waypoints.size() / 3));
     route_count.push_back(static_cast<int>(plan.route.size()));
-    for (const Eigen::Vector3d& w : plan.route) waypoints.insert(waypoints.end(), w.data(), w.data() + 3);
+    for (const Eigen::Vector3d& w : plan.route)
+      waypoints.insert(waypoints.end(), w.data(), w.data() + 3);
   }
   writeDoubles(plans, "time", time, 0, {"s", nullptr, "walk time when the plan was made", nullptr});
   H5::DataSet status_set = writeCodes(
@@ -76,8 +77,7 @@ void writeGoal(H5::Group& run, const Scenario& scenario, const GoalOutcome& goal
       writeCodes(plans, "trigger", trigger,
                  {"1", nullptr, "why the plan was made, see the codes attribute", nullptr});
   writeStringAttribute(trigger_set, "codes", goal.trigger_codes);
-  writeDoubles(plans, "start", start, 3,
-               {"m, m, rad", "world", "pose planned from", "x, y, yaw"});
+  writeDoubles(plans, "start", start, 3, {"m, m, rad", "world", "pose planned from", "x, y, yaw"});
   writeInts(plans, "known_obstacles", known_obstacles,
             {"1", nullptr, "obstacles the planner knew", nullptr});
   writeDoubles(plans, "planning_time", planning_time, 0,

@@ -32,11 +32,11 @@ GoalRequest readGoalRequest(const YAML::Node& goal_node, const YAML::Node& plann
 
   RoutePlannerSettings& p = request.planner;
   if (planner_node.IsDefined()) {
-    const Entries planner = readMap(
-        planner_node, "planner",
-        {"algorithm", "time_limit", "max_iterations", "seed", "robot_radius", "replan_distance",
-         "sensing_range", "lookahead", "bounds"},
-        "a map of route planner settings (SCENARIOS.md)", source, /*null_is_empty=*/true);
+    const Entries planner =
+        readMap(planner_node, "planner",
+                {"algorithm", "time_limit", "max_iterations", "seed", "robot_radius",
+                 "replan_distance", "sensing_range", "lookahead", "bounds"},
+                "a map of route planner settings (SCENARIOS.md)", source, /*null_is_empty=*/true);
     if (present(planner, "algorithm")) {
       const YAML::Node algorithm = entry(planner, "algorithm");
       if (!algorithm.IsScalar()) {
@@ -50,12 +50,12 @@ GoalRequest readGoalRequest(const YAML::Node& goal_node, const YAML::Node& plann
                                 "a positive time in s", source);
     }
     if (present(planner, "max_iterations")) {
-      p.max_iterations = readInteger(entry(planner, "max_iterations"), "planner.max_iterations",
-                                     1, "a positive number of iterations", source);
+      p.max_iterations = readInteger(entry(planner, "max_iterations"), "planner.max_iterations", 1,
+                                     "a positive number of iterations", source);
     }
     if (present(planner, "seed")) {
-      p.seed = static_cast<std::uint32_t>(readInteger(
-          entry(planner, "seed"), "planner.seed", 0, "an integer >= 0", source));
+      p.seed = static_cast<std::uint32_t>(
+          readInteger(entry(planner, "seed"), "planner.seed", 0, "an integer >= 0", source));
     }
     const auto read = [&](const char* name, double* value, const char* expected) {
       if (present(planner, name)) {

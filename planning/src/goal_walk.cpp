@@ -96,10 +96,14 @@ bool routeBlocked(const std::vector<Eigen::Vector2d>& route, double from, const 
 
 const char* planTriggerName(PlanTrigger trigger) {
   switch (trigger) {
-    case PlanTrigger::kStart: return "start";
-    case PlanTrigger::kStrayed: return "strayed";
-    case PlanTrigger::kBlocked: return "blocked";
-    case PlanTrigger::kRetry: return "retry";
+    case PlanTrigger::kStart:
+      return "start";
+    case PlanTrigger::kStrayed:
+      return "strayed";
+    case PlanTrigger::kBlocked:
+      return "blocked";
+    case PlanTrigger::kRetry:
+      return "retry";
   }
   return "unknown";
 }
@@ -153,21 +157,22 @@ void checkGoalRequest(const wpg::WalkingParameters& parameters, const wpg::WalkR
   if (clearance < radius) {
     throw std::invalid_argument(
         "'goal.position': expected a goal clear of every obstacle grown by its margin and the "
-        "robot radius " + format(radius, 3) + " m, but [" + format(target.x()) + ", " +
-        format(target.y()) + "] is " + format(radius - clearance, 3) + " m inside obstacles[" +
-        std::to_string(nearest) + "]");
+        "robot radius " +
+        format(radius, 3) + " m, but [" + format(target.x()) + ", " + format(target.y()) + "] is " +
+        format(radius - clearance, 3) + " m inside obstacles[" + std::to_string(nearest) + "]");
   }
   clearance = world.clearance(start, &nearest);
   if (clearance < radius) {
     throw std::invalid_argument(
-        "'obstacles[" + std::to_string(nearest) + "]': expected the start of the walk (the "
+        "'obstacles[" + std::to_string(nearest) +
+        "]': expected the start of the walk (the "
         "origin) clear of the obstacle grown by its margin and the robot radius " +
         format(radius, 3) + " m, but the start is " + format(radius - clearance, 3) + " m inside");
   }
 }
 
-GoalWalkResult walkToGoal(const wpg::WalkingParameters& parameters,
-                          const wpg::WalkRequest& request, const wpg::GoalRequest& goal,
+GoalWalkResult walkToGoal(const wpg::WalkingParameters& parameters, const wpg::WalkRequest& request,
+                          const wpg::GoalRequest& goal,
                           const PathFollowerSettings& follower_settings) {
   parameters.validate();
   request.validate();
@@ -177,13 +182,14 @@ GoalWalkResult walkToGoal(const wpg::WalkingParameters& parameters,
   OnlineWalkingGenerator generator(parameters, request.generator);
   if (!request.obstacles.empty()) generator.setObstacles(request.obstacles);
   const double radius = plannerRobotRadius(parameters, goal.planner);
-  const PlanningBounds bounds = planningBounds(request.obstacles, Eigen::Vector2d::Zero(),
-                                               goal.goal.position, goal.planner);
+  const PlanningBounds bounds =
+      planningBounds(request.obstacles, Eigen::Vector2d::Zero(), goal.goal.position, goal.planner);
   std::vector<bool> known(request.obstacles.size());
   for (std::size_t i = 0; i < known.size(); ++i) known[i] = goal.knownToPlanner(i);
   // Each unknown obstacle alone, to test whether it blocks the route once sensed.
   std::vector<World> single_worlds;
-  for (const wpg::Obstacle& obstacle : request.obstacles) single_worlds.emplace_back(std::vector<wpg::Obstacle>{obstacle});
+  for (const wpg::Obstacle& obstacle : request.obstacles)
+    single_worlds.emplace_back(std::vector<wpg::Obstacle>{obstacle});
 
   PathFollowerSettings settings = follower_settings;
   settings.lookahead = goal.planner.lookahead;
@@ -224,10 +230,11 @@ GoalWalkResult walkToGoal(const wpg::WalkingParameters& parameters,
     Eigen::Vector2d from = pose.head<2>();
     const bool escaped = escape(planner.world(), radius, &from);
     const Eigen::Vector2d to = goal.goal.position;
-    const double goal_yaw = goal.goal.has_yaw ? goal.goal.yaw
-                                              : std::atan2(to.y() - from.y(), to.x() - from.x());
+    const double goal_yaw =
+        goal.goal.has_yaw ? goal.goal.yaw : std::atan2(to.y() - from.y(), to.x() - from.x());
     if (escaped) {
-      const std::uint32_t seed = goal.planner.seed + static_cast<std::uint32_t>(result.plans.size());
+      const std::uint32_t seed =
+          goal.planner.seed + static_cast<std::uint32_t>(result.plans.size());
       record.plan = planner.plan(Eigen::Vector3d(from.x(), from.y(), pose.z()),
                                  Eigen::Vector3d(to.x(), to.y(), goal_yaw), seed);
     } else {
@@ -244,14 +251,16 @@ GoalWalkResult walkToGoal(const wpg::WalkingParameters& parameters,
         record.plan.length += (from - pose.head<2>()).norm();
       }
       for (const Eigen::Vector3d& w : record.plan.waypoints) {
-        if (route.empty() || (w.head<2>() - route.back()).norm() > 1e-9) route.push_back(w.head<2>());
+        if (route.empty() || (w.head<2>() - route.back()).norm() > 1e-9)
+          route.push_back(w.head<2>());
       }
       if (route.size() < 2) route.push_back(to);
       follower.setRoute(route);
     } else {
       result.outcome = std::string("no route at t = ") + format(time) + " s from [" +
-                       format(pose.x()) + ", " + format(pose.y()) + "] (" + planTriggerName(trigger) +
-                       " plan: " + planStatusName(record.plan.status) + ")";
+                       format(pose.x()) + ", " + format(pose.y()) + "] (" +
+                       planTriggerName(trigger) + " plan: " + planStatusName(record.plan.status) +
+                       ")";
     }
     result.plans.push_back(std::move(record));
     return ok;
@@ -302,7 +311,8 @@ GoalWalkResult walkToGoal(const wpg::WalkingParameters& parameters,
           break;
         }
         if (++stop_retries > kMaxStopRetries) {
-          result.outcome = "stopped outside the tolerance " + std::to_string(stop_retries) + " times";
+          result.outcome =
+              "stopped outside the tolerance " + std::to_string(stop_retries) + " times";
           no_route = true;
         } else {
           no_route = !plan(t, PlanTrigger::kRetry, Eigen::Vector3d(stand.x(), stand.y(), yaw));
@@ -352,9 +362,9 @@ GoalWalkResult walkToGoal(const wpg::WalkingParameters& parameters,
                                 step.pose.head<2>(), parameters.obstacle_foot_radius);
         if (clearance < -1e-6) {
           walk.success = false;
-          walk.message = "the step landing at t = " + std::to_string(step.landing_time) +
-                         " s is " + std::to_string(-clearance) + " m inside obstacle " +
-                         std::to_string(o) + "'s margin (its constraint had to be relaxed)";
+          walk.message = "the step landing at t = " + std::to_string(step.landing_time) + " s is " +
+                         std::to_string(-clearance) + " m inside obstacle " + std::to_string(o) +
+                         "'s margin (its constraint had to be relaxed)";
         }
       }
     }
@@ -368,8 +378,8 @@ GoalWalkResult walkToGoal(const wpg::WalkingParameters& parameters,
       goal.goal.has_yaw ? std::abs(wrapAngle(last.free_flyer_yaw - goal.goal.yaw)) : 0.0;
   if (!result.goal_reached && walk.success) {
     walk.success = false;  // the dataset's success and message say why the goal was missed
-    walk.message = "goal not reached: " + (result.outcome.empty() ? std::string("out of time")
-                                                                  : result.outcome);
+    walk.message = "goal not reached: " +
+                   (result.outcome.empty() ? std::string("out of time") : result.outcome);
   }
   if (result.goal_reached) {
     result.outcome = "reached";

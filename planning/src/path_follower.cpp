@@ -37,16 +37,20 @@ double wrapAngle(double angle) {
 
 const char* followerPhaseName(FollowerPhase phase) {
   switch (phase) {
-    case FollowerPhase::kFollow: return "follow";
-    case FollowerPhase::kAlignYaw: return "align_yaw";
-    case FollowerPhase::kStop: return "stop";
+    case FollowerPhase::kFollow:
+      return "follow";
+    case FollowerPhase::kAlignYaw:
+      return "align_yaw";
+    case FollowerPhase::kStop:
+      return "stop";
   }
   return "unknown";
 }
 
 PathFollower::PathFollower(const wpg::WalkingParameters& parameters, const wpg::WalkGoal& goal,
                            const PathFollowerSettings& settings)
-    : goal_(goal), settings_(settings),
+    : goal_(goal),
+      settings_(settings),
       limits_(parameters.max_forward_velocity, parameters.max_lateral_velocity,
               parameters.max_angular_velocity) {
   const auto positive = [](double v) { return std::isfinite(v) && v > 0.0; };
@@ -101,7 +105,7 @@ double PathFollower::project(const Eigen::Vector2d& point) const {
   double best_s = progress_;
   const double window_end = progress_ + std::max(settings_.lookahead, 0.5);
   for (std::size_t i = 1; i < route_.size(); ++i) {
-    if (arc_[i] < progress_) continue;   // behind the progress
+    if (arc_[i] < progress_) continue;    // behind the progress
     if (arc_[i - 1] > window_end) break;  // beyond the window
     const Eigen::Vector2d a = route_[i - 1], ab = route_[i] - a;
     const double length2 = ab.squaredNorm();
@@ -166,10 +170,10 @@ Eigen::Vector3d PathFollower::command(const Eigen::Vector2d& position, double ya
     // distance to the goal, when the robot lags behind its projection there).
     const double cruise = settings_.cruise_fraction * limits_.x();
     const double remaining = std::max(left, to_goal);
-    const double speed = std::clamp(cruise * remaining / settings_.slow_distance,
-                                    settings_.min_speed, cruise);
-    velocity = chord.norm() > 1e-9 ? Eigen::Vector2d(chord.normalized() * speed)
-                                   : Eigen::Vector2d::Zero();
+    const double speed =
+        std::clamp(cruise * remaining / settings_.slow_distance, settings_.min_speed, cruise);
+    velocity =
+        chord.norm() > 1e-9 ? Eigen::Vector2d(chord.normalized() * speed) : Eigen::Vector2d::Zero();
     // Lateral correction: back towards the route in proportion to the cross-track error.
     velocity += settings_.lateral_gain * (projection - position);
     // Head along the route: towards the lookahead point while it is not too close, then hold
@@ -180,8 +184,7 @@ Eigen::Vector3d PathFollower::command(const Eigen::Vector2d& position, double ya
       heading = goal_.has_yaw && to_goal < 1.0 ? goal_.yaw : final_heading_;
     }
   }
-  const Eigen::Vector2d in_frame =
-      scaleInto(to_frame * velocity, limits_.x(), limits_.y());
+  const Eigen::Vector2d in_frame = scaleInto(to_frame * velocity, limits_.x(), limits_.y());
   const double omega = std::clamp(settings_.heading_gain * wrapAngle(heading - frame_yaw),
                                   -limits_.z(), limits_.z());
   return Eigen::Vector3d(in_frame.x(), in_frame.y(), omega);

@@ -130,7 +130,8 @@ double polylineLength(const std::vector<Eigen::Vector3d>& waypoints) {
 
 std::string plannerList() {
   std::string names;
-  for (const auto& entry : detail::omplPlanners()) names += (names.empty() ? "" : ", ") + std::string(entry.name);
+  for (const auto& entry : detail::omplPlanners())
+    names += (names.empty() ? "" : ", ") + std::string(entry.name);
   return names;
 }
 
@@ -138,12 +139,18 @@ std::string plannerList() {
 
 const char* planStatusName(PlanStatus status) {
   switch (status) {
-    case PlanStatus::kExactSolution: return "exact_solution";
-    case PlanStatus::kApproximateSolution: return "approximate_solution";
-    case PlanStatus::kNoSolution: return "no_solution";
-    case PlanStatus::kTimeout: return "timeout";
-    case PlanStatus::kInvalidStart: return "invalid_start";
-    case PlanStatus::kInvalidGoal: return "invalid_goal";
+    case PlanStatus::kExactSolution:
+      return "exact_solution";
+    case PlanStatus::kApproximateSolution:
+      return "approximate_solution";
+    case PlanStatus::kNoSolution:
+      return "no_solution";
+    case PlanStatus::kTimeout:
+      return "timeout";
+    case PlanStatus::kInvalidStart:
+      return "invalid_start";
+    case PlanStatus::kInvalidGoal:
+      return "invalid_goal";
   }
   return "unknown";
 }
@@ -199,8 +206,7 @@ PlanningBounds planningBounds(const std::vector<wpg::Obstacle>& obstacles,
 
 RoutePlanner::RoutePlanner(World world, const wpg::RoutePlannerSettings& settings,
                            double robot_radius, PlanningBounds bounds)
-    : world_(std::move(world)), settings_(settings), robot_radius_(robot_radius),
-      bounds_(bounds) {
+    : world_(std::move(world)), settings_(settings), robot_radius_(robot_radius), bounds_(bounds) {
   if (!isKnownPlanner(settings.algorithm)) {
     throw std::invalid_argument("'planner.algorithm': expected one of " + plannerList() +
                                 ", got '" + settings.algorithm + "'");
@@ -251,7 +257,8 @@ RoutePlan RoutePlanner::plan(const Eigen::Vector3d& start, const Eigen::Vector3d
     return std::make_shared<SeededSE2Sampler>(s, mixSeed(seed, 1000 + (*sampler_count)++));
   });
   auto si = std::make_shared<ob::SpaceInformation>(space);
-  si->setStateValidityChecker(std::make_shared<FootprintValidityChecker>(si, world_, robot_radius_));
+  si->setStateValidityChecker(
+      std::make_shared<FootprintValidityChecker>(si, world_, robot_radius_));
   // Motions are checked at kMotionResolution in the SE(2) metric, whose x-y part is never
   // longer: at most 2 cm on the ground.
   si->setStateValidityCheckingResolution(kMotionResolution / space->getMaximumExtent());
@@ -295,7 +302,8 @@ RoutePlan RoutePlanner::plan(const Eigen::Vector3d& start, const Eigen::Vector3d
   stats.graph_motions = static_cast<int>(data.numEdges());
 
   const bool has_path = problem->hasSolution();
-  if (status == ob::PlannerStatus::EXACT_SOLUTION && has_path && !problem->hasApproximateSolution()) {
+  if (status == ob::PlannerStatus::EXACT_SOLUTION && has_path &&
+      !problem->hasApproximateSolution()) {
     result.status = PlanStatus::kExactSolution;
   } else if (has_path && (status == ob::PlannerStatus::APPROXIMATE_SOLUTION ||
                           problem->hasApproximateSolution())) {

@@ -82,8 +82,7 @@ void BM_ChainedWalk30s(benchmark::State& state, const std::string& world) {
 }
 BENCHMARK_CAPTURE(BM_ChainedWalk30s, goal_cluttered, std::string("goal_cluttered"))
     ->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_ChainedWalk30s, goal_unknown_obstacle,
-                  std::string("goal_unknown_obstacle"))
+BENCHMARK_CAPTURE(BM_ChainedWalk30s, goal_unknown_obstacle, std::string("goal_unknown_obstacle"))
     ->Unit(benchmark::kMillisecond);
 
 }  // namespace

@@ -64,8 +64,8 @@ TEST(GoalScenario, OverridesReachEveryKey) {
       shipped("goal_u_trap"),
       {"planner.algorithm=rrtstar", "planner.seed=42", "planner.time_limit=0.5",
        "planner.max_iterations=300", "planner.robot_radius=0.3", "planner.replan_distance=0.2",
-       "planner.sensing_range=1.5", "planner.lookahead=0.7", "goal.tolerance=0.2",
-       "goal.yaw=0.3", "obstacles[1].known_to_planner=false"},
+       "planner.sensing_range=1.5", "planner.lookahead=0.7", "goal.tolerance=0.2", "goal.yaw=0.3",
+       "obstacles[1].known_to_planner=false"},
       kRobotsDir);
   const wpg::RoutePlannerSettings& p = s.goal.planner;
   EXPECT_EQ(p.algorithm, "rrtstar");

@@ -18,8 +18,8 @@ const std::string kSource = WPG_SOURCE_DIR;
 
 wpg::datasets::Scenario load(const std::string& name,
                              const std::vector<std::string>& overrides = {}) {
-  return wpg::datasets::loadScenario(kSource + "/datasets/scenarios/" + name + ".yaml",
-                                     overrides, kSource + "/robots");
+  return wpg::datasets::loadScenario(kSource + "/datasets/scenarios/" + name + ".yaml", overrides,
+                                     kSource + "/robots");
 }
 
 class ShippedGoalWalk : public ::testing::TestWithParam<std::string> {};
@@ -49,8 +49,8 @@ TEST_P(ShippedGoalWalk, ReachesTheGoalWithEveryStepOutOfTheMargins) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenarios, ShippedGoalWalk,
-                         ::testing::Values("goal_cluttered", "goal_u_trap",
-                                           "goal_unknown_obstacle", "goal_with_yaw"));
+                         ::testing::Values("goal_cluttered", "goal_u_trap", "goal_unknown_obstacle",
+                                           "goal_with_yaw"));
 
 TEST(ShippedGoalWalks, TheUnknownObstacleIsSensedAndTheRouteReplannedRoundIt) {
   const wpg::datasets::Scenario scenario = load("goal_unknown_obstacle");
@@ -66,7 +66,8 @@ TEST(ShippedGoalWalks, TheUnknownObstacleIsSensedAndTheRouteReplannedRoundIt) {
   const auto crosses = [&](const std::vector<Eigen::Vector3d>& route) {
     for (std::size_t i = 1; i < route.size(); ++i)
       for (int k = 0; k <= 100; ++k) {
-        const Eigen::Vector2d p = route[i - 1].head<2>() + (route[i] - route[i - 1]).head<2>() * k / 100.0;
+        const Eigen::Vector2d p =
+            route[i - 1].head<2>() + (route[i] - route[i - 1]).head<2>() * k / 100.0;
         if (!circle.isStateValid(p.x(), p.y(), radius)) return true;
       }
     return false;

@@ -33,8 +33,8 @@ TEST(PathFollower, CommandsStayWithinTheRobotsClampsEverywhere) {
     follower.setRoute({{0.0, 0.0}, {1.0, -1.0}, {3.0, -1.0}, {4.0, 1.0}});
     for (int i = 0; i < 20000; ++i) {
       if (i % 100 == 0) follower.restart();
-      const Eigen::Vector3d c = follower.command(Eigen::Vector2d(position(rng), position(rng)),
-                                                 angle(rng), angle(rng));
+      const Eigen::Vector3d c =
+          follower.command(Eigen::Vector2d(position(rng), position(rng)), angle(rng), angle(rng));
       ASSERT_TRUE(c.allFinite());
       ASSERT_LE(std::abs(c.x()), parameters.max_forward_velocity + 1e-12);
       ASSERT_LE(std::abs(c.y()), parameters.max_lateral_velocity + 1e-12);
@@ -88,7 +88,7 @@ TEST(PathFollower, SlowsNearTheGoalThenStopsOrAlignsItsYaw) {
   Eigen::Vector3d c = aligning.command(Eigen::Vector2d(3.97, 0.0), 0.0, 0.0);
   EXPECT_EQ(aligning.phase(), FollowerPhase::kAlignYaw);
   EXPECT_NEAR(c.z(), parameters.max_angular_velocity, 1e-12);  // turning left to yaw 1
-  EXPECT_LE(c.head<2>().norm(), 0.05 + 1e-12);                  // on the spot
+  EXPECT_LE(c.head<2>().norm(), 0.05 + 1e-12);                 // on the spot
   c = aligning.command(Eigen::Vector2d(3.97, 0.0), 0.98, 0.98);
   EXPECT_EQ(aligning.phase(), FollowerPhase::kStop);
   EXPECT_EQ(c, Eigen::Vector3d::Zero());

@@ -39,8 +39,8 @@ wpg::Obstacle box(double x, double y, double length, double width, double margin
 
 // A U-shaped trap open towards the start, the goal behind it, and clutter around.
 std::vector<wpg::Obstacle> trapWorld() {
-  return {box(2.6, 0.0, 0.2, 2.2, 0.1), box(1.9, 1.0, 1.6, 0.2, 0.1),
-          box(1.9, -1.0, 1.6, 0.2, 0.1), circle(1.0, -2.0, 0.3, 0.2), circle(3.5, 1.6, 0.3, 0.2)};
+  return {box(2.6, 0.0, 0.2, 2.2, 0.1), box(1.9, 1.0, 1.6, 0.2, 0.1), box(1.9, -1.0, 1.6, 0.2, 0.1),
+          circle(1.0, -2.0, 0.3, 0.2), circle(3.5, 1.6, 0.3, 0.2)};
 }
 
 const Eigen::Vector3d kStart(0.0, 0.0, 0.0);
@@ -52,9 +52,9 @@ RoutePlanner makePlanner(const std::string& algorithm, double time_limit = 1.0) 
   settings.time_limit = time_limit;
   settings.max_iterations = 500;
   const std::vector<wpg::Obstacle> obstacles = trapWorld();
-  return RoutePlanner(World(obstacles), settings, kRadius,
-                      wpg::planning::planningBounds(obstacles, kStart.head<2>(),
-                                                    kGoal.head<2>(), settings));
+  return RoutePlanner(
+      World(obstacles), settings, kRadius,
+      wpg::planning::planningBounds(obstacles, kStart.head<2>(), kGoal.head<2>(), settings));
 }
 
 // Every point of the route, every centimetre, keeps the footprint disc out of every grown
@@ -87,7 +87,8 @@ TEST(RoutePlanner, SameSeedGivesTheSameRouteAgainAndOnOtherThreads) {
     std::thread b([&] { on_thread_b = planner.plan(kStart, kGoal, 7); });
     a.join();
     b.join();
-    for (const RoutePlan* other : std::vector<const RoutePlan*>{&again, &on_thread_a, &on_thread_b}) {
+    for (const RoutePlan* other :
+         std::vector<const RoutePlan*>{&again, &on_thread_a, &on_thread_b}) {
       ASSERT_EQ(other->waypoints.size(), first.waypoints.size()) << algorithm;
       for (std::size_t i = 0; i < first.waypoints.size(); ++i) {
         EXPECT_EQ(other->waypoints[i], first.waypoints[i]) << algorithm << " waypoint " << i;
@@ -146,12 +147,12 @@ TEST(RoutePlanner, AnyYawIsAcceptedForTheStartAndTheGoal) {
   const std::vector<wpg::Obstacle> none;
   wpg::RoutePlannerSettings settings;
   settings.time_limit = 0.2;
-  const RoutePlanner planner(World(none), settings, kRadius,
-                             wpg::planning::planningBounds(none, kStart.head<2>(),
-                                                           Eigen::Vector2d(-3.0, 0.0), settings));
+  const RoutePlanner planner(
+      World(none), settings, kRadius,
+      wpg::planning::planningBounds(none, kStart.head<2>(), Eigen::Vector2d(-3.0, 0.0), settings));
   for (const double yaw : {M_PI, -M_PI, 3.0 * M_PI, 7.0, -20.0}) {
-    const RoutePlan plan = planner.plan(Eigen::Vector3d(0.0, 0.0, yaw),
-                                        Eigen::Vector3d(-3.0, 0.0, yaw), 1);
+    const RoutePlan plan =
+        planner.plan(Eigen::Vector3d(0.0, 0.0, yaw), Eigen::Vector3d(-3.0, 0.0, yaw), 1);
     EXPECT_EQ(plan.status, PlanStatus::kExactSolution)
         << "yaw " << yaw << ": " << wpg::planning::planStatusName(plan.status);
   }
@@ -170,15 +171,14 @@ TEST(RoutePlanner, InvalidStartOrGoalIsReportedWithoutPlanning) {
 TEST(RoutePlanner, AnEnclosedGoalIsNotReachedWithinTheTimeLimit) {
   // The goal inside a closed box of walls: no route exists; rrtconnect runs to its limit and,
   // in OMPL's terms, returns its closest approach as an approximate solution; rrtstar too.
-  const std::vector<wpg::Obstacle> walls = {box(3.0, 1.0, 2.2, 0.2, 0.05),
-                                            box(3.0, -1.0, 2.2, 0.2, 0.05),
-                                            box(2.0, 0.0, 0.2, 2.2, 0.05),
-                                            box(4.0, 0.0, 0.2, 2.2, 0.05)};
+  const std::vector<wpg::Obstacle> walls = {
+      box(3.0, 1.0, 2.2, 0.2, 0.05), box(3.0, -1.0, 2.2, 0.2, 0.05), box(2.0, 0.0, 0.2, 2.2, 0.05),
+      box(4.0, 0.0, 0.2, 2.2, 0.05)};
   wpg::RoutePlannerSettings settings;
   settings.time_limit = 0.05;
-  const RoutePlanner planner(World(walls), settings, kRadius,
-                             wpg::planning::planningBounds(walls, kStart.head<2>(),
-                                                           Eigen::Vector2d(3.0, 0.0), settings));
+  const RoutePlanner planner(
+      World(walls), settings, kRadius,
+      wpg::planning::planningBounds(walls, kStart.head<2>(), Eigen::Vector2d(3.0, 0.0), settings));
   const RoutePlan plan = planner.plan(kStart, Eigen::Vector3d(3.0, 0.0, 0.0), 1);
   EXPECT_EQ(plan.status, PlanStatus::kApproximateSolution)
       << wpg::planning::planStatusName(plan.status);
@@ -209,9 +209,9 @@ TEST(RoutePlanner, PlannersByNameAndBadSettings) {
 
 TEST(RoutePlanner, DefaultBoundsHoldStartGoalAndObstaclesWithTwoMetres) {
   wpg::RoutePlannerSettings settings;
-  const PlanningBounds bounds = wpg::planning::planningBounds(
-      {circle(5.0, 5.0, 0.5, 0.5)}, Eigen::Vector2d(0.0, 0.0), Eigen::Vector2d(2.0, -1.0),
-      settings);
+  const PlanningBounds bounds =
+      wpg::planning::planningBounds({circle(5.0, 5.0, 0.5, 0.5)}, Eigen::Vector2d(0.0, 0.0),
+                                    Eigen::Vector2d(2.0, -1.0), settings);
   EXPECT_DOUBLE_EQ(bounds.min.x(), -2.0);
   EXPECT_DOUBLE_EQ(bounds.min.y(), -3.0);
   EXPECT_DOUBLE_EQ(bounds.max.x(), 8.0);

@@ -15,10 +15,10 @@ namespace wpg {
 
 struct WalkGoal {
   Eigen::Vector2d position = Eigen::Vector2d::Zero();  // [m], world frame
-  bool has_yaw = false;    // without a yaw, the robot stops facing along the route's last leg
-  double yaw = 0.0;        // [rad], world frame
-  double tolerance = 0.15;      // the robot stands within this of `position` [m]
-  double yaw_tolerance = 0.1;   // and within this of `yaw` [rad] (when has_yaw)
+  bool has_yaw = false;        // without a yaw, the robot stops facing along the route's last leg
+  double yaw = 0.0;            // [rad], world frame
+  double tolerance = 0.15;     // the robot stands within this of `position` [m]
+  double yaw_tolerance = 0.1;  // and within this of `yaw` [rad] (when has_yaw)
 };
 
 struct RoutePlannerSettings {
@@ -31,14 +31,14 @@ struct RoutePlannerSettings {
   // that their route depends on the seed and not on the machine's speed (the time limit still
   // caps them). Planners that stop at their first solution (rrtconnect) ignore it.
   int max_iterations = 1500;
-  std::uint32_t seed = 1;   // every random number of a plan derives from it
+  std::uint32_t seed = 1;  // every random number of a plan derives from it
   // Radius of the robot's footprint disc [m] that must stay clear of every known obstacle grown
   // by its margin; <= 0: from the robot, half the stance width plus the sole's half diagonal.
   double robot_radius = 0.0;
   double replan_distance = 0.4;  // replan when the robot is farther than this from the route [m]
   // An obstacle unknown to the planner is seen once it is within this of the robot [m].
   double sensing_range = 2.0;
-  double lookahead = 0.5;        // pure pursuit: the point of the route this far ahead [m]
+  double lookahead = 0.5;  // pure pursuit: the point of the route this far ahead [m]
   // Planning area [x_min, x_max, y_min, y_max] [m]; unset: the bounding box of the obstacles,
   // the start and the goal grown by 2 m.
   bool has_bounds = false;

@@ -40,8 +40,8 @@ struct PlanRecord {
   double time = 0.0;  // [s] of the walk when the plan was made
   PlanTrigger trigger = PlanTrigger::kStart;
   Eigen::Vector3d start = Eigen::Vector3d::Zero();  // (x, y, yaw) planned from
-  int known_obstacles = 0;  // obstacles the planner knew
-  RoutePlan plan;           // status, waypoints (the route followed), statistics
+  int known_obstacles = 0;                          // obstacles the planner knew
+  RoutePlan plan;  // status, waypoints (the route followed), statistics
 };
 
 struct GoalWalkResult {
@@ -70,8 +70,7 @@ void checkGoalRequest(const wpg::WalkingParameters& parameters, const wpg::WalkR
                       const wpg::GoalRequest& goal);
 
 // Runs the walk. Throws std::invalid_argument on invalid parameters, request or goal.
-GoalWalkResult walkToGoal(const wpg::WalkingParameters& parameters,
-                          const wpg::WalkRequest& request, const wpg::GoalRequest& goal,
-                          const PathFollowerSettings& follower = {});
+GoalWalkResult walkToGoal(const wpg::WalkingParameters& parameters, const wpg::WalkRequest& request,
+                          const wpg::GoalRequest& goal, const PathFollowerSettings& follower = {});
 
 }  // namespace wpg::planning

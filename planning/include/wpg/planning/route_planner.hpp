@@ -41,17 +41,18 @@ std::string planStatusCodes();
 // "solved", "solution length", "solution clearance", "simplification time", "graph states",
 // ...), with underscores.
 struct PlanStatistics {
-  double time = 0.0;                 // [s] wall time of the planner's solve()
-  bool solved = false;               // an exact or approximate route
+  double time = 0.0;    // [s] wall time of the planner's solve()
+  bool solved = false;  // an exact or approximate route
   bool approximate_solution = false;
   double solution_difference = 0.0;  // [m, rad] how far the approximate route ends from the goal
   double solution_length = 0.0;      // in the SE(2) metric (x-y length + 0.5 x |yaw change|)
-  double solution_clearance = 0.0;   // [m] least clearance of the route's states (World, minus the radius)
-  double simplification_time = 0.0;  // [s]
+  double solution_clearance =
+      0.0;  // [m] least clearance of the route's states (World, minus the radius)
+  double simplification_time = 0.0;         // [s]
   double simplified_solution_length = 0.0;  // SE(2) metric, after simplification
-  int graph_states = 0;              // vertices of the planner's graph/tree
-  int graph_motions = 0;             // its edges
-  int iterations = 0;                // termination checks seen (the planner's iterations)
+  int graph_states = 0;                     // vertices of the planner's graph/tree
+  int graph_motions = 0;                    // its edges
+  int iterations = 0;                       // termination checks seen (the planner's iterations)
 };
 
 struct RoutePlan {
