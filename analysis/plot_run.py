@@ -86,7 +86,7 @@ try:
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    from matplotlib.patches import Patch, Polygon
+    from matplotlib.patches import Circle, Patch, Polygon
     from matplotlib.lines import Line2D
 except ImportError as error:
     fail("plotting needs h5py and matplotlib for %s (%s): install the Debian packages "
@@ -232,6 +232,7 @@ def read_runs(path, only=None):
                 # "online" (the loop of Fig. 3) or "offline"; absent in older files (offline)
                 multibody["filter_mode"] = as_text(attributes.get("filter_mode")) or "offline"
                 run["multibody"] = multibody
+            run["goal"] = read_goal(group)
             # a batch may store each run's own scenario text on its group
             run["scenario_text"] = as_text(group.attrs.get("scenario")) or scenario_text
             check_shapes(path, run)
@@ -239,6 +240,60 @@ def read_runs(path, only=None):
         if not runs:
             raise BadInput("'%s' holds no run: no group under /runs/" % path)
         return runs
+
+
+def read_goal(group):
+    """The goal and the routes of a walk to a goal (SCHEMA.md: plans), or None."""
+    if "goal_x" not in group.attrs:
+        return None
+    attributes = group.attrs
+    goal = {key: float(attributes[key]) for key in
+            ("goal_x", "goal_y", "goal_yaw", "goal_tolerance", "time_to_goal")
+            if key in attributes}
+    goal["reached"] = int(attributes.get("goal_reached", 0)) == 1
+    goal["routes"] = []
+    plans = group.get("plans")
+    if isinstance(plans, h5py.Group) and "routes" in plans:
+        routes = np.asarray(plans["routes"][()]).reshape(-1, 3)
+        starts = np.asarray(plans["route_start"][()])
+        counts = np.asarray(plans["route_count"][()])
+        times = np.asarray(plans["time"][()])
+        triggers = np.asarray(plans["trigger"][()])
+        codes = dict(item.split("=") for item in
+                     as_text(plans["trigger"].attrs.get("codes", "")).split(", ") if "=" in item)
+        for start, count, time, trigger in zip(starts, counts, times, triggers):
+            goal["routes"].append((routes[int(start):int(start) + int(count), :2], float(time),
+                                   codes.get(str(int(trigger)), str(int(trigger)))))
+    return goal
+
+
+def draw_goal(ax, goal):
+    """The goal (its tolerance circle, its yaw) and every route the planner gave."""
+    colours = ["tab:green", "tab:purple", "tab:olive", "tab:cyan", "tab:brown"]
+    handles = []
+    for index, (route, time, trigger) in enumerate(goal["routes"]):
+        if len(route) < 2:
+            continue
+        colour = colours[index % len(colours)]
+        ax.plot(route[:, 0], route[:, 1], color=colour, linewidth=1.3,
+                linestyle="-" if index == 0 else "--", marker=".", markersize=4, zorder=3)
+        handles.append(Line2D([], [], color=colour, linewidth=1.3,
+                              linestyle="-" if index == 0 else "--",
+                              label="route %d (%s, t=%.1f s)" % (index + 1, trigger, time)))
+    x, y, tolerance = goal["goal_x"], goal["goal_y"], goal.get("goal_tolerance", 0.0)
+    ax.add_patch(Circle((x, y), tolerance, fill=False, edgecolor="black", linewidth=1.0,
+                        linestyle=":", zorder=4))
+    ax.plot([x], [y], marker="*", color="gold", markeredgecolor="black", markersize=13,
+            zorder=5)
+    yaw = goal.get("goal_yaw", float("nan"))
+    if not math.isnan(yaw):
+        ax.annotate("", xy=(x + 0.35 * math.cos(yaw), y + 0.35 * math.sin(yaw)), xytext=(x, y),
+                    arrowprops=dict(arrowstyle="->", color="black", linewidth=1.2), zorder=5)
+    label = "goal (dotted: tolerance), " + (
+        "reached at t=%.1f s" % goal["time_to_goal"] if goal["reached"] else "not reached")
+    handles.append(Line2D([], [], marker="*", color="gold", markeredgecolor="black",
+                          markersize=11, linestyle="none", label=label))
+    return handles
 
 
 def check_shapes(path, run):
@@ -274,7 +329,8 @@ def sole_corners(x, y, yaw, length, width):
 
 
 def scenario_obstacles(scenario):
-    """[(outline [(x, y)], margin)] of the scenario's obstacles (circles as polygons)."""
+    """[(outline [(x, y)], margin, circle, known to the planner)] of the scenario's obstacles
+    (circles as polygons)."""
     request = scenario.get("request") if isinstance(scenario.get("request"), dict) else scenario
     obstacles = request.get("obstacles")
     shapes = []
@@ -282,21 +338,22 @@ def scenario_obstacles(scenario):
         try:
             kind = obstacle.get("type", "circle")
             margin = float(obstacle.get("margin", 0.0) or 0.0)
+            known = obstacle.get("known_to_planner", True) is not False
             if kind == "circle":
                 cx, cy = (float(v) for v in obstacle["center"])
                 radius = float(obstacle["radius"])
                 outline = [(cx + radius * math.cos(a), cy + radius * math.sin(a))
                            for a in np.linspace(0.0, 2.0 * math.pi, 64, endpoint=False)]
-                shapes.append((outline, margin, ("circle", cx, cy, radius)))
+                shapes.append((outline, margin, ("circle", cx, cy, radius), known))
             elif kind == "box":
                 cx, cy = (float(v) for v in obstacle["center"])
                 length, width = (float(v) for v in obstacle["size"])
                 outline = sole_corners(cx, cy, float(obstacle.get("yaw", 0.0) or 0.0),
                                        length, width)
-                shapes.append((outline, margin, None))
+                shapes.append((outline, margin, None, known))
             elif kind == "polygon":
                 outline = [(float(v[0]), float(v[1])) for v in obstacle["vertices"]]
-                shapes.append((outline, margin, None))
+                shapes.append((outline, margin, None, known))
         except (TypeError, KeyError, ValueError, AttributeError):
             continue
     return shapes
@@ -336,9 +393,10 @@ def convex_hull(points):
 
 
 def draw_obstacles(ax, obstacles):
-    for outline, margin, circle in obstacles:
+    for outline, margin, circle, known in obstacles:
         ax.add_patch(Polygon(outline, closed=True, facecolor=OBSTACLE_COLOUR, alpha=0.45,
-                             edgecolor=OBSTACLE_COLOUR, linewidth=1.0))
+                             edgecolor=OBSTACLE_COLOUR, linewidth=1.0,
+                             hatch=None if known else "///"))
         if margin > 0:
             ax.add_patch(Polygon(grown_outline(outline, margin, circle), closed=True, fill=False,
                                  edgecolor=OBSTACLE_COLOUR, linestyle="--", linewidth=0.8))
@@ -347,6 +405,7 @@ def draw_obstacles(ax, obstacles):
 def draw_top_view(ax, run, foot_length, foot_width, obstacles=()):
     footsteps, sides = run["footsteps"], run["footstep_side"]
     draw_obstacles(ax, obstacles)
+    goal_handles = draw_goal(ax, run["goal"]) if run.get("goal") else []
     for index, ((landing, x, y, yaw), side) in enumerate(zip(footsteps, sides)):
         colour = LEFT_COLOUR if int(side) == 1 else RIGHT_COLOUR
         ax.add_patch(Polygon(sole_corners(x, y, yaw, foot_length, foot_width), closed=True,
@@ -373,6 +432,10 @@ def draw_top_view(ax, run, foot_length, foot_width, obstacles=()):
     if obstacles:
         handles.append(Patch(facecolor=OBSTACLE_COLOUR, alpha=0.45, edgecolor=OBSTACLE_COLOUR,
                              label="obstacle (dashed: margin)"))
+    if any(not known for _, _, _, known in obstacles):
+        handles.append(Patch(facecolor="white", hatch="///", edgecolor=OBSTACLE_COLOUR,
+                             label="unknown to the planner until sensed"))
+    handles += goal_handles
     ax.legend(handles=handles, loc="best", fontsize=8, framealpha=0.85)
 
 
@@ -576,6 +639,12 @@ def draw(runs, source_path):
         draw_top_view(top, run, foot_length, foot_width, scenario_obstacles(scenario))
         draw_time_panels(right, run, scenario_pushes(scenario))
         command = describe_command(scenario)
+        if run.get("goal"):
+            goal = run["goal"]
+            command = "goal (%s, %s)" % (fmt_number(goal["goal_x"]), fmt_number(goal["goal_y"]))
+            if not math.isnan(goal.get("goal_yaw", float("nan"))):
+                command += ", yaw %s rad" % fmt_number(goal["goal_yaw"])
+            command += ", %d route%s" % (len(goal["routes"]), "" if len(goal["routes"]) == 1 else "s")
         title = "run %s" % run["name"] + ("   —   " + command if command else "")
         top.text(0.0, 1.06, title, transform=top.transAxes, fontsize=12, fontweight="bold",
                  ha="left", va="bottom")

@@ -66,7 +66,7 @@ BenchRow measure(const datasets::Scenario& scenario, const robots::RobotModel& m
   const ReplayOutcome& replay = *run.replay;
   BenchRow row;
   row.name = scenario.name;
-  row.walk_success = run.result.success;
+  row.walk_success = run.walk.result.success;
   row.ticks = analysis::tickTiming(replay.validation);
   row.walk_duration = replay.walk_duration;
   row.loop_wall_time = replay.wall_time;

@@ -22,6 +22,7 @@
 #include "wpg/planning/obstacle_checks.hpp"
 #include "wpg/planning/world.hpp"
 #endif
+#include "wpg/planning/goal_walk.hpp"
 
 namespace fs = std::filesystem;
 
@@ -58,6 +59,59 @@ void checkFilterSettings(const datasets::Scenario& scenario, const std::string& 
   }
 }
 
+void checkGoalRequest(const datasets::Scenario& scenario, const std::string& scenario_path) {
+  if (!scenario.goal.enabled) return;
+  try {
+    planning::checkGoalRequest(scenario.walking, scenario.request, scenario.goal);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(scenario_path + ": " + e.what());
+  }
+}
+
+WalkOutcome runScenarioWalk(const datasets::Scenario& scenario) {
+  WalkOutcome outcome;
+  if (!scenario.goal.enabled) {
+    outcome.result = generateWalk(scenario.walking, scenario.request);
+    return outcome;
+  }
+  planning::GoalWalkResult walk =
+      planning::walkToGoal(scenario.walking, scenario.request, scenario.goal);
+  outcome.result = std::move(walk.walk);
+  outcome.planning_time = walk.planning_time;
+  outcome.replans = walk.plans.empty() ? 0 : static_cast<int>(walk.plans.size()) - 1;
+  if (!walk.plans.empty()) outcome.route_length = walk.plans.front().plan.length;
+  datasets::GoalOutcome& goal = outcome.goal.emplace();
+  goal.goal_reached = walk.goal_reached;
+  goal.time_to_goal = walk.time_to_goal;
+  goal.final_pose = walk.final_pose;
+  goal.final_distance = walk.final_distance;
+  goal.final_yaw_error = walk.final_yaw_error;
+  goal.outcome = walk.outcome;
+  goal.status_codes = planning::planStatusCodes();
+  goal.trigger_codes = planning::planTriggerCodes();
+  for (const planning::PlanRecord& record : walk.plans) {
+    datasets::RoutePlanRecord row;
+    const planning::PlanStatistics& stats = record.plan.statistics;
+    row.time = record.time;
+    row.trigger = static_cast<int>(record.trigger);
+    row.status = static_cast<int>(record.plan.status);
+    row.start = record.start;
+    row.known_obstacles = record.known_obstacles;
+    row.planning_time = stats.time;
+    row.route_length = record.plan.length;
+    row.solution_length = stats.solution_length;
+    row.simplified_solution_length = stats.simplified_solution_length;
+    row.solution_clearance = stats.solved ? stats.solution_clearance : 0.0;
+    row.simplification_time = stats.simplification_time;
+    row.graph_states = stats.graph_states;
+    row.graph_motions = stats.graph_motions;
+    row.iterations = stats.iterations;
+    row.route = record.plan.waypoints;
+    goal.plans.push_back(std::move(row));
+  }
+  return outcome;
+}
+
 double ReplayOutcome::realTimeFactor() const {
   return analysis::realTimeFactor(walk_duration, wall_time);
 }
@@ -88,10 +142,16 @@ ScenarioRun runScenario(const robots::RobotModel* model, const datasets::Scenari
   const bool online = scenario.filter && model != nullptr &&
                       scenario.filter_loop.mode != DynamicFilterMode::kOffline;
   if (!online) {
-    run.result = generateWalk(scenario.walking, scenario.request);
-    if (model) run.replay = replayScenarioWalk(*model, scenario, run.result.trajectory, scenario.filter);
+    run.walk = runScenarioWalk(scenario);
+    if (model)
+      run.replay = replayScenarioWalk(*model, scenario, run.walk.result.trajectory, scenario.filter);
     return run;
   }
+  if (scenario.goal.enabled)
+    throw std::invalid_argument(
+        "key 'filter_settings.mode': expected offline for a scenario with a goal (the online "
+        "filter loop runs velocity-command walks only), got " +
+        std::string(dynamicFilterModeName(scenario.filter_loop.mode)));
   robots::OnlineFilterLoopSettings settings;
   settings.preview = scenario.filter_settings;
   settings.reinitialize_wpg = scenario.filter_loop.reinitialize_wpg;
@@ -105,9 +165,9 @@ ScenarioRun runScenario(const robots::RobotModel* model, const datasets::Scenari
   }
   outcome.wall_time =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  run.result = std::move(loop.walk);
+  run.walk.result = std::move(loop.walk);
   outcome.validation = std::move(loop.validation);
-  outcome.walk_duration = analysis::walkDuration(run.result.trajectory);
+  outcome.walk_duration = analysis::walkDuration(run.walk.result.trajectory);
   if (scenario.filter_loop.mode == DynamicFilterMode::kBoth) {
     // The offline pass needs the open-loop walk (the online one's CoM jumps where the WPG was
     // re-initialised): generated again without the loop.
@@ -124,7 +184,8 @@ ScenarioRun runScenario(const robots::RobotModel* model, const datasets::Scenari
 std::optional<ObstacleClearances> writeScenarioDataset(const std::string& path,
                                                        const datasets::Scenario& scenario,
                                                        const WalkResult& result,
-                                                       const MultibodyValidation* multibody) {
+                                                       const MultibodyValidation* multibody,
+                                                       const datasets::GoalOutcome* goal) {
 #ifdef WPG_CLI_WITH_PLANNING
   if (!scenario.request.obstacles.empty()) {
     const planning::World world(scenario.request.obstacles);
@@ -134,7 +195,7 @@ std::optional<ObstacleClearances> writeScenarioDataset(const std::string& path,
     clearances.clearance = report.clearance;
     clearances.clearance_obstacle = report.clearance_obstacle;
     clearances.foot_distance = report.foot_distance;
-    datasets::writeRunDataset(path, scenario, result, &clearances, multibody);
+    datasets::writeRunDataset(path, scenario, result, &clearances, multibody, goal);
     ObstacleClearances least;
     least.obstacle_count = world.obstacleCount();
     least.step_centre = report.min_centre_clearance;
@@ -143,7 +204,7 @@ std::optional<ObstacleClearances> writeScenarioDataset(const std::string& path,
     return least;
   }
 #endif
-  datasets::writeRunDataset(path, scenario, result, nullptr, multibody);
+  datasets::writeRunDataset(path, scenario, result, nullptr, multibody, goal);
   return std::nullopt;
 }
 

@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 
+#include "wpg/datasets/run_dataset.hpp"
 #include "wpg/datasets/scenario.hpp"
 #include "wpg/multibody_validation.hpp"
 #include "wpg/robots/robot_model.hpp"
@@ -25,6 +26,24 @@ robots::RobotModel loadRobotModel(const std::string& robot);
 // Throws UsageError when the scenario's filter_settings give no preview controller (the
 // Riccati iteration does not converge), naming `scenario_path`.
 void checkFilterSettings(const datasets::Scenario& scenario, const std::string& scenario_path);
+
+// Stage walk: generateWalk on the scenario's velocity command, or, when it has a goal, the walk
+// to the goal (planning/goal_walk.hpp: route planner + path follower + replanning), whose
+// plans and outcome go to the dataset.
+struct WalkOutcome {
+  WalkResult result;
+  std::optional<datasets::GoalOutcome> goal;  // set for a goal walk
+  double planning_time = 0.0;                 // [s] of the route planner, all plans
+  int replans = 0;                            // plans after the first
+  double route_length = 0.0;                  // [m] of the first route (0 without one)
+};
+
+// Throws UsageError naming `scenario_path` when the goal request does not fit the world (goal
+// or start inside a grown obstacle or out of the bounds, unknown planner): checked before
+// anything is generated or written. Nothing to check without a goal.
+void checkGoalRequest(const datasets::Scenario& scenario, const std::string& scenario_path);
+
+WalkOutcome runScenarioWalk(const datasets::Scenario& scenario);
 
 // Stage replay + filter, with the wall time it took.
 struct ReplayOutcome {
@@ -44,9 +63,11 @@ ReplayOutcome replayScenarioWalk(const robots::RobotModel& model,
 // or the online loop of the paper's Fig. 3 (robots/online_filter_loop.hpp: the walk and its
 // filter together; mode both also runs generateWalk + the offline pass, whose ZMP errors
 // go to validation.offline_*). `model` is needed (non-null) when the scenario replays.
+// A goal walk (runScenarioWalk) is filtered offline only: its online loop would need the goal
+// walk inside the filter loop (std::invalid_argument for filter_settings.mode online or both).
 // Throws std::invalid_argument for a walk the generator rejects (as generateWalk).
 struct ScenarioRun {
-  WalkResult result;
+  WalkOutcome walk;
   std::optional<ReplayOutcome> replay;
 };
 ScenarioRun runScenario(const robots::RobotModel* model, const datasets::Scenario& scenario);
@@ -63,8 +84,9 @@ struct ObstacleClearances {
 
 // Stage dataset: writeRunDataset, with the footstep clearances of the FCL world when the
 // scenario has obstacles; returns those clearances (none without obstacles).
+// `goal`: the goal walk's plans and outcome (WalkOutcome::goal), required for a goal scenario.
 std::optional<ObstacleClearances> writeScenarioDataset(
     const std::string& path, const datasets::Scenario& scenario, const WalkResult& result,
-    const MultibodyValidation* multibody = nullptr);
+    const MultibodyValidation* multibody = nullptr, const datasets::GoalOutcome* goal = nullptr);
 
 }  // namespace wpg::cli

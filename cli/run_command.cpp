@@ -1,5 +1,5 @@
-// `wpg run`: scenario file -> generateWalk (-> multibody replay and dynamic filter) -> HDF5
-// dataset (+ figure) and a short summary.
+// `wpg run`: scenario file -> generateWalk, or the walk to a goal (-> multibody replay and
+// dynamic filter) -> HDF5 dataset (+ figure) and a short summary.
 #include <unistd.h>
 
 #include <filesystem>
@@ -60,6 +60,7 @@ int runCommand(const RunOptions& options) {
     model.emplace(loadRobotModel(scenario.robot));
     if (scenario.filter) checkFilterSettings(scenario, scenario_path);
   }
+  checkGoalRequest(scenario, scenario_path);
 
   const fs::path dataset_path =
       options.output.empty() ? fs::path("out") / (scenario.name + ".h5") : fs::path(options.output);
@@ -86,7 +87,8 @@ int runCommand(const RunOptions& options) {
   } catch (const std::invalid_argument& e) {
     throw UsageError(aboutFile(scenario_path, e.what()));
   }
-  const WalkResult& result = run.result;
+  const WalkOutcome& walk = run.walk;
+  const WalkResult& result = walk.result;
   const std::optional<ReplayOutcome>& replay = run.replay;
 
   if (dataset_path.has_parent_path()) {
@@ -98,7 +100,8 @@ int runCommand(const RunOptions& options) {
   std::optional<ObstacleClearances> clearances;  // when the FCL world checked the steps
   try {
     clearances = writeScenarioDataset(dataset_path.string(), scenario, result,
-                                      replay ? &replay->validation : nullptr);
+                                      replay ? &replay->validation : nullptr,
+                                      walk.goal ? &*walk.goal : nullptr);
   } catch (const std::invalid_argument& e) {
     // an inconsistent trajectory is a bug, not bad input
     throw std::runtime_error(std::string("cannot write the dataset: ") + e.what());
@@ -106,6 +109,7 @@ int runCommand(const RunOptions& options) {
 
   printRunSummary(std::cout, scenario, analysis::summarizeRun(result.trajectory));
   if (clearances) printObstacleClearances(std::cout, *clearances);
+  if (walk.goal) printGoalSummary(std::cout, walk);
   if (replay) printMultibodySummary(std::cout, *replay);
   reportDatasetAndFigure(dataset_path.string(), figure_path.string(), options.plot);
   if (!result.success) {

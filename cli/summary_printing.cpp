@@ -52,6 +52,19 @@ void printObstacleClearances(std::ostream& out, const ObstacleClearances& cleara
       << " m; sole to obstacle " << fixed(clearances.sole_to_obstacle, 3) << " m\n";
 }
 
+void printGoalSummary(std::ostream& out, const WalkOutcome& walk) {
+  const datasets::GoalOutcome& goal = *walk.goal;
+  out << "goal      ";
+  if (goal.goal_reached) {
+    out << "reached in " << fixed(goal.time_to_goal, 1) << " s";
+  } else {
+    out << "not reached (" << goal.outcome << ")";
+  }
+  out << ", route " << fixed(walk.route_length, 1) << " m, " << walk.replans
+      << (walk.replans == 1 ? " replan" : " replans") << ", planning "
+      << fixed(1e3 * walk.planning_time, walk.planning_time < 0.01 ? 1 : 0) << " ms\n";
+}
+
 void printMultibodySummary(std::ostream& out, const ReplayOutcome& outcome) {
   const MultibodyValidation& v = outcome.validation;
   const analysis::ZmpErrorComparison zmp = analysis::compareZmpError(v);

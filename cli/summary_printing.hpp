@@ -21,6 +21,10 @@ void printRunSummary(std::ostream& out, const datasets::Scenario& scenario,
 // The line about the least clearances of the footsteps to the obstacles.
 void printObstacleClearances(std::ostream& out, const ObstacleClearances& clearances);
 
+// The line of a walk to a goal: reached or not (and why), the first route's length, the
+// replans and the planner's time over all plans.
+void printGoalSummary(std::ostream& out, const WalkOutcome& walk);
+
 // The summary lines of a replay: ZMP error before/after, IK status, timing of the chain.
 void printMultibodySummary(std::ostream& out, const ReplayOutcome& outcome);
 

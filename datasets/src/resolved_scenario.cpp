@@ -7,6 +7,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "goal_sections.hpp"
 #include "parameter_fields.hpp"
 #include "yaml_input.hpp"
 
@@ -46,18 +47,23 @@ std::string emitResolved(const Scenario& scenario) {
   emitSettingFields(out, generatorSettingFields(), generator);
   out << YAML::EndMap;
 
-  emitList(out, "reference", request.reference, [&out](const VelocityCommand& command) {
-    out << YAML::Key << "t" << YAML::Value << formatNumber(command.t);
-    out << YAML::Key << "v" << YAML::Value;
-    emitNumbers(out, command.velocity.data(), 3);
-  });
+  if (scenario.goal.enabled) {
+    emitGoalRequest(out, scenario.goal);  // instead of the velocity command
+  } else {
+    emitList(out, "reference", request.reference, [&out](const VelocityCommand& command) {
+      out << YAML::Key << "t" << YAML::Value << formatNumber(command.t);
+      out << YAML::Key << "v" << YAML::Value;
+      emitNumbers(out, command.velocity.data(), 3);
+    });
+  }
   emitList(out, "pushes", request.pushes, [&out](const Push& push) {
     out << YAML::Key << "t" << YAML::Value << formatNumber(push.t);
     out << YAML::Key << "force" << YAML::Value;
     emitNumbers(out, push.force.data(), 2);
     out << YAML::Key << "duration" << YAML::Value << formatNumber(push.duration);
   });
-  emitList(out, "obstacles", request.obstacles, [&out](const Obstacle& obstacle) {
+  std::size_t obstacle_index = 0;
+  emitList(out, "obstacles", request.obstacles, [&](const Obstacle& obstacle) {
     out << YAML::Key << "type" << YAML::Value << obstacleTypeName(obstacle.type);
     if (obstacle.type == ObstacleType::kPolygon) {
       out << YAML::Key << "vertices" << YAML::Value << YAML::Flow << YAML::BeginSeq;
@@ -76,6 +82,10 @@ std::string emitResolved(const Scenario& scenario) {
       out << YAML::Key << "yaw" << YAML::Value << formatNumber(obstacle.yaw);
     }
     out << YAML::Key << "margin" << YAML::Value << formatNumber(obstacle.margin);
+    // Written only where false, so that scenarios without goals read as before.
+    if (!scenario.goal.knownToPlanner(obstacle_index++)) {
+      out << YAML::Key << "known_to_planner" << YAML::Value << false;
+    }
   });
 
   out << YAML::Key << "replay" << YAML::Value << scenario.replay;

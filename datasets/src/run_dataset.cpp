@@ -21,6 +21,7 @@
 
 #include <H5Cpp.h>
 
+#include "goal_dataset.hpp"
 #include "hdf5_writing.hpp"
 #include "run_checks.hpp"
 #include "wpg/obstacles.hpp"
@@ -487,7 +488,8 @@ void writeMultibody(H5::Group& run, const Scenario& scenario, const MultibodyVal
 }
 
 void writeFile(const std::string& file_path, const Scenario& scenario, const WalkResult& result,
-               const FootstepClearances* clearances, const MultibodyValidation* multibody) {
+               const FootstepClearances* clearances, const MultibodyValidation* multibody,
+               const GoalOutcome* goal) {
   H5::H5File file(file_path, H5F_ACC_TRUNC);
   writeIntAttribute(file, "schema_version", kRunDatasetSchemaVersion);
   writeStringAttribute(file, "wpg_version", WPG_VERSION_STRING);
@@ -506,6 +508,7 @@ void writeFile(const std::string& file_path, const Scenario& scenario, const Wal
   writeObstacles(run, scenario.request.obstacles);
   writeChecks(run, computeRunChecks(scenario, result.trajectory, clearances), clearances);
   if (multibody) writeMultibody(run, scenario, *multibody);
+  if (goal) writeGoal(run, scenario, *goal);
   file.close();  // inside the try of the caller: a failed flush is an error, not a warning
 }
 
@@ -513,11 +516,14 @@ void writeFile(const std::string& file_path, const Scenario& scenario, const Wal
 
 void writeRunDataset(const std::string& path, const Scenario& scenario,
                      const wpg::WalkResult& result, const FootstepClearances* clearances,
-                     const wpg::MultibodyValidation* multibody) {
+                     const wpg::MultibodyValidation* multibody, const GoalOutcome* goal) {
   checkSizes(result.trajectory);
   if (clearances) checkClearanceSizes(*clearances, result.trajectory);
   if (multibody) checkMultibodySizes(*multibody, result.trajectory);
   checkGroupName(scenario.name);
+  if (goal && !scenario.goal.enabled) {
+    throw std::invalid_argument("writeRunDataset: a goal outcome for a scenario without a goal");
+  }
   const fs::path target(path);
   if (path.empty() || !target.has_filename()) {
     throw std::invalid_argument("writeRunDataset: '" + path + "' is not a file path");
@@ -537,7 +543,7 @@ void writeRunDataset(const std::string& path, const Scenario& scenario,
   std::lock_guard<std::mutex> lock(hdf5Mutex());
   H5::Exception::dontPrint();  // errors become exceptions with messages, not stderr dumps
   try {
-    writeFile(temporary, scenario, result, clearances, multibody);
+    writeFile(temporary, scenario, result, clearances, multibody, goal);
   } catch (const H5::Exception& error) {
     std::remove(temporary.c_str());
     throw std::runtime_error(path + ": cannot write the HDF5 file (" + error.getFuncName() +

@@ -14,6 +14,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "goal_sections.hpp"
 #include "parameter_fields.hpp"
 #include "resolved_scenario.hpp"
 #include "scenario_overrides.hpp"
@@ -109,9 +110,28 @@ Scenario loadScenarioTree(YAML::Node root, const std::string& path,
                                                  "a positive mass in kg", source);
     }
     scenario.request.generator = readGenerator(entry(entries, "generator"), source);
-    scenario.request.reference = readReference(entry(entries, "reference"), source);
+    // A goal replaces the velocity command: the path follower gives it (issue 10).
+    const bool has_goal = present(entries, "goal");
+    if (has_goal && entry(entries, "reference").IsDefined()) {
+      source.failWith("reference", "expected either 'goal' or 'reference', not both (the path "
+                                   "follower gives a goal walk's velocity command)");
+    }
+    if (!has_goal && entry(entries, "planner").IsDefined()) {
+      source.failWith("planner", "expected only with a 'goal' (the route planner serves walks "
+                                 "to a goal)");
+    }
+    if (!has_goal) {
+      scenario.request.reference = readReference(entry(entries, "reference"), source);
+    }
     scenario.request.pushes = readPushes(entry(entries, "pushes"), source);
-    scenario.request.obstacles = readObstacles(entry(entries, "obstacles"), source);
+    std::vector<bool> known_to_planner;
+    scenario.request.obstacles =
+        readObstacles(entry(entries, "obstacles"), source, &known_to_planner);
+    if (has_goal) {
+      scenario.goal = readGoalRequest(entry(entries, "goal"), entry(entries, "planner"),
+                                      scenario.walking, source);
+      scenario.goal.known_to_planner = known_to_planner;
+    }
     if (present(entries, "filter")) {
       scenario.filter = readBoolean(entry(entries, "filter"), "filter", "true or false", source);
     }
@@ -139,6 +159,11 @@ Scenario loadScenarioTree(YAML::Node root, const std::string& path,
     scenario.request.validate();
   } catch (const std::invalid_argument& error) {
     source.failFile(std::string("invalid walk request: ") + error.what());
+  }
+  try {
+    scenario.goal.validate();
+  } catch (const std::invalid_argument& error) {
+    source.failFile(error.what());
   }
 
   scenario.resolved_yaml = emitResolved(scenario);

@@ -53,7 +53,8 @@ void validateObstacle(const Obstacle& obstacle, const std::string& key, const So
 }
 
 // One entry of `obstacles:`; the keys depend on the type, read first.
-Obstacle readObstacle(const YAML::Node& item, const std::string& key, const Source& source) {
+Obstacle readObstacle(const YAML::Node& item, const std::string& key, const Source& source,
+                      bool* known_to_planner) {
   const std::string map_expected = "a map {type: circle, box or polygon, ...} (SCENARIOS.md)";
   if (!item.IsMap()) source.fail(key, map_expected, item);
   // (A missing key of a const map is an invalid node: replace it by an undefined one.)
@@ -65,13 +66,13 @@ Obstacle readObstacle(const YAML::Node& item, const std::string& key, const Sour
   const std::string type = type_node.IsScalar() ? type_node.Scalar() : "";
   if (type == "circle") {
     obstacle.type = ObstacleType::kCircle;
-    keys = {"type", "center", "radius", "margin"};
+    keys = {"type", "center", "radius", "margin", "known_to_planner"};
   } else if (type == "box") {
     obstacle.type = ObstacleType::kBox;
-    keys = {"type", "center", "size", "yaw", "margin"};
+    keys = {"type", "center", "size", "yaw", "margin", "known_to_planner"};
   } else if (type == "polygon") {
     obstacle.type = ObstacleType::kPolygon;
-    keys = {"type", "vertices", "margin"};
+    keys = {"type", "vertices", "margin", "known_to_planner"};
   } else {
     source.fail(key + ".type", "circle, box or polygon", type_node);
   }
@@ -109,6 +110,13 @@ Obstacle readObstacle(const YAML::Node& item, const std::string& key, const Sour
     obstacle.margin = readNumberAtLeast(entry(entries, "margin"), key + ".margin", 0.0,
                                         "a distance >= 0 in m", source);
   }
+  // Goal walks (issue 10): an obstacle the route planner learns of only once sensed; the NMPC
+  // avoids it either way.
+  *known_to_planner = true;
+  if (present(entries, "known_to_planner")) {
+    *known_to_planner = readBoolean(entry(entries, "known_to_planner"), key + ".known_to_planner",
+                                    "true or false", source);
+  }
   validateObstacle(obstacle, key, source);
   return obstacle;
 }
@@ -118,7 +126,8 @@ Obstacle readObstacle(const YAML::Node& item, const std::string& key, const Sour
 const std::vector<std::string>& topLevelKeys() {
   static const std::vector<std::string> keys = {
       "name",   "robot",     "duration", "robot_mass", "generator",      "reference",
-      "pushes", "obstacles", "walking",  "replay",     "filter",         "filter_settings"};
+      "pushes", "obstacles", "walking",  "replay",     "filter",         "filter_settings",
+      "goal",   "planner"};
   return keys;
 }
 
@@ -211,12 +220,18 @@ std::vector<Push> readPushes(const YAML::Node& node, const Source& source) {
                         read_push);
 }
 
-std::vector<Obstacle> readObstacles(const YAML::Node& node, const Source& source) {
+std::vector<Obstacle> readObstacles(const YAML::Node& node, const Source& source,
+                                    std::vector<bool>* known_to_planner) {
+  if (known_to_planner) known_to_planner->clear();
   return readList<Obstacle>(
       node, "obstacles", /*optional=*/true,
       "a list of obstacles such as {type: circle, center: [x, y], radius: r, margin: m}", source,
-      [&source](const YAML::Node& item, const std::string& key, const std::vector<Obstacle>&) {
-        return readObstacle(item, key, source);
+      [&source, known_to_planner](const YAML::Node& item, const std::string& key,
+                                  const std::vector<Obstacle>&) {
+        bool known = true;
+        Obstacle obstacle = readObstacle(item, key, source, &known);
+        if (known_to_planner) known_to_planner->push_back(known);
+        return obstacle;
       });
 }
 

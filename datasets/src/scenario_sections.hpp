@@ -29,8 +29,10 @@ PreviewControlSettings readFilterSettings(const YAML::Node& node, const Source& 
 std::vector<VelocityCommand> readReference(const YAML::Node& node, const Source& source);
 // `pushes:` (optional).
 std::vector<Push> readPushes(const YAML::Node& node, const Source& source);
-// `obstacles:` (optional): circles, boxes, convex polygons (paper Sec. III-D).
-std::vector<Obstacle> readObstacles(const YAML::Node& node, const Source& source);
+// `obstacles:` (optional): circles, boxes, convex polygons (paper Sec. III-D);
+// `known_to_planner` (optional, may be null) receives each one's `known_to_planner:` flag.
+std::vector<Obstacle> readObstacles(const YAML::Node& node, const Source& source,
+                                    std::vector<bool>* known_to_planner = nullptr);
 
 // --- the robot: robots/<robot>/walking.yaml ------------------------------------------------
 

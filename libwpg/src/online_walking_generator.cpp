@@ -156,13 +156,13 @@ void OnlineWalkingGenerator::previewReference(int ticks, WalkTrajectory& out) co
     if (gait.endSample(planned_step(step_offset), start).step_completed) ++step_offset;
     ++jerk_offset;
     const bool was_swinging = swinging;
-    gait.beginSample(command);
+    gait.beginSample(command, Eigen::Vector2d(cx(0) + cx(1) / omega0_, cy(0) + cy(1) / omega0_));
     swinging = gait.swinging();
     if (!swinging) continue;
     swing_side = otherSide(gait.supportSide());
     const int m = gait.phaseSample();
     if (!was_swinging) {  // a new swing: its polynomial from the lift-off pose (runNmpcSample)
-      swing.start(gait.footPose(swing_side), start - m * w.sampling_period,
+      swing.start(gait.footPose(swing_side), start - (m - gait.liftOffSample()) * w.sampling_period,
                   start + (w.stepSamples() - 1 - m) * w.sampling_period, w.step_height);
     }
     swing.replan(start, planned_step(step_offset));

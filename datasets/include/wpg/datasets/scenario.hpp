@@ -9,6 +9,7 @@
 #include "wpg/datasets/input_error.hpp"
 #include "wpg/dynamic_filter.hpp"
 #include "wpg/preview_control.hpp"
+#include "wpg/walk_goal.hpp"
 #include "wpg/walk_request.hpp"
 #include "wpg/walking_parameters.hpp"
 
@@ -23,6 +24,10 @@ struct Scenario {
   // duration, reference, pushes, generator; robot_mass from the robot's `mass` unless the
   // scenario sets `robot_mass`.
   wpg::WalkRequest request;
+  // `goal:` and `planner:` (issue 10): a walk to a goal, its velocity command from the route
+  // planner and the path follower (planning/goal_walk.hpp) instead of `reference:`
+  // (goal.enabled false without a `goal:`); known_to_planner from the obstacles' flags.
+  wpg::GoalRequest goal;
   // The multibody side (paper Sec. IV): `replay:` replays the walk on the robot's multibody
   // model (IK + inverse dynamics, the multibody ZMP), `filter:` also runs the dynamic filter
   // (preview control on the ZMP error) with `filter_settings:`. filter implies replay.

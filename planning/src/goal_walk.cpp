@@ -1,0 +1,395 @@
+// The walk to a goal: route planner + path follower + online generator (goal_walk.hpp).
+#include "wpg/planning/goal_walk.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <stdexcept>
+
+#include "wpg/online_walking_generator.hpp"
+
+namespace wpg::planning {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+// A route is checked for a newly sensed obstacle every this many metres [m].
+constexpr double kRouteCheckSpacing = 0.02;
+// Strayed from the route: at most one replan per this time [s], so that a robot held off its
+// route by an obstacle the planner does not know yet does not replan at every sample.
+constexpr double kStrayedReplanInterval = 1.0;
+// A start inside a grown obstacle (the NMPC lets the CoM come closer than the footprint disc)
+// is moved out along the obstacle's gradient by steps of this [m], at most kEscapeReach.
+constexpr double kEscapeStep = 0.02;
+constexpr double kEscapeReach = 1.0;
+// Stops outside the tolerance after which a new route is planned from where the robot stands.
+constexpr int kMaxStopRetries = 3;
+// planner.algorithm for no planner: the follower walks the straight line to the goal and never
+// replans (the `nmpc_only` baseline of the comparison studies: the NMPC alone meets the
+// obstacles).
+constexpr const char* kNoPlanner = "none";
+
+void record(const ControlSample& s, WalkTrajectory& out) {
+  // The same columns as generateWalk records (walk_generator.cpp), one row per control period.
+  out.time.push_back(s.time);
+  out.com.push_back(s.com_position);
+  out.com_vel.push_back(s.com_velocity);
+  out.com_acc.push_back(s.com_acceleration);
+  out.cop.push_back(s.cop);
+  out.left_foot.push_back(s.left_foot);
+  out.right_foot.push_back(s.right_foot);
+  out.free_flyer_yaw.push_back(s.free_flyer_yaw);
+  out.support.push_back(s.support);
+}
+
+std::string format(double value, int digits = 2) {
+  char text[64];
+  std::snprintf(text, sizeof(text), "%.*f", digits, value);
+  return text;
+}
+
+// The obstacles the planner knows: the known ones and those sensed so far.
+std::vector<wpg::Obstacle> knownObstacles(const wpg::WalkRequest& request,
+                                          const std::vector<bool>& known) {
+  std::vector<wpg::Obstacle> obstacles;
+  for (std::size_t i = 0; i < request.obstacles.size(); ++i) {
+    if (known[i]) obstacles.push_back(request.obstacles[i]);
+  }
+  return obstacles;
+}
+
+// Moves `point` out of the grown obstacles (footprint disc of `radius`) along the nearest
+// obstacle's gradient; returns false when it cannot within kEscapeReach.
+bool escape(const World& world, double radius, Eigen::Vector2d* point) {
+  for (double moved = 0.0; moved <= kEscapeReach; moved += kEscapeStep) {
+    if (world.isStateValid(point->x(), point->y(), radius)) return true;
+    int nearest = -1;
+    world.clearance(*point, &nearest);
+    if (nearest < 0) return false;
+    Eigen::Vector2d gradient;
+    world.signedDistance(nearest, *point, &gradient);
+    *point += kEscapeStep * gradient;
+  }
+  return world.isStateValid(point->x(), point->y(), radius);
+}
+
+// Whether the route from arc length `from` on enters obstacle `obstacle` grown by its margin
+// and the footprint radius.
+bool routeBlocked(const std::vector<Eigen::Vector2d>& route, double from, const World& single,
+                  double radius) {
+  double s = 0.0;
+  for (std::size_t i = 1; i < route.size(); ++i) {
+    const Eigen::Vector2d a = route[i - 1], b = route[i];
+    const double length = (b - a).norm();
+    const int pieces = std::max(1, static_cast<int>(std::ceil(length / kRouteCheckSpacing)));
+    for (int k = 0; k <= pieces; ++k) {
+      const double u = static_cast<double>(k) / pieces;
+      if (s + u * length < from) continue;
+      const Eigen::Vector2d p = a + u * (b - a);
+      if (!single.isStateValid(p.x(), p.y(), radius)) return true;
+    }
+    s += length;
+  }
+  return false;
+}
+
+}  // namespace
+
+const char* planTriggerName(PlanTrigger trigger) {
+  switch (trigger) {
+    case PlanTrigger::kStart:
+      return "start";
+    case PlanTrigger::kStrayed:
+      return "strayed";
+    case PlanTrigger::kBlocked:
+      return "blocked";
+    case PlanTrigger::kRetry:
+      return "retry";
+  }
+  return "unknown";
+}
+
+std::string planTriggerCodes() {
+  std::string codes;
+  for (int code = 0; code <= static_cast<int>(PlanTrigger::kRetry); ++code) {
+    codes += (codes.empty() ? "" : ", ") + std::to_string(code) + "=" +
+             planTriggerName(static_cast<PlanTrigger>(code));
+  }
+  return codes;
+}
+
+double plannerRobotRadius(const wpg::WalkingParameters& parameters,
+                          const wpg::RoutePlannerSettings& settings) {
+  if (settings.robot_radius > 0.0) return settings.robot_radius;
+  return wpg::defaultRobotRadius(parameters.initial_foot_separation, parameters.foot_length,
+                                 parameters.foot_width);
+}
+
+void checkGoalRequest(const wpg::WalkingParameters& parameters, const wpg::WalkRequest& request,
+                      const wpg::GoalRequest& goal) {
+  goal.validate();
+  if (goal.planner.algorithm != kNoPlanner && !isKnownPlanner(goal.planner.algorithm)) {
+    std::string names = kNoPlanner;
+    for (const std::string& name : plannerNames()) names += ", " + name;
+    throw std::invalid_argument("'planner.algorithm': expected one of " + names + ", got '" +
+                                goal.planner.algorithm + "'");
+  }
+  if (!goal.known_to_planner.empty() && goal.known_to_planner.size() != request.obstacles.size()) {
+    throw std::invalid_argument("known_to_planner: expected one entry per obstacle");
+  }
+  const double radius = plannerRobotRadius(parameters, goal.planner);
+  const Eigen::Vector2d start = Eigen::Vector2d::Zero();  // the walk starts at the origin
+  const PlanningBounds bounds =
+      planningBounds(request.obstacles, start, goal.goal.position, goal.planner);
+  const World world(request.obstacles);
+  const std::string area = "[" + format(bounds.min.x()) + ", " + format(bounds.max.x()) + "] x [" +
+                           format(bounds.min.y()) + ", " + format(bounds.max.y()) + "]";
+  const Eigen::Vector2d& target = goal.goal.position;
+  if (!bounds.contains(target)) {
+    throw std::invalid_argument("'goal.position': expected a goal inside planner.bounds " + area +
+                                ", got [" + format(target.x()) + ", " + format(target.y()) + "]");
+  }
+  if (!bounds.contains(start)) {
+    throw std::invalid_argument("'planner.bounds': expected " + area +
+                                " to hold the start of the walk (the origin)");
+  }
+  int nearest = -1;
+  double clearance = world.clearance(target, &nearest);
+  if (clearance < radius) {
+    throw std::invalid_argument(
+        "'goal.position': expected a goal clear of every obstacle grown by its margin and the "
+        "robot radius " +
+        format(radius, 3) + " m, but [" + format(target.x()) + ", " + format(target.y()) + "] is " +
+        format(radius - clearance, 3) + " m inside obstacles[" + std::to_string(nearest) + "]");
+  }
+  clearance = world.clearance(start, &nearest);
+  if (clearance < radius) {
+    throw std::invalid_argument(
+        "'obstacles[" + std::to_string(nearest) +
+        "]': expected the start of the walk (the "
+        "origin) clear of the obstacle grown by its margin and the robot radius " +
+        format(radius, 3) + " m, but the start is " + format(radius - clearance, 3) + " m inside");
+  }
+}
+
+GoalWalkResult walkToGoal(const wpg::WalkingParameters& parameters, const wpg::WalkRequest& request,
+                          const wpg::GoalRequest& goal,
+                          const PathFollowerSettings& follower_settings) {
+  parameters.validate();
+  request.validate();
+  if (!goal.enabled) throw std::invalid_argument("walkToGoal: the goal request is not enabled");
+  checkGoalRequest(parameters, request, goal);
+
+  OnlineWalkingGenerator generator(parameters, request.generator);
+  if (!request.obstacles.empty()) generator.setObstacles(request.obstacles);
+  const double radius = plannerRobotRadius(parameters, goal.planner);
+  const PlanningBounds bounds =
+      planningBounds(request.obstacles, Eigen::Vector2d::Zero(), goal.goal.position, goal.planner);
+  std::vector<bool> known(request.obstacles.size());
+  for (std::size_t i = 0; i < known.size(); ++i) known[i] = goal.knownToPlanner(i);
+  // Each unknown obstacle alone, to test whether it blocks the route once sensed.
+  std::vector<World> single_worlds;
+  for (const wpg::Obstacle& obstacle : request.obstacles)
+    single_worlds.emplace_back(std::vector<wpg::Obstacle>{obstacle});
+
+  PathFollowerSettings settings = follower_settings;
+  settings.lookahead = goal.planner.lookahead;
+  PathFollower follower(parameters, goal.goal, settings);
+
+  GoalWalkResult result;
+  result.time_to_goal = kNaN;
+  WalkResult& walk = result.walk;
+  WalkTrajectory& out = walk.trajectory;
+  const double T = parameters.sampling_period;
+  const int sub_samples = static_cast<int>(std::lround(T / parameters.control_period));
+  const int iterations = static_cast<int>(std::lround(request.duration / T));
+  out.reserve(static_cast<std::size_t>(iterations) * sub_samples + 1, iterations);
+  out.constraint_families = generator.patternGenerator().model().familyInfo();
+  for (FootSide side : {FootSide::kLeft, FootSide::kRight})
+    out.footsteps.push_back({0.0, generator.patternGenerator().footPose(side), side});
+
+  const bool no_planner = goal.planner.algorithm == kNoPlanner;
+  // Plans a route from the robot's pose; false (and the outcome set) when there is none.
+  const auto plan = [&](double time, PlanTrigger trigger, const Eigen::Vector3d& pose) {
+    PlanRecord record;
+    record.time = time;
+    record.trigger = trigger;
+    record.start = pose;
+    if (no_planner) {  // the straight line, whatever is on it
+      const Eigen::Vector2d to = goal.goal.position;
+      const double heading = std::atan2(to.y() - pose.y(), to.x() - pose.x());
+      record.plan.status = PlanStatus::kExactSolution;
+      record.plan.waypoints = {Eigen::Vector3d(pose.x(), pose.y(), heading),
+                               Eigen::Vector3d(to.x(), to.y(), heading)};
+      record.plan.length = (to - pose.head<2>()).norm();
+      follower.setRoute({pose.head<2>(), to});
+      result.plans.push_back(std::move(record));
+      return true;
+    }
+    const RoutePlanner planner(World(knownObstacles(request, known)), goal.planner, radius, bounds);
+    for (const bool k : known) record.known_obstacles += k ? 1 : 0;
+    Eigen::Vector2d from = pose.head<2>();
+    const bool escaped = escape(planner.world(), radius, &from);
+    const Eigen::Vector2d to = goal.goal.position;
+    const double goal_yaw =
+        goal.goal.has_yaw ? goal.goal.yaw : std::atan2(to.y() - from.y(), to.x() - from.x());
+    if (escaped) {
+      const std::uint32_t seed =
+          goal.planner.seed + static_cast<std::uint32_t>(result.plans.size());
+      record.plan = planner.plan(Eigen::Vector3d(from.x(), from.y(), pose.z()),
+                                 Eigen::Vector3d(to.x(), to.y(), goal_yaw), seed);
+    } else {
+      record.plan.status = PlanStatus::kInvalidStart;
+    }
+    result.planning_time += record.plan.statistics.time;
+    const bool ok = record.plan.status == PlanStatus::kExactSolution;
+    if (ok) {
+      std::vector<Eigen::Vector2d> route;
+      if ((from - pose.head<2>()).norm() > 1e-9) {
+        // Moved out of a grown obstacle: the route starts where the robot is.
+        route.push_back(pose.head<2>());
+        record.plan.waypoints.insert(record.plan.waypoints.begin(), pose);
+        record.plan.length += (from - pose.head<2>()).norm();
+      }
+      for (const Eigen::Vector3d& w : record.plan.waypoints) {
+        if (route.empty() || (w.head<2>() - route.back()).norm() > 1e-9)
+          route.push_back(w.head<2>());
+      }
+      if (route.size() < 2) route.push_back(to);
+      follower.setRoute(route);
+    } else {
+      result.outcome = std::string("no route at t = ") + format(time) + " s from [" +
+                       format(pose.x()) + ", " + format(pose.y()) + "] (" +
+                       planTriggerName(trigger) + " plan: " + planStatusName(record.plan.status) +
+                       ")";
+    }
+    result.plans.push_back(std::move(record));
+    return ok;
+  };
+
+  bool fallen = false, finished = false, no_route = false;
+  double last_strayed_replan = -kStrayedReplanInterval;
+  int stop_retries = 0;
+  for (int k = 0; k < iterations && !fallen && !finished; ++k) {
+    const double t = k * T;
+    const ControlSample& now = generator.currentSample();
+    const Eigen::Vector2d position = now.com_position.head<2>();
+    const double yaw = now.free_flyer_yaw;
+    const double frame_yaw = parameters.heading_reference == HeadingReference::kCommand
+                                 ? generator.patternGenerator().commandedHeading()
+                                 : yaw;
+    Eigen::Vector3d command = Eigen::Vector3d::Zero();
+    if (!no_route) {
+      if (k == 0) {
+        no_route = !plan(t, PlanTrigger::kStart, Eigen::Vector3d(position.x(), position.y(), yaw));
+      } else if (follower.phase() == FollowerPhase::kFollow && !no_planner) {
+        // Sensing: unknown obstacles within range become known; replan if one blocks the route.
+        bool blocked = false;
+        for (std::size_t i = 0; i < known.size(); ++i) {
+          if (known[i]) continue;
+          const World& single = single_worlds[i];
+          if (single.clearance(position) > goal.planner.sensing_range) continue;
+          known[i] = true;
+          blocked = blocked || routeBlocked(follower.route(), follower.progress(), single, radius);
+        }
+        const Eigen::Vector3d pose(position.x(), position.y(), yaw);
+        if (blocked) {
+          no_route = !plan(t, PlanTrigger::kBlocked, pose);
+        } else if (follower.distanceToRoute(position) > goal.planner.replan_distance &&
+                   t - last_strayed_replan >= kStrayedReplanInterval) {
+          last_strayed_replan = t;
+          no_route = !plan(t, PlanTrigger::kStrayed, pose);
+        }
+      }
+      if (!no_route && follower.phase() == FollowerPhase::kStop &&
+          generator.patternGenerator().standing()) {
+        // Standing after the final side-by-side step: the pose between the ankles.
+        const Eigen::Vector2d stand = 0.5 * (now.left_foot.head<2>() + now.right_foot.head<2>());
+        if (follower.atGoal(stand, yaw)) {
+          result.goal_reached = true;
+          result.time_to_goal = t;
+          finished = true;
+          break;
+        }
+        if (++stop_retries > kMaxStopRetries) {
+          result.outcome =
+              "stopped outside the tolerance " + std::to_string(stop_retries) + " times";
+          no_route = true;
+        } else {
+          no_route = !plan(t, PlanTrigger::kRetry, Eigen::Vector3d(stand.x(), stand.y(), yaw));
+        }
+      }
+      if (!no_route) command = follower.command(position, yaw, frame_yaw);
+    }
+    if (no_route && generator.patternGenerator().standing() && k > 0) {
+      finished = true;  // nothing more will happen: the robot stands where the route ended
+      break;
+    }
+    generator.setCommand(command);
+    for (int i = 0; i < sub_samples; ++i) {
+      generator.setPushAcceleration(request.pushAccelerationAt(generator.time()));
+      const ControlSample& sample = generator.step();
+      if (generator.fallen()) {
+        out.mpc.push_back(generator.lastIteration());
+        walk.success = false;
+        walk.message = "the robot fell at t = " + std::to_string(sample.time) +
+                       " s: capture point " + std::to_string(generator.captureDistance()) +
+                       " m from the nearest foot (limit " +
+                       std::to_string(request.generator.fall_capture_distance) + " m)";
+        record(sample, out);
+        fallen = true;
+        break;
+      }
+      if (sample.nmpc_sample) {
+        const MpcIterationLog& log = generator.lastIteration();
+        out.mpc.push_back(log);
+        if (walk.success && iterationStatusFailsWalk(log.status)) {
+          walk.success = false;
+          walk.message = std::string("NMPC iteration at t = ") + std::to_string(sample.time) +
+                         " s ended with status '" + iterationStatusName(log.status) + "'";
+        }
+      }
+      record(sample, out);
+      if (generator.landed()) out.footsteps.push_back(generator.lastLanding());
+    }
+  }
+  // Steps landed inside a margin (relaxed obstacle rows) fail the walk, as in generateWalk.
+  if (walk.success && generator.obstacleDistance()) {
+    for (const Footstep& step : out.footsteps) {
+      if (step.landing_time <= 0.0) continue;
+      for (int o = 0; o < static_cast<int>(request.obstacles.size()) && walk.success; ++o) {
+        const double clearance =
+            stepCentreClearance(*generator.obstacleDistance(), o, request.obstacles[o].margin,
+                                step.pose.head<2>(), parameters.obstacle_foot_radius);
+        if (clearance < -1e-6) {
+          walk.success = false;
+          walk.message = "the step landing at t = " + std::to_string(step.landing_time) + " s is " +
+                         std::to_string(-clearance) + " m inside obstacle " + std::to_string(o) +
+                         "'s margin (its constraint had to be relaxed)";
+        }
+      }
+    }
+  }
+  const ControlSample& last = generator.currentSample();
+  if (!fallen) record(last, out);
+  const Eigen::Vector2d stand = 0.5 * (last.left_foot.head<2>() + last.right_foot.head<2>());
+  result.final_pose = Eigen::Vector3d(stand.x(), stand.y(), last.free_flyer_yaw);
+  result.final_distance = (stand - goal.goal.position).norm();
+  result.final_yaw_error =
+      goal.goal.has_yaw ? std::abs(wrapAngle(last.free_flyer_yaw - goal.goal.yaw)) : 0.0;
+  if (!result.goal_reached && walk.success) {
+    walk.success = false;  // the dataset's success and message say why the goal was missed
+    walk.message = "goal not reached: " +
+                   (result.outcome.empty() ? std::string("out of time") : result.outcome);
+  }
+  if (result.goal_reached) {
+    result.outcome = "reached";
+  } else if (fallen) {
+    result.outcome = "fell: " + walk.message;
+  } else if (result.outcome.empty()) {
+    result.outcome = "out of time: " + format(result.final_distance) + " m from the goal after " +
+                     format(request.duration, 1) + " s";
+  }
+  return result;
+}
+
+}  // namespace wpg::planning
