@@ -69,6 +69,21 @@ struct BenchOptions {
 };
 int benchCommand(const BenchOptions& options);
 
+struct BatchOptions {
+  std::string study;   // STUDY.yaml
+  std::string output;  // OUT.h5
+  int threads = 1;     // -j
+  bool resume = false;
+  bool plot = true;
+};
+int batchCommand(const BatchOptions& options);
+
+struct AnalyzeOptions {
+  std::string input;               // a run or batch file
+  std::string format = "table";    // table, csv or json
+};
+int analyzeCommand(const AnalyzeOptions& options);
+
 struct PlotOptions {
   std::string input;
   std::string output;  // empty: the input with its extension replaced by .png

@@ -22,6 +22,7 @@
 #include <H5Cpp.h>
 
 #include "hdf5_writing.hpp"
+#include "run_group_writing.hpp"
 #include "run_checks.hpp"
 #include "wpg/obstacles.hpp"
 #include <unistd.h>
@@ -461,7 +462,27 @@ void writeFile(const std::string& file_path, const Scenario& scenario, const Wal
   writeStringAttribute(file, "created_by", "wpg");  // wpg run, wpg replay or a program of yours
 
   H5::Group runs = file.createGroup("runs");
-  H5::Group run = runs.createGroup(scenario.name);
+  writeRunGroup(runs, scenario.name, scenario, result, clearances, multibody);
+  file.close();  // inside the try of the caller: a failed flush is an error, not a warning
+}
+
+}  // namespace
+
+namespace detail {
+
+void checkRunInputs(const Scenario& scenario, const wpg::WalkResult& result,
+                    const FootstepClearances* clearances,
+                    const wpg::MultibodyValidation* multibody) {
+  checkSizes(result.trajectory);
+  if (clearances) checkClearanceSizes(*clearances, result.trajectory);
+  if (multibody) checkMultibodySizes(*multibody, result.trajectory);
+  checkGroupName(scenario.name);
+}
+
+H5::Group writeRunGroup(H5::Group& runs, const std::string& group_name, const Scenario& scenario,
+                        const WalkResult& result, const FootstepClearances* clearances,
+                        const MultibodyValidation* multibody) {
+  H5::Group run = runs.createGroup(group_name);
   writeStringAttribute(run, "algorithm",
                        generatorAlgorithmName(scenario.request.generator.algorithm));
   writeIntAttribute(run, "success", result.success ? 1 : 0);
@@ -472,18 +493,15 @@ void writeFile(const std::string& file_path, const Scenario& scenario, const Wal
   writeObstacles(run, scenario.request.obstacles);
   writeChecks(run, computeRunChecks(scenario, result.trajectory, clearances), clearances);
   if (multibody) writeMultibody(run, scenario, *multibody);
-  file.close();  // inside the try of the caller: a failed flush is an error, not a warning
+  return run;
 }
 
-}  // namespace
+}  // namespace detail
 
 void writeRunDataset(const std::string& path, const Scenario& scenario,
                      const wpg::WalkResult& result, const FootstepClearances* clearances,
                      const wpg::MultibodyValidation* multibody) {
-  checkSizes(result.trajectory);
-  if (clearances) checkClearanceSizes(*clearances, result.trajectory);
-  if (multibody) checkMultibodySizes(*multibody, result.trajectory);
-  checkGroupName(scenario.name);
+  checkRunInputs(scenario, result, clearances, multibody);
   const fs::path target(path);
   if (path.empty() || !target.has_filename()) {
     throw std::invalid_argument("writeRunDataset: '" + path + "' is not a file path");
