@@ -315,9 +315,10 @@ void BatchDatasetWriter::write(const BatchRunRecord& record) {
     }
     writeStringListAttribute(group, "swept_keys", keys);
     group.close();
-    // The group first, flushed; then its row and `done`, flushed: a kill in between leaves a
-    // group without `done`, which --resume removes and runs again.
-    h.file.flush(H5F_SCOPE_GLOBAL);
+    // One flush per run, after the group, its row and `done`: until it, the file on disk is the
+    // one of the last flush (the metadata lives in HDF5's cache; the summary is written in
+    // place). Should the cache spill a new group's metadata earlier, the group has no `done`
+    // and --resume removes it and runs it again.
     const hsize_t row = run.index;
     for (std::size_t c = 0; c < columns_.size(); ++c) {
       if (columns_[c].integer) {
