@@ -258,8 +258,14 @@ Study loadStudy(const std::string& path, const BaseResolver& resolve_base,
       run.scenario.walking.validate();
       run.scenario.request.validate();
     } catch (const std::exception& e) {  // InputError, or invalid_argument of validate()
-      throw InputError(path + ": run " + std::to_string(index) + " (" + described +
-                       "): " + detail::oneLine(e.what()));
+      // The loader calls the swept values --set overrides; here they come from the sweep.
+      std::string message = detail::oneLine(e.what());
+      for (std::size_t at = message.find("--set '"); at != std::string::npos;
+           at = message.find("--set '", at)) {
+        message.replace(at, 5, "sweep");
+      }
+      throw InputError(path + ": run " + std::to_string(index) + " (" + described + "): " +
+                       message);
     }
     hash = fnv1a(run.scenario.resolved_yaml, hash);
     study.runs.push_back(std::move(run));
