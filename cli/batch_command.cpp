@@ -181,17 +181,28 @@ int batchCommand(const BatchOptions& options) {
               << " runs already in " << output.string() << "\n";
   }
   BatchProgress progress(study.name, todo.size(), stderr);
-  runScenarios(scenarios, options.threads, &progress,
-               [&](std::size_t position, ScenarioOutcome&& outcome) {
-                 datasets::BatchRunRecord record;
-                 record.run = todo[position];
-                 record.result = &outcome.result;
-                 record.clearances = outcome.footsteps ? &outcome.footsteps->clearances : nullptr;
-                 record.multibody = outcome.replay ? &outcome.replay->validation : nullptr;
-                 record.exit_status = outcome.exit_status;
-                 record.values = summaryValues(outcome);
-                 writer->write(record);
-               });
+  const auto recordOf = [&](std::size_t position, const ScenarioOutcome& outcome) {
+    datasets::BatchRunRecord record;
+    record.run = todo[position];
+    record.result = &outcome.result;
+    record.clearances = outcome.footsteps ? &outcome.footsteps->clearances : nullptr;
+    record.multibody = outcome.replay ? &outcome.replay->validation : nullptr;
+    record.exit_status = outcome.exit_status;
+    return record;
+  };
+  // Each slot is written by the worker of its run, then read by the writer: no slot is shared.
+  std::vector<datasets::PreparedRun> prepared(todo.size());
+  runScenarios(
+      scenarios, options.threads, &progress,
+      [&](std::size_t position, ScenarioOutcome& outcome) {
+        prepared[position] = datasets::BatchDatasetWriter::prepare(recordOf(position, outcome));
+      },
+      [&](std::size_t position, ScenarioOutcome&& outcome) {
+        datasets::BatchRunRecord record = recordOf(position, outcome);
+        record.values = summaryValues(outcome);
+        writer->write(record, &prepared[position]);
+        prepared[position] = datasets::PreparedRun{};  // free the chunks
+      });
   progress.finish();
   writer->close();
 

@@ -42,13 +42,17 @@ ScenarioOutcome runScenarioPipeline(const datasets::Scenario& scenario, RobotMod
 
 void runScenarios(const std::vector<const datasets::Scenario*>& scenarios, int threads,
                   BatchProgress* progress,
+                  const std::function<void(std::size_t, ScenarioOutcome&)>& in_worker,
                   const std::function<void(std::size_t, ScenarioOutcome&&)>& deliver) {
   const int workers = threads < 1 ? 1 : threads;
   std::vector<RobotModelCache> models(static_cast<std::size_t>(workers));
   runOrdered<ScenarioOutcome>(
       scenarios.size(), workers,
       [&](std::size_t job, int worker) {
-        return runScenarioPipeline(*scenarios[job], &models[static_cast<std::size_t>(worker)]);
+        ScenarioOutcome outcome =
+            runScenarioPipeline(*scenarios[job], &models[static_cast<std::size_t>(worker)]);
+        if (in_worker) in_worker(job, outcome);
+        return outcome;
       },
       [&](std::size_t job, ScenarioOutcome&& outcome) {
         const bool failed = outcome.exit_status != kExitSuccess;

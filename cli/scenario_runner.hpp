@@ -37,11 +37,14 @@ using RobotModelCache = std::map<std::string, std::unique_ptr<robots::RobotModel
 // One scenario through the pipeline; `models` caches the robot models of this worker.
 ScenarioOutcome runScenarioPipeline(const datasets::Scenario& scenario, RobotModelCache* models);
 
-// Runs `scenarios` on `threads` workers; `deliver(position, outcome)` in list order, one call
-// at a time; `progress` (may be null) counts each run as it is delivered. Exceptions of
-// `deliver` (an I/O error of the writer) stop the batch and are rethrown.
+// Runs `scenarios` on `threads` workers; `in_worker(position, outcome)` (may be empty) right
+// after each run on the worker that ran it, in parallel (the heavy, thread-safe part of the
+// caller's handling: compressing its datasets); `deliver(position, outcome)` in list order, one
+// call at a time; `progress` (may be null) counts each run as it is delivered. Exceptions of
+// either (an I/O error of the writer) stop the batch and are rethrown.
 void runScenarios(const std::vector<const datasets::Scenario*>& scenarios, int threads,
                   BatchProgress* progress,
+                  const std::function<void(std::size_t position, ScenarioOutcome& outcome)>& in_worker,
                   const std::function<void(std::size_t position, ScenarioOutcome&& outcome)>& deliver);
 
 }  // namespace wpg::cli

@@ -289,7 +289,20 @@ std::unique_ptr<BatchDatasetWriter> BatchDatasetWriter::resume(
   return writer;
 }
 
-void BatchDatasetWriter::write(const BatchRunRecord& record) {
+PreparedRun BatchDatasetWriter::prepare(const BatchRunRecord& record) {
+  const StudyRun& run = *record.run;
+  checkRunInputs(run.scenario, *record.result, record.clearances, record.multibody);
+  auto recording = std::make_shared<ChunkRecording>();
+  {
+    const RecordingScope scope(recording.get(), RecordingMode::kRecord);
+    H5::Group placeholder;  // never used by HDF5 while recording
+    writeRunGroup(placeholder, run.name, run.scenario, *record.result, record.clearances,
+                  record.multibody);
+  }
+  return PreparedRun{recording};
+}
+
+void BatchDatasetWriter::write(const BatchRunRecord& record, const PreparedRun* prepared) {
   const StudyRun& run = *record.run;
   if (record.values.size() != columns_.size()) {
     throw std::invalid_argument("BatchDatasetWriter::write: " + std::to_string(record.values.size()) +
@@ -300,8 +313,21 @@ void BatchDatasetWriter::write(const BatchRunRecord& record) {
   H5::Exception::dontPrint();
   try {
     Handles& h = *handles_;
-    H5::Group group = writeRunGroup(h.runs, run.name, run.scenario, *record.result,
-                                    record.clearances, record.multibody);
+    H5::Group group;
+    if (prepared && prepared->recording) {
+      auto* recording = static_cast<ChunkRecording*>(prepared->recording.get());
+      recording->replayed = 0;
+      const RecordingScope scope(recording, RecordingMode::kReplay);
+      group = writeRunGroup(h.runs, run.name, run.scenario, *record.result, record.clearances,
+                            record.multibody);
+      if (recording->replayed != recording->datasets.size()) {
+        throw std::logic_error("BatchDatasetWriter::write: the prepared run " + run.name +
+                               " has other datasets than the one written");
+      }
+    } else {
+      group = writeRunGroup(h.runs, run.name, run.scenario, *record.result, record.clearances,
+                            record.multibody);
+    }
     writeStringAttribute(group, "scenario", run.scenario.resolved_yaml);
     writeIntAttribute(group, "batch_index", static_cast<int>(run.index));
     std::vector<std::string> keys;

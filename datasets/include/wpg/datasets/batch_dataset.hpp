@@ -38,8 +38,19 @@ struct BatchRunRecord {
   std::vector<double> values;          // one per SummaryColumn, in the writer's order
 };
 
+// A run's datasets compressed ahead of writing (BatchDatasetWriter::prepare): the compression
+// (most of the writing time) then runs on the worker threads in parallel instead of inside the
+// writer, which HDF5 serializes.
+struct PreparedRun {
+  std::shared_ptr<void> recording;  // the chunks, in the writer's order (detail::ChunkRecording)
+};
+
 class BatchDatasetWriter {
  public:
+  // Compresses the run's datasets for write(); makes no HDF5 call and touches no writer, so any
+  // thread may call it at any time. Throws std::invalid_argument as writeRunDataset.
+  static PreparedRun prepare(const BatchRunRecord& record);
+
   // Creates `path` (replacing a file there) with the study's layout: root attributes, /batch,
   // the summary table with its index, name and swept columns filled and its result columns
   // at their fill values, and an empty /runs. Throws std::runtime_error on I/O errors.
@@ -58,8 +69,9 @@ class BatchDatasetWriter {
   // done[i]: run i is in the file.
   const std::vector<bool>& done() const { return done_; }
 
-  // Writes the run's group and its summary row, marks it done and flushes the file.
-  void write(const BatchRunRecord& record);
+  // Writes the run's group and its summary row, marks it done and flushes the file; with
+  // `prepared` (from prepare(record)), its chunks as they are.
+  void write(const BatchRunRecord& record, const PreparedRun* prepared = nullptr);
 
   // Closes the file (also done by the destructor); throws on I/O errors.
   void close();
