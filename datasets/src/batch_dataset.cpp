@@ -29,6 +29,21 @@ constexpr const char* kSummaryPath = "/batch/summary";
 
 std::string sweepColumn(const std::string& key) { return "sweep." + key; }
 
+// A small metadata cache: every flush walks the whole cache, which otherwise keeps the
+// (clean) metadata of every run written so far, making a flush cost grow with the runs.
+H5::FileAccPropList smallMetadataCache() {
+  H5::FileAccPropList access;
+  H5AC_cache_config_t config;
+  config.version = H5AC__CURR_CACHE_CONFIG_VERSION;
+  if (H5Pget_mdc_config(access.getId(), &config) < 0) return access;
+  config.set_initial_size = true;
+  config.initial_size = 1 << 20;
+  config.min_size = 1 << 19;
+  config.max_size = 1 << 20;
+  H5Pset_mdc_config(access.getId(), &config);
+  return access;
+}
+
 bool sweptKeyIsNumeric(const Study& study, std::size_t k) {
   for (const StudyRun& run : study.runs) {
     if (!run.swept[k].numeric) return false;
@@ -156,7 +171,7 @@ std::unique_ptr<BatchDatasetWriter> BatchDatasetWriter::create(
   H5::Exception::dontPrint();
   try {
     Handles& h = *writer->handles_;
-    h.file = H5::H5File(path, H5F_ACC_TRUNC);
+    h.file = H5::H5File(path, H5F_ACC_TRUNC, H5::FileCreatPropList::DEFAULT, smallMetadataCache());
     writeIntAttribute(h.file, "schema_version", kRunDatasetSchemaVersion);
     writeIntAttribute(h.file, "batch_schema_version", kBatchDatasetSchemaVersion);
     writeStringAttribute(h.file, "wpg_version", WPG_VERSION_STRING);
@@ -259,7 +274,7 @@ std::unique_ptr<BatchDatasetWriter> BatchDatasetWriter::resume(
       }
     }
     Handles& h = *writer->handles_;
-    h.file = H5::H5File(path, H5F_ACC_RDWR);
+    h.file = H5::H5File(path, H5F_ACC_RDWR, H5::FileCreatPropList::DEFAULT, smallMetadataCache());
     h.runs = h.file.openGroup("runs");
     H5::Group table = h.file.openGroup(kSummaryPath);
     h.done = table.openDataSet("done");
