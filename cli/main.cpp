@@ -104,7 +104,8 @@ int main(int argc, char** argv) {
       ->type_name("N");
   batch_app->add_flag("--resume", batch.resume,
                       "Finish OUT.h5 of the same study: run only the runs it does not hold yet "
-                      "(refused, exit 2, when it holds another study)");
+                      "(refused, exit 2, when it holds another study; a missing OUT.h5 is "
+                      "started)");
   bool batch_no_plot = false;
   batch_app->add_flag("--no-plot", batch_no_plot, "Do not draw the summary figure");
 
