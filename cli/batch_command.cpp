@@ -4,7 +4,6 @@
 // summary figure OUT.summary.png beside it.
 #include <unistd.h>
 
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -132,10 +131,7 @@ void writeMarkdown(const datasets::BatchSummaryTable& table, const std::string& 
 
 int drawSummaryFigure(const std::string& batch_file, const std::string& figure) {
   const std::string script = (fs::path(dataDirectory()) / "analysis" / "plot_batch.py").string();
-  const char* python = std::getenv("WPG_PYTHON");
-  const std::string command = std::string(python && *python ? python : "/usr/bin/python3") + " '" +
-                              script + "' '" + batch_file + "' -o '" + figure + "'";
-  return std::system(command.c_str());
+  return runAnalysisScript(script, {batch_file, "-o", figure});
 }
 
 }  // namespace
