@@ -147,7 +147,7 @@ int batchCommand(const BatchOptions& options) {
   // Everything about the input is checked before anything is written.
   const datasets::Study study = datasets::loadStudy(
       options.study, [](const std::string& base) { return resolveScenarioPath(base); },
-      robotsDirectory());
+      robotsDirectory(), options.threads);
   checkOutputFolder(output);
   std::set<std::string> replayed_robots;
   for (const datasets::StudyRun& run : study.runs) {

@@ -1,12 +1,14 @@
 // Study files: parsing, sweep expansion and the runs' scenarios (wpg/datasets/study.hpp).
 #include "wpg/datasets/study.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
+#include <thread>
 
 #include <yaml-cpp/yaml.h>
 
@@ -156,7 +158,7 @@ double nextUniform(std::uint64_t* state) {
 }
 
 Study loadStudy(const std::string& path, const BaseResolver& resolve_base,
-                const std::string& robots_dir) {
+                const std::string& robots_dir, int threads) {
   Study study;
   study.source_path = path;
   const Source source(path);
@@ -228,7 +230,6 @@ Study loadStudy(const std::string& path, const BaseResolver& resolve_base,
   const std::size_t total = grid_points * zip_points * random_points;
   const std::size_t digits = std::to_string(total - 1).size();
 
-  std::uint64_t hash = 14695981039346656037ull;
   for (std::size_t index = 0; index < total; ++index) {
     StudyRun run;
     run.index = index;
@@ -246,6 +247,15 @@ Study loadStudy(const std::string& path, const BaseResolver& resolve_base,
     for (const KeyValues& key : zip) run.swept.push_back(key.values[zip_index]);
     for (const KeyValues& key : random) run.swept.push_back(key.values[index % random_points]);
 
+    study.runs.push_back(std::move(run));
+  }
+
+  // Each run's scenario: the base with its values, loaded and validated as `wpg run` does, on
+  // `threads` threads (each run on its own; the error reported is the first run's that fails,
+  // whatever the threads).
+  std::vector<std::string> errors(total);
+  const auto loadRun = [&](std::size_t index) {
+    StudyRun& run = study.runs[index];
     std::vector<std::string> overrides;
     std::string described;
     for (const SweptValue& value : run.swept) {
@@ -264,11 +274,23 @@ Study loadStudy(const std::string& path, const BaseResolver& resolve_base,
            at = message.find("--set '", at)) {
         message.replace(at, 5, "sweep");
       }
-      throw InputError(path + ": run " + std::to_string(index) + " (" + described + "): " +
-                       message);
+      errors[index] = path + ": run " + std::to_string(index) + " (" + described + "): " + message;
     }
-    hash = fnv1a(run.scenario.resolved_yaml, hash);
-    study.runs.push_back(std::move(run));
+  };
+  const std::size_t workers =
+      std::min<std::size_t>(threads < 1 ? 1 : static_cast<std::size_t>(threads), total);
+  std::vector<std::thread> pool;
+  for (std::size_t w = 1; w < workers; ++w) {
+    pool.emplace_back([&, w] {
+      for (std::size_t i = w; i < total; i += workers) loadRun(i);
+    });
+  }
+  for (std::size_t i = 0; i < total; i += workers) loadRun(i);
+  for (std::thread& thread : pool) thread.join();
+  std::uint64_t hash = 14695981039346656037ull;
+  for (std::size_t i = 0; i < total; ++i) {
+    if (!errors[i].empty()) throw InputError(errors[i]);
+    hash = fnv1a(study.runs[i].scenario.resolved_yaml, hash);
   }
   char hex[17];
   std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(hash));

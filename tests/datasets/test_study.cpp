@@ -22,13 +22,13 @@ class StudyFiles : public wpg_test::ScratchDirectoryTest {
  protected:
   StudyFiles() : ScratchDirectoryTest("wpg_test_study") {}
 
-  Study load(const std::string& text) {
+  Study load(const std::string& text, int threads = 1) {
     const fs::path path = directory_ / "study.yaml";
     std::ofstream(path) << text;
     return loadStudy(
         path.string(),
         [](const std::string& base) { return wpg_test::kScenariosDir + "/" + base + ".yaml"; },
-        wpg_test::kRobotsDir);
+        wpg_test::kRobotsDir, threads);
   }
 };
 
@@ -158,4 +158,25 @@ TEST_F(StudyFiles, InlineBaseAndBaseBesideTheStudy) {
       << "name: mine\nrobot: hrp2\nduration: 2.0\nreference: [{t: 0.0, v: [0.0, 0.0, 0.0]}]\n";
   const Study beside = load("name: beside\nbase: mine.yaml\nsweep:\n  grid: {robot_mass: [50.0]}\n");
   EXPECT_DOUBLE_EQ(beside.runs[0].scenario.request.duration, 2.0);
+}
+
+TEST_F(StudyFiles, ThreadsDoNotChangeTheRunsNorTheError) {
+  const Study one = load(kFullSweep, 1);
+  const Study three = load(kFullSweep, 3);
+  ASSERT_EQ(one.runs.size(), three.runs.size());
+  for (std::size_t i = 0; i < one.runs.size(); ++i) {
+    EXPECT_EQ(one.runs[i].scenario.resolved_yaml, three.runs[i].scenario.resolved_yaml);
+  }
+  EXPECT_EQ(one.fingerprint, three.fingerprint);
+  // runs 1 and 2 are bad; the message names run 1 for any number of threads
+  const std::string bad =
+      "name: bad\nbase: walk_forward\nsweep:\n  grid: {duration: [5.0, -1.0, -2.0]}\n";
+  for (const int threads : {1, 2, 3}) {
+    try {
+      load(bad, threads);
+      ADD_FAILURE() << "no error";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("run 1 (duration=-1.0)"), std::string::npos) << e.what();
+    }
+  }
 }

@@ -53,8 +53,9 @@ struct Study {
 using BaseResolver = std::function<std::string(const std::string& base)>;
 
 // Reads the study at `path`, expands its sweep and loads every run's scenario (robots from
-// `robots_dir`), each validated as `wpg run` does. A relative `base:` path is looked up next to
-// the study file first, then by `resolve_base`.
+// `robots_dir`), each validated as `wpg run` does, on `threads` threads (the result does not
+// depend on them). A relative `base:` path is looked up next to the study file first, then by
+// `resolve_base`.
 //
 // Throws InputError (one line naming the study file and the key) on: unreadable file, syntax
 // error, unknown or missing keys, an empty sweep (no section, or a section or list without
@@ -62,7 +63,7 @@ using BaseResolver = std::function<std::string(const std::string& base)>;
 // low <= high, a sweep key the scenario does not have, and a swept value the scenario rejects
 // (the message names the run's values).
 Study loadStudy(const std::string& path, const BaseResolver& resolve_base,
-                const std::string& robots_dir);
+                const std::string& robots_dir, int threads = 1);
 
 // The study's seeded generator (SplitMix64, fixed across platforms and compilers, unlike the
 // distributions of <random>): a uniform double in [0, 1) from `state`, which it advances.
