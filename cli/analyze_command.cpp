@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "cli_common.hpp"
+#include "json_text.hpp"
 #include "wpg/analysis/run_metrics.hpp"
 #include "wpg/analysis/zmp_error.hpp"
 #include "wpg/datasets/input_error.hpp"
@@ -27,15 +28,6 @@ std::string number(double value, const char* format) {
   char text[64];
   std::snprintf(text, sizeof text, format, value);
   return text;
-}
-
-std::string jsonString(const std::string& text) {
-  std::string quoted = "\"";
-  for (const char c : text) {
-    if (c == '"' || c == '\\') quoted += '\\';
-    quoted += c;
-  }
-  return quoted + "\"";
 }
 
 void printTable(const std::vector<AnalyzedRun>& runs) {
@@ -75,7 +67,7 @@ void printJson(const std::vector<AnalyzedRun>& runs) {
     for (const analysis::MetricDefinition& metric : analysis::runMetricTable()) {
       const double value = runs[r].metrics.*metric.field;
       std::cout << (first ? "" : ", ") << jsonString(metric.name) << ": "
-                << (std::isfinite(value) ? number(value, "%.17g") : std::string("null"));
+                << jsonNumber(value, 17);
       first = false;
     }
     std::cout << "}";

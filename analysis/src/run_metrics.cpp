@@ -11,6 +11,7 @@
 #include "wpg/analysis/sample_statistics.hpp"
 #include "wpg/convex_polygon.hpp"
 #include "wpg/obstacles.hpp"
+#include "wpg/walk_checks.hpp"
 
 namespace wpg::analysis {
 namespace {
@@ -88,34 +89,13 @@ void copMargin(const WalkingParameters& w, const WalkTrajectory& tr, RunMetrics*
   metrics->cop_margin_median = quantile(std::move(margins), 0.5);
 }
 
-// Each landed step against the last footstep of the other side (eq. 14, eq. 16), as checkWalk.
+// The landed steps against the last footstep of the other side (eq. 14, eq. 16): checkWalk's
+// worst excursions, as margins.
 void stepMargins(const WalkingParameters& w, const WalkTrajectory& tr, RunMetrics* metrics) {
-  ConvexPolygon feasibility[2];
-  feasibility[0].setVertices(w.feasibilityVertices(FootSide::kLeft));
-  feasibility[1].setVertices(w.feasibilityVertices(FootSide::kRight));
-  double feasibility_margin = kNaN, yaw_margin = kNaN;
-  for (std::size_t k = 0; k < tr.footsteps.size(); ++k) {
-    const Footstep& step = tr.footsteps[k];
-    if (step.landing_time <= 0.0) continue;
-    const Footstep* previous = nullptr;
-    for (std::size_t j = k; j-- > 0;) {
-      if (tr.footsteps[j].side != step.side) {
-        previous = &tr.footsteps[j];
-        break;
-      }
-    }
-    if (!previous) continue;
-    const double c = std::cos(previous->pose.z()), s = std::sin(previous->pose.z());
-    const Eigen::Vector2d d = (step.pose - previous->pose).head<2>();
-    const Eigen::Vector2d local(c * d.x() + s * d.y(), -s * d.x() + c * d.y());
-    const double margin =
-        -feasibility[step.side == FootSide::kLeft ? 0 : 1].violation(local);
-    const double yaw = w.max_step_yaw_change - std::abs(step.pose.z() - previous->pose.z());
-    feasibility_margin = std::isnan(feasibility_margin) ? margin : std::min(feasibility_margin, margin);
-    yaw_margin = std::isnan(yaw_margin) ? yaw : std::min(yaw_margin, yaw);
-  }
-  metrics->step_feasibility_margin_min = feasibility_margin;
-  metrics->yaw_bound_margin_min = yaw_margin;
+  const WalkCheckReport report = checkWalk(w, tr);
+  const bool stepped = report.landed_steps > 0;
+  metrics->step_feasibility_margin_min = stepped ? -report.feasibility_violation : kNaN;
+  metrics->yaw_bound_margin_min = stepped ? w.max_step_yaw_change - report.max_step_yaw_change : kNaN;
 }
 
 double obstacleClearance(const WalkingParameters& w, const WalkRequest& request,

@@ -5,7 +5,7 @@
 // hdf5_writing.cpp, the values of the `checks` group and the timing summaries are computed in
 // run_checks.cpp.
 //
-// Why ~500 lines: one writer function per group of the schema (run, mpc, obstacles, checks,
+// Why ~550 lines: one writer function per group of the schema (run, mpc, obstacles, checks,
 // multibody, timing), each a list of datasets with their units and descriptions; the pieces
 // that are not layout (HDF5 helpers, checks) already live in their own files.
 #include "wpg/datasets/run_dataset.hpp"

@@ -116,6 +116,15 @@ std::vector<Eigen::Matrix<double, Size, 1>> rowsOf(const std::vector<double>& va
   return rows;
 }
 
+// The groups under /runs.
+std::vector<std::string> runGroupNames(const H5::Group& runs) {
+  std::vector<std::string> names;
+  for (hsize_t i = 0; i < runs.getNumObjs(); ++i) {
+    if (runs.getObjTypeByIdx(i) == H5G_GROUP) names.push_back(runs.getObjnameByIdx(i));
+  }
+  return names;
+}
+
 StoredRun readFile(const std::string& path, const std::string& run_name) {
   if (!H5::H5File::isHdf5(path)) throw InputError(path + ": not an HDF5 file");
   H5::H5File file(path, H5F_ACC_RDONLY);
@@ -136,10 +145,7 @@ StoredRun readFile(const std::string& path, const std::string& run_name) {
     throw InputError(path + ": no group /runs (not a run dataset?)");
   }
   const H5::Group runs = file.openGroup("runs");
-  std::vector<std::string> names;
-  for (hsize_t i = 0; i < runs.getNumObjs(); ++i) {
-    if (runs.getObjTypeByIdx(i) == H5G_GROUP) names.push_back(runs.getObjnameByIdx(i));
-  }
+  const std::vector<std::string> names = runGroupNames(runs);
   std::string all;
   for (const std::string& name : names) all += (all.empty() ? "" : ", ") + name;
   if (run_name.empty()) {
@@ -321,11 +327,7 @@ std::vector<std::string> listRuns(const std::string& path) {
     if (!file.nameExists("runs") || file.childObjType("runs") != H5O_TYPE_GROUP) {
       throw InputError(path + ": no group /runs (not a run or batch dataset?)");
     }
-    const H5::Group runs = file.openGroup("runs");
-    std::vector<std::string> names;
-    for (hsize_t i = 0; i < runs.getNumObjs(); ++i) {
-      if (runs.getObjTypeByIdx(i) == H5G_GROUP) names.push_back(runs.getObjnameByIdx(i));
-    }
+    std::vector<std::string> names = runGroupNames(file.openGroup("runs"));
     std::sort(names.begin(), names.end());
     return names;
   } catch (const H5::Exception& error) {
