@@ -22,6 +22,7 @@
 #include <unistd.h>
 
 #include "cli_common.hpp"
+#include "json_text.hpp"
 #include "pipeline_stages.hpp"
 #include "summary_printing.hpp"
 #include "wpg/analysis/chain_timing.hpp"
@@ -189,21 +190,7 @@ void printTable(std::ostream& out, const std::vector<BenchRow>& rows) {
          "one process on a machine other jobs may share\n";
 }
 
-std::string jsonString(const std::string& text) {
-  std::string quoted = "\"";
-  for (const char c : text) {
-    if (c == '"' || c == '\\') quoted += '\\';
-    quoted += c;
-  }
-  return quoted + "\"";
-}
-
-std::string jsonNumber(double value) {
-  if (!std::isfinite(value)) return "null";
-  std::ostringstream text;
-  text << std::setprecision(9) << value;
-  return text.str();
-}
+std::string jsonNumber(double value) { return cli::jsonNumber(value, 9); }
 
 void writeJson(const std::string& path, const std::vector<BenchRow>& rows) {
   std::ostringstream json;

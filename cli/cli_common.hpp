@@ -69,6 +69,21 @@ struct BenchOptions {
 };
 int benchCommand(const BenchOptions& options);
 
+struct BatchOptions {
+  std::string study;   // STUDY.yaml
+  std::string output;  // OUT.h5
+  int threads = 1;     // -j
+  bool resume = false;
+  bool plot = true;
+};
+int batchCommand(const BatchOptions& options);
+
+struct AnalyzeOptions {
+  std::string input;               // a run or batch file
+  std::string format = "table";    // table, csv or json
+};
+int analyzeCommand(const AnalyzeOptions& options);
+
 struct PlotOptions {
   std::string input;
   std::string output;  // empty: the input with its extension replaced by .png
@@ -78,6 +93,8 @@ int plotCommand(const PlotOptions& options);
 // Runs /usr/bin/python3 <plot script> run_file -o figure_file; returns its exit status
 // (kExitBadInput with a message on stderr when Python or its modules are missing).
 int drawFigure(const std::string& run_file, const std::string& figure_file);
+// Runs /usr/bin/python3 script arguments... (the same checks and messages as drawFigure).
+int runAnalysisScript(const std::string& script, const std::vector<std::string>& arguments);
 
 // The one-line error format of every subcommand: "wpg: error: <message>".
 void printError(const std::string& message);

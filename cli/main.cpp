@@ -1,6 +1,8 @@
 // The `wpg` executable: command-line parsing only (CLI11 is the slowest header of the project
 // to compile, so it stays in this file); the subcommands live in the other cli/*.cpp files.
+#include <algorithm>
 #include <exception>
+#include <thread>
 #include <iostream>
 #include <stdexcept>
 
@@ -86,6 +88,36 @@ int main(int argc, char** argv) {
       ->default_str("none")
       ->type_name("FILE");
 
+  BatchOptions batch;
+  batch.threads = std::max(1u, std::thread::hardware_concurrency());
+  CLI::App* batch_app = app.add_subcommand(
+      "batch",
+      "Run a study (a base scenario and a sweep of its keys, datasets/SCENARIOS.md) on worker "
+      "threads into one HDF5 file, with OUT.summary.csv/.md/.png beside it. Exit 0 every run "
+      "succeeded, 1 some walk failed (the file says which), 2 bad input.");
+  batch_app->add_option("study", batch.study, "Study file (YAML)")->required()->type_name("STUDY.yaml");
+  batch_app->add_option("-o,--output", batch.output, "Batch file to write (or to finish with --resume)")
+      ->required()
+      ->type_name("OUT.h5");
+  batch_app->add_option("-j,--jobs", batch.threads, "Worker threads")
+      ->default_str("the number of cores")
+      ->type_name("N");
+  batch_app->add_flag("--resume", batch.resume,
+                      "Finish OUT.h5 of the same study: run only the runs it does not hold yet "
+                      "(refused, exit 2, when it holds another study; a missing OUT.h5 is "
+                      "started)");
+  bool batch_no_plot = false;
+  batch_app->add_flag("--no-plot", batch_no_plot, "Do not draw the summary figure");
+
+  AnalyzeOptions analyze;
+  CLI::App* analyze_app = app.add_subcommand(
+      "analyze", "Print the metrics (datasets/METRICS.md) of every run of a run or batch file.");
+  analyze_app->add_option("file", analyze.input, "HDF5 file written by `wpg run` or `wpg batch`")
+      ->required()
+      ->type_name("FILE.h5");
+  analyze_app->add_option("--format", analyze.format, "table, csv or json (one object per run)")
+      ->type_name("FORMAT");
+
   PlotOptions plot;
   CLI::App* plot_app = app.add_subcommand("plot", "Draw the figure of a run dataset (PNG).");
   plot_app->add_option("run_file", plot.input, "HDF5 dataset written by `wpg run`")
@@ -115,6 +147,11 @@ int main(int argc, char** argv) {
       return replayCommand(replay);
     }
     if (bench_app->parsed()) return benchCommand(bench);
+    if (batch_app->parsed()) {
+      batch.plot = !batch_no_plot;
+      return batchCommand(batch);
+    }
+    if (analyze_app->parsed()) return analyzeCommand(analyze);
     return plotCommand(plot);
   } catch (const UsageError& e) {
     printError(e.what());

@@ -181,31 +181,40 @@ ScenarioRun runScenario(const robots::RobotModel* model, const datasets::Scenari
   return run;
 }
 
-std::optional<ObstacleClearances> writeScenarioDataset(const std::string& path,
-                                                       const datasets::Scenario& scenario,
-                                                       const WalkResult& result,
-                                                       const MultibodyValidation* multibody,
-                                                       const datasets::GoalOutcome* goal) {
+std::optional<FootstepCheck> checkScenarioFootsteps(const datasets::Scenario& scenario,
+                                                    const WalkResult& result) {
 #ifdef WPG_CLI_WITH_PLANNING
   if (!scenario.request.obstacles.empty()) {
     const planning::World world(scenario.request.obstacles);
     const planning::FootstepObstacleReport report =
         planning::checkFootsteps(world, scenario.walking, result.trajectory);
-    datasets::FootstepClearances clearances;
-    clearances.clearance = report.clearance;
-    clearances.clearance_obstacle = report.clearance_obstacle;
-    clearances.foot_distance = report.foot_distance;
-    datasets::writeRunDataset(path, scenario, result, &clearances, multibody, goal);
-    ObstacleClearances least;
-    least.obstacle_count = world.obstacleCount();
-    least.step_centre = report.min_centre_clearance;
-    least.sole = report.min_clearance;
-    least.sole_to_obstacle = report.min_foot_distance;
-    return least;
+    FootstepCheck check;
+    check.clearances.clearance = report.clearance;
+    check.clearances.clearance_obstacle = report.clearance_obstacle;
+    check.clearances.foot_distance = report.foot_distance;
+    check.least.obstacle_count = world.obstacleCount();
+    check.least.step_centre = report.min_centre_clearance;
+    check.least.sole = report.min_clearance;
+    check.least.sole_to_obstacle = report.min_foot_distance;
+    return check;
   }
+#else
+  (void)scenario;
+  (void)result;
 #endif
-  datasets::writeRunDataset(path, scenario, result, nullptr, multibody, goal);
   return std::nullopt;
+}
+
+std::optional<ObstacleClearances> writeScenarioDataset(const std::string& path,
+                                                       const datasets::Scenario& scenario,
+                                                       const WalkResult& result,
+                                                       const MultibodyValidation* multibody,
+                                                       const datasets::GoalOutcome* goal) {
+  const std::optional<FootstepCheck> check = checkScenarioFootsteps(scenario, result);
+  datasets::writeRunDataset(path, scenario, result, check ? &check->clearances : nullptr,
+                            multibody, goal);
+  if (!check) return std::nullopt;
+  return check->least;
 }
 
 }  // namespace wpg::cli

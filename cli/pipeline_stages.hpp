@@ -82,6 +82,15 @@ struct ObstacleClearances {
   double sole_to_obstacle = 0.0;  // signed distance of the sole, margin not counted
 };
 
+// The footstep clearances of the FCL world (sole rectangles against the obstacles) for the
+// dataset, with their minima; none without obstacles (or without planning/ linked).
+struct FootstepCheck {
+  datasets::FootstepClearances clearances;
+  ObstacleClearances least;
+};
+std::optional<FootstepCheck> checkScenarioFootsteps(const datasets::Scenario& scenario,
+                                                    const WalkResult& result);
+
 // Stage dataset: writeRunDataset, with the footstep clearances of the FCL world when the
 // scenario has obstacles; returns those clearances (none without obstacles).
 // `goal`: the goal walk's plans and outcome (WalkOutcome::goal), required for a goal scenario.

@@ -41,13 +41,16 @@ void printWarning(const std::string& message) {
 }
 
 int drawFigure(const std::string& run_file, const std::string& figure_file) {
+  return runAnalysisScript(plotScriptPath(), {run_file, "-o", figure_file});
+}
+
+int runAnalysisScript(const std::string& script, const std::vector<std::string>& arguments) {
   if (::access(kPython, X_OK) != 0) {
     printError(std::string("plotting needs ") + kPython +
                " with h5py and matplotlib: install the Debian packages python3 python3-h5py "
                "python3-matplotlib");
     return kExitBadInput;
   }
-  const std::string script = plotScriptPath();
   std::error_code ec;
   if (!fs::is_regular_file(script, ec)) {
     printError("plot script not found: " + script + " (set WPG_DATA_DIR to the wpg data folder)");
@@ -55,7 +58,8 @@ int drawFigure(const std::string& run_file, const std::string& figure_file) {
   }
   // The script reports its errors as "wpg: error: ..." like the rest of the CLI.
   ::setenv("WPG_PLOT_PROG", "wpg", 1);
-  std::vector<std::string> args{kPython, script, run_file, "-o", figure_file};
+  std::vector<std::string> args{kPython, script};
+  args.insert(args.end(), arguments.begin(), arguments.end());
   std::vector<char*> argv;
   for (std::string& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);

@@ -2,6 +2,9 @@
 #include "hdf5_writing.hpp"
 
 #include <algorithm>
+#include <stdexcept>
+
+#include <zlib.h>
 
 namespace wpg::datasets::detail {
 namespace {
@@ -16,10 +19,67 @@ void describeDataset(H5::DataSet& dataset, const DatasetInfo& info) {
   if (info.columns) writeStringAttribute(dataset, "columns", info.columns);
 }
 
+// Bytes per element of the memory types the writers use, known without asking HDF5 (no HDF5
+// call may run while recording, off the lock). They are also the file types' sizes, and both
+// are little-endian on the platforms we build for, so the memory bytes are the file's.
+std::size_t elementSize(const H5::PredType& memory_type) {
+  if (&memory_type == &H5::PredType::NATIVE_DOUBLE) return 8;
+  if (&memory_type == &H5::PredType::NATIVE_INT) return 4;
+  if (&memory_type == &H5::PredType::NATIVE_UINT8) return 1;
+  throw std::logic_error("writeDataset: a memory type other than double, int or uint8");
+}
+
+thread_local ChunkRecording* t_recording = nullptr;
+thread_local RecordingMode t_mode = RecordingMode::kRecord;
+
+// The shuffle filter (bytes of the same significance together), then zlib's compress2 as the
+// deflate filter does: the stored form of one chunk.
+std::vector<unsigned char> compressChunk(const unsigned char* bytes, std::size_t size,
+                                         std::size_t element_size) {
+  std::vector<unsigned char> shuffled(size);
+  const std::size_t elements = size / element_size;
+  for (std::size_t i = 0; i < elements; ++i) {
+    for (std::size_t b = 0; b < element_size; ++b) {
+      shuffled[b * elements + i] = bytes[i * element_size + b];
+    }
+  }
+  uLongf compressed_size = compressBound(static_cast<uLong>(size));
+  std::vector<unsigned char> compressed(compressed_size);
+  if (compress2(compressed.data(), &compressed_size, shuffled.data(), static_cast<uLong>(size),
+                kDeflateLevel) != Z_OK) {
+    throw std::runtime_error("zlib could not compress a chunk");
+  }
+  compressed.resize(compressed_size);
+  return compressed;
+}
+
 }  // namespace
+
+RecordingScope::RecordingScope(ChunkRecording* recording, RecordingMode mode)
+    : previous_recording_(t_recording), previous_mode_(t_mode) {
+  t_recording = recording;
+  t_mode = mode;
+}
+
+RecordingScope::~RecordingScope() {
+  t_recording = previous_recording_;
+  t_mode = previous_mode_;
+}
+
+ChunkRecording* activeRecording() {
+  return t_mode == RecordingMode::kRecord ? t_recording : nullptr;
+}
+
+ChunkRecording* activeReplay() { return t_mode == RecordingMode::kReplay ? t_recording : nullptr; }
+
+H5::Group createGroup(H5::Group& parent, const std::string& name) {
+  if (activeRecording()) return H5::Group();
+  return parent.createGroup(name);
+}
 
 void writeStringAttribute(H5::H5Object& object, const std::string& name,
                           const std::string& value) {
+  if (activeRecording()) return;
   H5::StrType type(H5::PredType::C_S1, H5T_VARIABLE);
   type.setCset(H5T_CSET_UTF8);
   H5::Attribute attribute = object.createAttribute(name, type, H5::DataSpace(H5S_SCALAR));
@@ -27,12 +87,14 @@ void writeStringAttribute(H5::H5Object& object, const std::string& name,
 }
 
 void writeIntAttribute(H5::H5Object& object, const std::string& name, int value) {
+  if (activeRecording()) return;
   H5::Attribute attribute =
       object.createAttribute(name, H5::PredType::STD_I32LE, H5::DataSpace(H5S_SCALAR));
   attribute.write(H5::PredType::NATIVE_INT, &value);
 }
 
 void writeDoubleAttribute(H5::H5Object& object, const std::string& name, double value) {
+  if (activeRecording()) return;
   H5::Attribute attribute =
       object.createAttribute(name, H5::PredType::IEEE_F64LE, H5::DataSpace(H5S_SCALAR));
   attribute.write(H5::PredType::NATIVE_DOUBLE, &value);
@@ -40,6 +102,7 @@ void writeDoubleAttribute(H5::H5Object& object, const std::string& name, double 
 
 void writeStringListAttribute(H5::H5Object& object, const std::string& name,
                               const std::vector<std::string>& values) {
+  if (activeRecording()) return;
   H5::StrType type(H5::PredType::C_S1, H5T_VARIABLE);
   type.setCset(H5T_CSET_UTF8);
   const hsize_t count = values.size();
@@ -54,18 +117,54 @@ H5::DataSet writeDataset(H5::Group& group, const std::string& name, const void* 
                          const H5::PredType& file_type, const DatasetInfo& info) {
   const int rank = columns == 0 ? 1 : 2;
   const hsize_t dimensions[2] = {rows, columns};
+  const std::size_t element_size = elementSize(memory_type);
+  const hsize_t row_bytes = std::max<hsize_t>(1, columns) * element_size;
+  const hsize_t chunk_rows = std::min(rows, std::max<hsize_t>(1, kChunkBytes / row_bytes));
+  if (ChunkRecording* recording = activeRecording()) {
+    RecordedDataset recorded{rows, columns, chunk_rows, element_size, {}};
+    const auto* bytes = static_cast<const unsigned char*>(data);
+    for (hsize_t first = 0; first < rows; first += chunk_rows) {
+      // An edge chunk is stored full size: the rows past the end are zero.
+      std::vector<unsigned char> chunk(chunk_rows * row_bytes, 0);
+      const hsize_t count = std::min(chunk_rows, rows - first);
+      std::copy(bytes + first * row_bytes, bytes + (first + count) * row_bytes, chunk.begin());
+      recorded.chunks.push_back(compressChunk(chunk.data(), chunk.size(), recorded.element_size));
+    }
+    recording->datasets.push_back(std::move(recorded));
+    return H5::DataSet();
+  }
+  const RecordedDataset* recorded = nullptr;
+  if (ChunkRecording* replay = activeReplay()) {
+    if (replay->replayed >= replay->datasets.size()) {
+      throw std::logic_error("writeDataset: replaying more datasets than were recorded");
+    }
+    recorded = &replay->datasets[replay->replayed++];
+    if (recorded->rows != rows || recorded->columns != columns ||
+        recorded->element_size != element_size) {
+      throw std::logic_error("writeDataset: the replayed dataset " + name +
+                             " is not the one recorded");
+    }
+  }
   const H5::DataSpace space(rank, dimensions);
   H5::DSetCreatPropList properties;
   if (rows > 0) {
-    const hsize_t row_bytes = std::max<hsize_t>(1, columns) * file_type.getSize();
-    const hsize_t chunk[2] = {std::min(rows, std::max<hsize_t>(1, kChunkBytes / row_bytes)),
-                              columns};
+    const hsize_t chunk[2] = {chunk_rows, columns};
     properties.setChunk(rank, chunk);
     properties.setShuffle();
     properties.setDeflate(kDeflateLevel);
   }
   H5::DataSet dataset = group.createDataSet(name, file_type, space, properties);
-  if (rows > 0) dataset.write(data, memory_type);
+  if (rows > 0 && recorded) {
+    for (std::size_t c = 0; c < recorded->chunks.size(); ++c) {
+      const hsize_t offset[2] = {c * chunk_rows, 0};
+      const std::vector<unsigned char>& chunk = recorded->chunks[c];
+      if (H5Dwrite_chunk(dataset.getId(), H5P_DEFAULT, 0, offset, chunk.size(), chunk.data()) < 0) {
+        throw std::runtime_error("cannot write a chunk of dataset " + name);
+      }
+    }
+  } else if (rows > 0) {
+    dataset.write(data, memory_type);
+  }
   describeDataset(dataset, info);
   return dataset;
 }

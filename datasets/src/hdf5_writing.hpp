@@ -2,7 +2,9 @@
 // Writing plain HDF5 that h5py reads without code of ours (conventions: datasets/SCHEMA.md):
 // scalar and string-list attributes, time-major numeric datasets that carry `units`,
 // `frame`, `description` and `columns` attributes, chunked and compressed.
+#include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -10,6 +12,52 @@
 #include <H5Cpp.h>
 
 namespace wpg::datasets::detail {
+
+// --- compression off the HDF5 lock ----------------------------------------------------------
+// Debian's HDF5 is not thread-safe, so everything it does runs under hdf5Mutex(), one thread at
+// a time; its gzip filter is most of a run's writing time. A batch worker therefore runs the
+// writer of a run twice: first recording (on its own thread, without the lock, no HDF5 call:
+// writeDataset shuffles and deflates the chunks as the filters would and keeps them; attributes
+// and groups are skipped), then replaying under the lock (writeDataset creates each dataset
+// with the same filters and writes the recorded chunks as they are, H5Dwrite_chunk). The file
+// is the same as one written directly: h5py decompresses the chunks with the same filters.
+
+struct RecordedDataset {
+  hsize_t rows = 0, columns = 0, chunk_rows = 0;
+  std::size_t element_size = 0;
+  std::vector<std::vector<unsigned char>> chunks;  // shuffled + deflated, in row order
+};
+
+class ChunkRecording {
+ public:
+  std::vector<RecordedDataset> datasets;  // in the order of the writer's writeDataset calls
+  std::size_t replayed = 0;               // datasets taken back by the replay so far
+  std::shared_ptr<const void> cache;      // what the writer computed while recording (checks)
+};
+
+enum class RecordingMode { kRecord, kReplay };
+
+// While alive, writeDataset and the helpers below on this thread record into / replay from
+// `recording` (null: write directly, the default).
+class RecordingScope {
+ public:
+  RecordingScope(ChunkRecording* recording, RecordingMode mode);
+  ~RecordingScope();
+  RecordingScope(const RecordingScope&) = delete;
+  RecordingScope& operator=(const RecordingScope&) = delete;
+
+ private:
+  ChunkRecording* previous_recording_;
+  RecordingMode previous_mode_;
+};
+
+// The recording of this thread when it is recording (nullptr otherwise).
+ChunkRecording* activeRecording();
+// The recording of this thread when it is replaying (nullptr otherwise).
+ChunkRecording* activeReplay();
+
+// parent.createGroup(name); a placeholder while recording.
+H5::Group createGroup(H5::Group& parent, const std::string& name);
 
 // --- attributes ------------------------------------------------------------------------------
 

@@ -14,6 +14,7 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <memory>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -23,6 +24,7 @@
 
 #include "goal_dataset.hpp"
 #include "hdf5_writing.hpp"
+#include "run_group_writing.hpp"
 #include "run_checks.hpp"
 #include "wpg/obstacles.hpp"
 #include <unistd.h>
@@ -174,7 +176,7 @@ std::vector<ConstraintFamilyInfo> slackColumns(const WalkTrajectory& trajectory)
 
 void writeMpcLog(H5::Group& run, const WalkTrajectory& trajectory) {
   const std::vector<MpcIterationLog>& log = trajectory.mpc;
-  H5::Group mpc = run.createGroup("mpc");
+  H5::Group mpc = createGroup(run, "mpc");
   writeDoubles(mpc, "time", column(log, [](const MpcIterationLog& r) { return r.time; }), 0,
                {"s", nullptr, "time of each NMPC iteration (one per sampling period)", nullptr});
   writeDoubles(mpc, "solve_time",
@@ -235,7 +237,7 @@ void writeMpcLog(H5::Group& run, const WalkTrajectory& trajectory) {
 // plots and analyses need nothing but the file; outlines of boxes and polygons in one ragged
 // vertex list.
 void writeObstacles(H5::Group& run, const std::vector<Obstacle>& obstacles) {
-  H5::Group group = run.createGroup("obstacles");
+  H5::Group group = createGroup(run, "obstacles");
   writeStringAttribute(group, "description",
                        "convex obstacles of the scenario (paper Sec. III-D), one row per obstacle "
                        "in the scenario's order; fields that do not apply to a type are 0");
@@ -324,7 +326,7 @@ void writeObstacleChecks(H5::Group& checks, const FootstepObstacleChecks& steps,
 // without any code of ours.
 void writeChecks(H5::Group& run, const RunChecks& checked, const FootstepClearances* clearances) {
   const WalkCheckReport& report = checked.walk;
-  H5::Group checks = run.createGroup("checks");
+  H5::Group checks = createGroup(run, "checks");
   writeStringAttribute(checks, "description",
                        "invariants of the walk; distances in m (<= 0: inside), yaw in rad, "
                        "speed in m/s");
@@ -420,7 +422,7 @@ void writeMultibody(H5::Group& run, const Scenario& scenario, const MultibodyVal
                  {"m", "world", "ZMP of the multibody model following com_filtered", "x, y"});
   }
 
-  H5::Group group = run.createGroup("multibody");
+  H5::Group group = createGroup(run, "multibody");
   writeStringAttribute(group, "description",
                        "multibody replay of the walk (walking IK, inverse dynamics) and dynamic "
                        "filter; ZMP errors are |cop - zmp| in m, RMS and max over the samples "
@@ -452,7 +454,7 @@ void writeMultibody(H5::Group& run, const Scenario& scenario, const MultibodyVal
   }
 
   // Timing profile of the control chain per NMPC iteration (paper Sec. V-C).
-  H5::Group timing = run.createGroup("timing");
+  H5::Group timing = createGroup(run, "timing");
   writeStringAttribute(timing, "description",
                        "wall time of the control chain per NMPC iteration (paper Sec. V-C): NMPC, "
                        "walking IK, multibody ZMP, dynamic filter; the whole-walk stages (ZMP, "
@@ -497,7 +499,27 @@ void writeFile(const std::string& file_path, const Scenario& scenario, const Wal
   writeStringAttribute(file, "created_by", "wpg");  // wpg run, wpg replay or a program of yours
 
   H5::Group runs = file.createGroup("runs");
-  H5::Group run = runs.createGroup(scenario.name);
+  writeRunGroup(runs, scenario.name, scenario, result, clearances, multibody, goal);
+  file.close();  // inside the try of the caller: a failed flush is an error, not a warning
+}
+
+}  // namespace
+
+namespace detail {
+
+void checkRunInputs(const Scenario& scenario, const wpg::WalkResult& result,
+                    const FootstepClearances* clearances,
+                    const wpg::MultibodyValidation* multibody) {
+  checkSizes(result.trajectory);
+  if (clearances) checkClearanceSizes(*clearances, result.trajectory);
+  if (multibody) checkMultibodySizes(*multibody, result.trajectory);
+  checkGroupName(scenario.name);
+}
+
+H5::Group writeRunGroup(H5::Group& runs, const std::string& group_name, const Scenario& scenario,
+                        const WalkResult& result, const FootstepClearances* clearances,
+                        const MultibodyValidation* multibody, const GoalOutcome* goal) {
+  H5::Group run = createGroup(runs, group_name);
   writeStringAttribute(run, "algorithm",
                        generatorAlgorithmName(scenario.request.generator.algorithm));
   writeIntAttribute(run, "success", result.success ? 1 : 0);
@@ -506,21 +528,27 @@ void writeFile(const std::string& file_path, const Scenario& scenario, const Wal
   writeTrajectory(run, result.trajectory);
   writeMpcLog(run, result.trajectory);
   writeObstacles(run, scenario.request.obstacles);
-  writeChecks(run, computeRunChecks(scenario, result.trajectory, clearances), clearances);
+  // The checks are computed once: while recording (a batch worker, off the lock) when there
+  // is a recording, and kept for the replay.
+  std::shared_ptr<const RunChecks> checks;
+  if (ChunkRecording* replay = activeReplay(); replay && replay->cache) {
+    checks = std::static_pointer_cast<const RunChecks>(replay->cache);
+  } else {
+    checks = std::make_shared<RunChecks>(computeRunChecks(scenario, result.trajectory, clearances));
+    if (ChunkRecording* recording = activeRecording()) recording->cache = checks;
+  }
+  writeChecks(run, *checks, clearances);
   if (multibody) writeMultibody(run, scenario, *multibody);
   if (goal) writeGoal(run, scenario, *goal);
-  file.close();  // inside the try of the caller: a failed flush is an error, not a warning
+  return run;
 }
 
-}  // namespace
+}  // namespace detail
 
 void writeRunDataset(const std::string& path, const Scenario& scenario,
                      const wpg::WalkResult& result, const FootstepClearances* clearances,
                      const wpg::MultibodyValidation* multibody, const GoalOutcome* goal) {
-  checkSizes(result.trajectory);
-  if (clearances) checkClearanceSizes(*clearances, result.trajectory);
-  if (multibody) checkMultibodySizes(*multibody, result.trajectory);
-  checkGroupName(scenario.name);
+  checkRunInputs(scenario, result, clearances, multibody);
   if (goal && !scenario.goal.enabled) {
     throw std::invalid_argument("writeRunDataset: a goal outcome for a scenario without a goal");
   }

@@ -3,7 +3,10 @@
 // the file and the dataset, never a silently shorter walk.
 #include "wpg/datasets/run_dataset_reader.hpp"
 
+#include <algorithm>
 #include <cstring>
+#include <limits>
+#include <optional>
 #include <filesystem>
 #include <fstream>
 #include <mutex>
@@ -113,14 +116,25 @@ std::vector<Eigen::Matrix<double, Size, 1>> rowsOf(const std::vector<double>& va
   return rows;
 }
 
+// The groups under /runs.
+std::vector<std::string> runGroupNames(const H5::Group& runs) {
+  std::vector<std::string> names;
+  for (hsize_t i = 0; i < runs.getNumObjs(); ++i) {
+    if (runs.getObjTypeByIdx(i) == H5G_GROUP) names.push_back(runs.getObjnameByIdx(i));
+  }
+  return names;
+}
+
 StoredRun readFile(const std::string& path, const std::string& run_name) {
   if (!H5::H5File::isHdf5(path)) throw InputError(path + ": not an HDF5 file");
   H5::H5File file(path, H5F_ACC_RDONLY);
   StoredRun stored;
-  if (!file.attrExists("scenario")) {
+  // A batch file (`wpg batch`) has no root `scenario`: each run group carries its own.
+  const bool root_scenario = file.attrExists("scenario");
+  if (!root_scenario && !file.attrExists("study")) {
     throw InputError(path + ": root attribute 'scenario' is missing (not a run dataset?)");
   }
-  {
+  if (root_scenario) {
     const H5::Attribute attribute = file.openAttribute("scenario");
     if (attribute.getTypeClass() != H5T_STRING) {
       throw InputError(path + ": root attribute 'scenario' is not a string");
@@ -131,10 +145,7 @@ StoredRun readFile(const std::string& path, const std::string& run_name) {
     throw InputError(path + ": no group /runs (not a run dataset?)");
   }
   const H5::Group runs = file.openGroup("runs");
-  std::vector<std::string> names;
-  for (hsize_t i = 0; i < runs.getNumObjs(); ++i) {
-    if (runs.getObjTypeByIdx(i) == H5G_GROUP) names.push_back(runs.getObjnameByIdx(i));
-  }
+  const std::vector<std::string> names = runGroupNames(runs);
   std::string all;
   for (const std::string& name : names) all += (all.empty() ? "" : ", ") + name;
   if (run_name.empty()) {
@@ -154,7 +165,33 @@ StoredRun readFile(const std::string& path, const std::string& run_name) {
   const H5::Group run = runs.openGroup(stored.name);
   const Reader reader(path, run, run_path);
 
+  if (run.attrExists("scenario")) {
+    stored.scenario_yaml = reader.stringAttribute(run, "scenario", run_path + ":");
+  } else if (!root_scenario) {
+    reader.fail("attribute " + run_path + ":scenario is missing (a batch file's run)");
+  }
   stored.robot = reader.stringAttribute(run, "robot", run_path + ":");
+  if (run.nameExists("multibody") && run.childObjType("multibody") == H5O_TYPE_GROUP) {
+    const H5::Group multibody = run.openGroup("multibody");
+    const auto number = [&](const char* name) {
+      double value = std::numeric_limits<double>::quiet_NaN();
+      if (multibody.attrExists(name)) {
+        multibody.openAttribute(name).read(H5::PredType::NATIVE_DOUBLE, &value);
+      }
+      return value;
+    };
+    StoredZmpError zmp;
+    int filtered = 0;
+    if (multibody.attrExists("filtered")) {
+      multibody.openAttribute("filtered").read(H5::PredType::NATIVE_INT, &filtered);
+    }
+    zmp.filtered = filtered != 0;
+    zmp.rms_before = number("zmp_error_rms_before");
+    zmp.max_before = number("zmp_error_max_before");
+    zmp.rms_after = number("zmp_error_rms_after");
+    zmp.max_after = number("zmp_error_max_after");
+    stored.zmp_error = zmp;
+  }
   if (run.attrExists("message")) stored.result.message = reader.stringAttribute(run, "message", run_path + ":");
   if (run.attrExists("success")) {
     int success = 1;
@@ -265,7 +302,9 @@ StoredRun readFile(const std::string& path, const std::string& run_name) {
 
 }  // namespace
 
-StoredRun readRunDataset(const std::string& path, const std::string& run_name) {
+namespace {
+
+void checkReadable(const std::string& path) {
   std::error_code ec;
   if (!fs::exists(path, ec)) throw InputError(path + ": cannot read the run file: no such file");
   if (fs::is_directory(path, ec)) {
@@ -274,6 +313,31 @@ StoredRun readRunDataset(const std::string& path, const std::string& run_name) {
   if (!std::ifstream(path).good()) {
     throw InputError(path + ": cannot read the run file: permission denied");
   }
+}
+
+}  // namespace
+
+std::vector<std::string> listRuns(const std::string& path) {
+  checkReadable(path);
+  std::lock_guard<std::mutex> lock(hdf5Mutex());
+  H5::Exception::dontPrint();
+  try {
+    if (!H5::H5File::isHdf5(path)) throw InputError(path + ": not an HDF5 file");
+    H5::H5File file(path, H5F_ACC_RDONLY);
+    if (!file.nameExists("runs") || file.childObjType("runs") != H5O_TYPE_GROUP) {
+      throw InputError(path + ": no group /runs (not a run or batch dataset?)");
+    }
+    std::vector<std::string> names = runGroupNames(file.openGroup("runs"));
+    std::sort(names.begin(), names.end());
+    return names;
+  } catch (const H5::Exception& error) {
+    throw InputError(path + ": cannot read the file (" + error.getFuncName() + ": " +
+                     error.getDetailMsg() + ")");
+  }
+}
+
+StoredRun readRunDataset(const std::string& path, const std::string& run_name) {
+  checkReadable(path);
   std::lock_guard<std::mutex> lock(hdf5Mutex());
   H5::Exception::dontPrint();
   try {

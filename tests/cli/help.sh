@@ -25,6 +25,13 @@ grep -q 'walk_forward paper_experiment_a paper_experiment_b' "$WORKDIR/bench_hel
   || fail "bench --help does not show the default scenarios"
 "$wpg" plot --help >"$WORKDIR/plot_help" || fail "plot --help: exit status $?"
 grep -q 'RUN.png' "$WORKDIR/plot_help" || fail "plot --help does not show the default figure"
+grep -q '\bbatch\b' "$WORKDIR/help" || fail "--help lacks the batch subcommand"
+grep -q '\banalyze\b' "$WORKDIR/help" || fail "--help lacks the analyze subcommand"
+"$wpg" batch --help >"$WORKDIR/batch_help" || fail "batch --help: exit status $?"
+grep -q -- '--resume' "$WORKDIR/batch_help" || fail "batch --help lacks --resume"
+grep -q 'the number of cores' "$WORKDIR/batch_help" || fail "batch --help does not show the default -j"
+"$wpg" analyze --help >"$WORKDIR/analyze_help" || fail "analyze --help: exit status $?"
+grep -q 'table, csv or json' "$WORKDIR/analyze_help" || fail "analyze --help lacks the formats"
 "$wpg" --version | grep -Eq '^wpg [0-9]+\.[0-9]+\.[0-9]+' || fail "--version"
 status=0; "$wpg" 2>/dev/null >/dev/null || status=$?
 [[ $status == 2 ]] || fail "no subcommand: exit status $status, expected 2"

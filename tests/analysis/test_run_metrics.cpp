@@ -1,0 +1,139 @@
+// computeRunMetrics on hand-made trajectories whose metrics are known in closed form, the
+// quantile's interpolation, and the metric table (names unique, every field listed once).
+#include <cmath>
+#include <cstddef>
+#include <set>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "wpg/analysis/run_metrics.hpp"
+
+using wpg::IterationStatus;
+using wpg::analysis::computeRunMetrics;
+using wpg::analysis::quantile;
+using wpg::analysis::RunMetrics;
+
+namespace {
+
+// Standing on the left foot (ankle at the origin, yaw 0) for `samples` control periods while
+// the CoM moves at `velocity` along x; CoP at `cop`.
+wpg::WalkTrajectory straightLine(std::size_t samples, double velocity, const Eigen::Vector2d& cop,
+                                 double period) {
+  wpg::WalkTrajectory t;
+  for (std::size_t i = 0; i < samples; ++i) {
+    const double time = period * static_cast<double>(i);
+    t.time.push_back(time);
+    t.com.emplace_back(velocity * time, 0.0, 0.814);
+    t.com_vel.emplace_back(velocity, 0.0, 0.0);
+    t.com_acc.emplace_back(0.0, 0.0, 0.0);
+    t.cop.push_back(cop);
+    t.left_foot.emplace_back(0.0, 0.0, 0.0, 0.0);
+    t.right_foot.emplace_back(0.0, -0.19, 0.1, 0.0);
+    t.free_flyer_yaw.push_back(0.0);
+    t.support.push_back(wpg::SupportState::kLeft);
+  }
+  return t;
+}
+
+}  // namespace
+
+TEST(RunMetrics, QuantileInterpolatesBetweenOrderStatistics) {
+  EXPECT_DOUBLE_EQ(quantile({3.0, 1.0, 2.0, 4.0}, 0.5), 2.5);
+  EXPECT_DOUBLE_EQ(quantile({3.0, 1.0, 2.0, 4.0}, 0.0), 1.0);
+  EXPECT_DOUBLE_EQ(quantile({3.0, 1.0, 2.0, 4.0}, 1.0), 4.0);
+  EXPECT_DOUBLE_EQ(quantile({0.0, 10.0}, 0.99), 9.9);
+  EXPECT_TRUE(std::isnan(quantile({}, 0.5)));
+}
+
+TEST(RunMetrics, HandMadeWalk) {
+  wpg::WalkingParameters w;
+  wpg::WalkRequest request;
+  request.reference = {{0.0, Eigen::Vector3d(0.25, 0.0, 0.0)}};
+  const double v = 0.2;
+  // CoP 0.02 m in front of the ankle, 0.01 m to the left: the nearest sole edge is the side,
+  // foot_width / 2 - 0.01 away
+  wpg::WalkTrajectory t = straightLine(1000, v, Eigen::Vector2d(0.02, 0.01), w.control_period);
+  const int statuses[] = {0, 0, 1, 2, 6, 0, 3};
+  for (int k = 0; k < 7; ++k) {
+    wpg::MpcIterationLog log;
+    log.status = static_cast<IterationStatus>(statuses[k]);
+    log.qp_iterations = k + 1;
+    log.solve_time = 1e-5 * (k + 1);
+    t.mpc.push_back(log);
+  }
+  const RunMetrics m = computeRunMetrics(w, request, t, false, nullptr);
+  EXPECT_EQ(m.success, 0.0);
+  EXPECT_NEAR(m.distance, v * 999 * w.control_period, 1e-12);
+  // the CoM's mean velocity is v, the reference 0.25: error 0.05 at every sample
+  EXPECT_NEAR(m.velocity_error_rms, 0.05, 1e-12);
+  EXPECT_NEAR(m.velocity_error_max, 0.05, 1e-12);
+  const double side = 0.5 * w.foot_width - 0.01;
+  EXPECT_NEAR(m.cop_margin_min, side, 1e-12);
+  EXPECT_NEAR(m.cop_margin_median, side, 1e-12);
+  EXPECT_NEAR(m.cop_margin_mean, side, 1e-12);
+  EXPECT_TRUE(std::isnan(m.step_feasibility_margin_min));  // no landed step
+  EXPECT_TRUE(std::isnan(m.obstacle_clearance_min));        // no obstacle
+  EXPECT_TRUE(std::isnan(m.zmp_error_rms_before));          // not replayed
+  EXPECT_EQ(m.nmpc_iterations, 7.0);
+  EXPECT_DOUBLE_EQ(m.qp_iterations_total, 28.0);
+  EXPECT_DOUBLE_EQ(m.qp_iterations_mean, 4.0);
+  EXPECT_DOUBLE_EQ(m.qp_iterations_max, 7.0);
+  EXPECT_EQ(m.relaxed_iterations, 2.0);  // codes 1 and 6
+  EXPECT_EQ(m.failed_iterations, 2.0);   // codes 2 and 3
+  EXPECT_NEAR(m.nmpc_time_mean, 4e-5, 1e-15);
+  EXPECT_NEAR(m.nmpc_time_min, 1e-5, 1e-15);
+  EXPECT_NEAR(m.nmpc_time_max, 7e-5, 1e-15);
+  EXPECT_NEAR(m.nmpc_time_p99, 1e-5 * (6.0 + 0.94), 1e-15);  // position 0.99 * 6 = 5.94
+  EXPECT_NEAR(m.nmpc_time_std, 1e-5 * std::sqrt(28.0 / 6.0), 1e-15);
+}
+
+TEST(RunMetrics, StepsObstaclesAndZmpError) {
+  wpg::WalkingParameters w;
+  wpg::WalkRequest request;
+  wpg::Obstacle circle;
+  circle.type = wpg::ObstacleType::kCircle;
+  circle.center = Eigen::Vector2d(1.0, 0.0);
+  circle.radius = 0.2;
+  circle.margin = 0.05;
+  request.obstacles = {circle};
+  wpg::WalkTrajectory t = straightLine(10, 0.0, Eigen::Vector2d::Zero(), w.control_period);
+  const auto step = [](double time, double x, double y, double yaw, wpg::FootSide side) {
+    wpg::Footstep f;
+    f.landing_time = time;
+    f.pose = Eigen::Vector3d(x, y, yaw);
+    f.side = side;
+    return f;
+  };
+  t.footsteps = {step(0.0, 0.0, 0.095, 0.0, wpg::FootSide::kLeft),
+                 step(0.0, 0.0, -0.095, 0.0, wpg::FootSide::kRight),
+                 // 0.1 m ahead, 0.25 m to the left of the right foot, turned by 0.03 rad
+                 step(0.8, 0.1, 0.155, 0.03, wpg::FootSide::kLeft)};
+  wpg::analysis::ZmpErrorComparison zmp;
+  zmp.before = {0.02, 0.05};
+  zmp.after = {0.004, 0.01};
+  const RunMetrics m = computeRunMetrics(w, request, t, true, &zmp);
+  EXPECT_NEAR(m.yaw_bound_margin_min, w.max_step_yaw_change - 0.03, 1e-15);
+  // (0.1, 0.25) in the left feasibility polygon (eq. 14): its nearest edge is y = 0.2, 0.05 m
+  // away (the others are 0.089 m and more)
+  EXPECT_NEAR(m.step_feasibility_margin_min, 0.05, 1e-12);
+  // the nearest step to the circle is the last: |(0.1, 0.155) - (1, 0)| - R - margin - foot radius
+  EXPECT_NEAR(m.obstacle_clearance_min,
+              std::hypot(0.9, 0.155) - 0.2 - 0.05 - w.obstacle_foot_radius, 1e-12);
+  EXPECT_DOUBLE_EQ(m.zmp_error_rms_before, 0.02);
+  EXPECT_DOUBLE_EQ(m.zmp_error_max_after, 0.01);
+}
+
+TEST(RunMetrics, TableListsEveryFieldOnceWithAUnit) {
+  std::set<std::string> names;
+  std::set<std::ptrdiff_t> offsets;  // of each field in a RunMetrics
+  RunMetrics metrics;
+  const auto* base = reinterpret_cast<const char*>(&metrics);
+  for (const auto& metric : wpg::analysis::runMetricTable()) {
+    EXPECT_TRUE(names.insert(metric.name).second) << metric.name;
+    const auto* field = reinterpret_cast<const char*>(&(metrics.*metric.field));
+    EXPECT_TRUE(offsets.insert(field - base).second) << metric.name;
+    EXPECT_FALSE(std::string(metric.unit).empty()) << metric.name;
+  }
+  EXPECT_EQ(offsets.size() * sizeof(double), sizeof(RunMetrics));
+}

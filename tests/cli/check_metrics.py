@@ -1,0 +1,228 @@
+"""check_metrics.py FILE.h5 METRICS.json: every metric that `wpg analyze FILE.h5 --format json`
+printed (METRICS.json) agrees with a recomputation from the raw fields of FILE.h5, read with
+h5py and computed here with numpy, following the definitions of datasets/METRICS.md (not the
+analysis library). Exit 0 when all agree, 1 otherwise (each disagreement on stderr).
+"""
+import json
+import math
+import sys
+
+import h5py
+import numpy as np
+import yaml
+
+RTOL, ATOL = 1e-9, 1e-12
+errors = []
+
+
+def hull(points):
+    """Convex hull, counter-clockwise (monotone chain)."""
+    pts = sorted(set(map(tuple, np.round(points, 15))))
+    if len(pts) < 3:
+        return np.array(pts)
+
+    def cross(o, a, b):
+        return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0])
+    lower, upper = [], []
+    for p in pts:
+        while len(lower) >= 2 and cross(lower[-2], lower[-1], p) <= 0:
+            lower.pop()
+        lower.append(p)
+    for p in reversed(pts):
+        while len(upper) >= 2 and cross(upper[-2], upper[-1], p) <= 0:
+            upper.pop()
+        upper.append(p)
+    return np.array(lower[:-1] + upper[:-1])
+
+
+def ccw(vertices):
+    v = np.asarray(vertices, dtype=float)
+    area = np.sum(v[:, 0] * np.roll(v[:, 1], -1) - np.roll(v[:, 0], -1) * v[:, 1])
+    return v if area > 0 else v[::-1]
+
+
+def inside_distance(vertices, p):
+    """Signed distance inside a convex polygon to its nearest edge line (> 0 inside)."""
+    v = ccw(vertices)
+    best = math.inf
+    for a, b in zip(v, np.roll(v, -1, axis=0)):
+        edge = b - a
+        outward = np.array([edge[1], -edge[0]]) / np.hypot(*edge)
+        best = min(best, -np.dot(outward, p - a))
+    return best
+
+
+def rectangle(center, yaw, length, width):
+    c, s = math.cos(yaw), math.sin(yaw)
+    local = [(-length / 2, -width / 2), (length / 2, -width / 2), (length / 2, width / 2),
+             (-length / 2, width / 2)]
+    return np.array([(center[0] + c * x - s * y, center[1] + s * x + c * y) for x, y in local])
+
+
+def polygon_signed_distance(vertices, p):
+    """> 0 outside: distance to the nearest edge; inside: minus the distance to the nearest
+    edge line."""
+    d_in = inside_distance(vertices, p)
+    if d_in >= 0:
+        return -d_in
+    best = math.inf
+    v = ccw(vertices)
+    for a, b in zip(v, np.roll(v, -1, axis=0)):
+        t = np.clip(np.dot(p - a, b - a) / np.dot(b - a, b - a), 0.0, 1.0)
+        best = min(best, np.hypot(*(p - (a + t * (b - a)))))
+    return best
+
+
+def quantile(values, q):
+    return float(np.percentile(values, 100 * q)) if len(values) else math.nan
+
+
+def recompute(run, scenario):
+    w = scenario["walking"]
+    t = run["time"][:]
+    com = run["com"][:]
+    cop = run["cop"][:]
+    left, right = run["left_foot"][:], run["right_foot"][:]
+    yaw = run["free_flyer_yaw"][:]
+    support = run["support"][:]
+    steps = run["footsteps"][:]
+    sides = run["footstep_side"][:]
+    m = {}
+    m["success"] = float(run.attrs["success"])
+    m["distance"] = float(np.hypot(*(com[-1, :2] - com[0, :2])))
+    m["path_length"] = float(np.sum(np.hypot(*np.diff(com[:, :2], axis=0).T)))
+    m["steps"] = float(max(len(steps) - 2, 0))
+    m["duration"] = float(t[-1] - t[0])
+
+    # velocity error over a gait cycle (two steps)
+    step_duration = (w["single_support_samples"] + w["double_support_samples"]) * w["sampling_period"]
+    window = int(round(2 * step_duration / w["control_period"]))
+    reference = scenario["reference"]
+    ref = np.zeros((len(t), 2))
+    for i, ti in enumerate(t):
+        v = np.zeros(3)
+        for entry in reference:
+            if entry["t"] <= ti + 1e-9:
+                v = np.array(entry["v"], dtype=float)
+        c, s = math.cos(yaw[i]), math.sin(yaw[i])
+        ref[i] = (c * v[0] - s * v[1], s * v[0] + c * v[1])
+    errs = []
+    for i in range(window, len(t)):
+        mean_v = (com[i, :2] - com[i - window, :2]) / (t[i] - t[i - window])
+        mean_ref = ref[i - window + 1:i + 1].mean(axis=0)
+        errs.append(np.hypot(*(mean_v - mean_ref)))
+    m["velocity_error_rms"] = float(np.sqrt(np.mean(np.square(errs)))) if errs else math.nan
+    m["velocity_error_max"] = float(np.max(errs)) if errs else math.nan
+
+    # CoP margin: the sole (single support) or the hull of both soles (double support)
+    margins = []
+    for i in range(len(t)):
+        corners = []
+        if support[i] != 2:
+            corners.append(rectangle(left[i, :2], left[i, 3], w["foot_length"], w["foot_width"]))
+        if support[i] != 1:
+            corners.append(rectangle(right[i, :2], right[i, 3], w["foot_length"], w["foot_width"]))
+        polygon = hull(np.vstack(corners)) if support[i] == 0 else corners[0]
+        margins.append(inside_distance(polygon, cop[i]))
+    m["cop_margin_min"] = float(np.min(margins))
+    m["cop_margin_p05"] = quantile(margins, 0.05)
+    m["cop_margin_median"] = quantile(margins, 0.5)
+    m["cop_margin_mean"] = float(np.mean(margins))
+
+    # steps against the previous other-side step: feasibility polygon (eq. 14), yaw bound
+    fx, fy = w["feasibility_x"], w["feasibility_y"]
+    feas, yawm = [], []
+    for k in range(len(steps)):
+        if steps[k, 0] <= 0:
+            continue
+        prev = next((steps[j] for j in range(k - 1, -1, -1) if sides[j] != sides[k]), None)
+        if prev is None:
+            continue
+        c, s = math.cos(prev[3]), math.sin(prev[3])
+        d = steps[k, 1:3] - prev[1:3]
+        local = np.array([c * d[0] + s * d[1], -s * d[0] + c * d[1]])
+        sign = 1.0 if sides[k] == 1 else -1.0
+        polygon = np.array([(fx[i], sign * fy[i]) for i in range(5)])
+        feas.append(inside_distance(polygon, local))
+        yawm.append(w["max_step_yaw_change"] - abs(steps[k, 3] - prev[3]))
+    m["step_feasibility_margin_min"] = float(min(feas)) if feas else math.nan
+    m["yaw_bound_margin_min"] = float(min(yawm)) if yawm else math.nan
+
+    ob = run["obstacles"]
+    count = int(ob.attrs["count"])
+    if count and len(steps):
+        clearances = []
+        for k in range(len(steps)):
+            p = steps[k, 1:3]
+            for i in range(count):
+                if ob["type"][i] == 0:
+                    sd = np.hypot(*(p - ob["center"][i])) - ob["radius"][i]
+                else:
+                    s0, n = ob["vertex_start"][i], ob["vertex_count"][i]
+                    sd = polygon_signed_distance(ob["vertices"][s0:s0 + n], p)
+                clearances.append(sd - ob["margin"][i] - w["obstacle_foot_radius"])
+        m["obstacle_clearance_min"] = float(min(clearances))
+    else:
+        m["obstacle_clearance_min"] = math.nan
+
+    if "zmp_multibody" in run:
+        before = np.hypot(*(cop - run["zmp_multibody"][:]).T)
+        after = (np.hypot(*(cop - run["zmp_multibody_filtered"][:]).T)
+                 if "zmp_multibody_filtered" in run else before)
+        m["zmp_error_rms_before"] = float(np.sqrt(np.mean(before ** 2)))
+        m["zmp_error_max_before"] = float(np.max(before))
+        m["zmp_error_rms_after"] = float(np.sqrt(np.mean(after ** 2)))
+        m["zmp_error_max_after"] = float(np.max(after))
+    else:
+        for key in ("zmp_error_rms_before", "zmp_error_max_before", "zmp_error_rms_after",
+                    "zmp_error_max_after"):
+            m[key] = math.nan
+
+    qp = run["mpc/qp_iterations"][:].astype(float)
+    status = run["mpc/status"][:]
+    solve = run["mpc/solve_time"][:]
+    m["nmpc_iterations"] = float(len(qp))
+    m["qp_iterations_mean"] = float(qp.mean())
+    m["qp_iterations_max"] = float(qp.max())
+    m["qp_iterations_total"] = float(qp.sum())
+    m["relaxed_iterations"] = float(np.isin(status, [1, 6, 7]).sum())
+    m["failed_iterations"] = float(np.isin(status, [2, 3, 4, 5]).sum())
+    m["nmpc_time_mean"] = float(solve.mean())
+    m["nmpc_time_std"] = float(solve.std(ddof=1)) if len(solve) > 1 else math.nan
+    m["nmpc_time_min"] = float(solve.min())
+    m["nmpc_time_max"] = float(solve.max())
+    m["nmpc_time_p99"] = quantile(solve, 0.99)
+    return m
+
+
+def main():
+    with open(sys.argv[2]) as f:
+        printed = json.load(f)
+    checked = 0
+    with h5py.File(sys.argv[1], "r") as f:
+        names = sorted(f["runs"])
+        if sorted(printed) != names:
+            errors.append(f"runs printed {sorted(printed)} != runs in the file {names}")
+        for name in names:
+            run = f["runs"][name]
+            text = run.attrs["scenario"] if "scenario" in run.attrs else f.attrs["scenario"]
+            expected = recompute(run, yaml.safe_load(text))
+            got = printed.get(name, {})
+            if sorted(got) != sorted(expected):
+                errors.append(f"{name}: metric names {sorted(set(got) ^ set(expected))}")
+            for key, value in expected.items():
+                value_got = got.get(key)
+                value_got = math.nan if value_got is None else value_got
+                if math.isnan(value) and math.isnan(value_got):
+                    continue
+                if not math.isclose(value, value_got, rel_tol=RTOL, abs_tol=ATOL):
+                    errors.append(f"{name}: {key} = {value_got} printed, {value} recomputed")
+                checked += 1
+    for e in errors:
+        print(e, file=sys.stderr)
+    print(f"{checked} metric values checked, {len(errors)} disagree")
+    return 1 if errors or checked == 0 else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

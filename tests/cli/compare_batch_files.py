@@ -1,0 +1,69 @@
+"""compare_batch_files.py A.h5 B.h5: the two files hold the same contents, bit for bit, except
+the wall-time fields (datasets/SCHEMA.md, "Batch files": mpc/solve_time, the timing/ group and
+the summary's nmpc_time_* columns). Exit 0 same, 1 different (each difference on stderr).
+
+Reads both files with h5py only: every group, dataset (values and dtype) and attribute.
+"""
+import sys
+
+import h5py
+import numpy as np
+
+WALL_TIME = ("solve_time", "timing", "nmpc_time_mean", "nmpc_time_std", "nmpc_time_min",
+             "nmpc_time_max", "nmpc_time_p99")
+
+differences = []
+
+
+def same_values(a, b):
+    if isinstance(a, np.ndarray) or isinstance(b, np.ndarray):
+        a, b = np.asarray(a), np.asarray(b)
+        if a.shape != b.shape or a.dtype != b.dtype:
+            return False
+        if a.dtype.kind == "f":
+            # bit for bit, NaN equal to NaN
+            return a.tobytes() == b.tobytes()
+        return bool(np.all(a == b))
+    if isinstance(a, float) and isinstance(b, float) and np.isnan(a) and np.isnan(b):
+        return True
+    return a == b
+
+
+def compare_attributes(path, a, b):
+    if set(a.attrs) != set(b.attrs):
+        differences.append(f"{path}: attributes {sorted(set(a.attrs) ^ set(b.attrs))}")
+        return
+    for name in a.attrs:
+        if not same_values(a.attrs[name], b.attrs[name]):
+            differences.append(f"{path}: attribute {name} differs")
+
+
+def compare(path, a, b):
+    compare_attributes(path, a, b)
+    if isinstance(a, h5py.Group):
+        if not isinstance(b, h5py.Group):
+            differences.append(f"{path}: group vs dataset")
+            return
+        if set(a) != set(b):
+            differences.append(f"{path}: members {sorted(set(a) ^ set(b))}")
+        for name in sorted(set(a) & set(b)):
+            if name in WALL_TIME:
+                continue
+            compare(f"{path}/{name}", a[name], b[name])
+    else:
+        if not same_values(a[()], b[()]):
+            differences.append(f"{path}: values differ")
+
+
+def main():
+    with h5py.File(sys.argv[1], "r") as a, h5py.File(sys.argv[2], "r") as b:
+        compare("", a, b)
+    for line in differences[:20]:
+        print(line, file=sys.stderr)
+    if differences:
+        print(f"{len(differences)} differences", file=sys.stderr)
+    return 1 if differences else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

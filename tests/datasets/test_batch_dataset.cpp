@@ -1,0 +1,129 @@
+// The batch file (wpg/datasets/batch_dataset.hpp), read back with the HDF5 C++ API: run groups
+// with their scenario and swept values, the summary table filled row by row, prepared (chunks
+// compressed off the writer) and direct writes giving the same data, --resume's checks.
+#include <fstream>
+#include <iterator>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "hand_made_run.hpp"
+#include "hdf5_read.hpp"
+#include "test_support.hpp"
+#include "wpg/datasets/batch_dataset.hpp"
+#include "wpg/datasets/run_dataset_reader.hpp"
+
+namespace fs = std::filesystem;
+using namespace wpg::datasets;  // NOLINT: the API under test
+using namespace wpg_test;       // NOLINT: HDF5 readers
+
+namespace {
+
+class BatchFiles : public ScratchDirectoryTest {
+ protected:
+  BatchFiles() : ScratchDirectoryTest("wpg_test_batch") {}
+
+  Study load(const std::string& name, const std::string& grid) {
+    const fs::path path = directory_ / (name + ".yaml");
+    std::ofstream(path) << "name: " << name << "\nbase: walk_forward\nsweep:\n  grid: " << grid
+                        << "\n";
+    return loadStudy(
+        path.string(), [](const std::string& base) { return kScenariosDir + "/" + base + ".yaml"; },
+        kRobotsDir);
+  }
+
+  std::string bytes(const fs::path& path) {
+    std::ifstream file(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(file), {});
+  }
+};
+
+const std::vector<SummaryColumn> kColumns = {{"distance", "m", "distance walked", false},
+                                            {"steps", "1", "steps taken", true}};
+
+}  // namespace
+
+TEST_F(BatchFiles, RunsAndSummaryRowsAsTheyFinish) {
+  const Study study = load("three", "{robot_mass: [50.0, 55.0, 60.0]}");
+  const std::string path = (directory_ / "batch.h5").string();
+  const wpg::WalkResult direct = handMadeResult(300, 4, 6, 0.0);
+  const wpg::WalkResult prepared_result = handMadeResult(300, 4, 6, 0.0);
+  {
+    auto writer = BatchDatasetWriter::create(path, study, kColumns);
+    BatchRunRecord record;
+    record.run = &study.runs[0];
+    record.result = &direct;
+    record.values = {1.5, 3.0};
+    writer->write(record);
+    record.run = &study.runs[2];
+    record.result = &prepared_result;
+    record.exit_status = 1;
+    record.values = {2.5, 7.0};
+    const PreparedRun prepared = BatchDatasetWriter::prepare(record);
+    writer->write(record, &prepared);
+    writer->close();
+  }
+  H5::H5File file(path, H5F_ACC_RDONLY);
+  EXPECT_EQ(stringAttribute(file, "study_name"), "three");
+  EXPECT_EQ(intAttribute(file, "run_count"), 3);
+  const H5::Group runs = file.openGroup("runs");
+  ASSERT_EQ(runs.getNumObjs(), 2u);
+  const H5::Group run0 = runs.openGroup("three_0");
+  EXPECT_EQ(intAttribute(run0, "batch_index"), 0);
+  EXPECT_DOUBLE_EQ(doubleAttribute(run0, "sweep.robot_mass"), 50.0);
+  EXPECT_NE(stringAttribute(run0, "scenario").find("name: three_0"), std::string::npos);
+  // the prepared run's chunks hold the same values as the direct write
+  const H5::Group run2 = runs.openGroup("three_2");
+  for (const char* name : {"com", "cop", "left_foot", "time"}) {
+    EXPECT_EQ(readDoubles(run0, name), readDoubles(run2, name)) << name;
+  }
+  EXPECT_EQ(readDoubles(run0, "mpc/cost"), readDoubles(run2, "mpc/cost"));
+  EXPECT_DOUBLE_EQ(doubleAttribute(run2, "sweep.robot_mass"), 60.0);
+
+  const H5::Group table = file.openGroup("batch/summary");
+  EXPECT_EQ(readInts(table, "index"), (std::vector<int>{0, 1, 2}));
+  EXPECT_EQ(readInts(table, "exit_status"), (std::vector<int>{0, -1, 1}));
+  EXPECT_EQ(readInts(table, "steps"), (std::vector<int>{3, -1, 7}));
+  const std::vector<double> distance = readDoubles(table, "distance");
+  EXPECT_DOUBLE_EQ(distance[0], 1.5);
+  EXPECT_TRUE(std::isnan(distance[1]));
+  EXPECT_DOUBLE_EQ(distance[2], 2.5);
+  EXPECT_EQ(readDoubles(table, "sweep.robot_mass"), (std::vector<double>{50.0, 55.0, 60.0}));
+  file.close();
+
+  // read back as runs
+  EXPECT_EQ(listRuns(path), (std::vector<std::string>{"three_0", "three_2"}));
+  const StoredRun stored = readRunDataset(path, "three_2");
+  EXPECT_NE(stored.scenario_yaml.find("robot_mass: 60.0"), std::string::npos);
+  EXPECT_EQ(stored.result.trajectory.time.size(), 300u);
+  const BatchSummaryTable summary = readBatchSummary(path);
+  EXPECT_EQ(summary.rows, 3u);
+  EXPECT_EQ(summary.column_names.front(), "index");
+}
+
+TEST_F(BatchFiles, ResumeKnowsTheDoneRunsAndRefusesAnotherStudy) {
+  const Study study = load("three", "{robot_mass: [50.0, 55.0, 60.0]}");
+  const std::string path = (directory_ / "batch.h5").string();
+  const wpg::WalkResult result = handMadeResult(50, 3, 2);
+  {
+    auto writer = BatchDatasetWriter::create(path, study, kColumns);
+    BatchRunRecord record;
+    record.run = &study.runs[1];
+    record.result = &result;
+    record.values = {1.0, 1.0};
+    writer->write(record);
+  }
+  {
+    auto writer = BatchDatasetWriter::resume(path, study, kColumns);
+    EXPECT_EQ(writer->done(), (std::vector<bool>{false, true, false}));
+  }
+  const std::string before = bytes(path);
+  const Study other = load("three", "{robot_mass: [50.0, 55.0, 61.0]}");  // same name
+  EXPECT_THROW(BatchDatasetWriter::resume(path, other, kColumns), InputError);
+  const Study renamed = load("four", "{robot_mass: [50.0, 55.0, 60.0]}");
+  EXPECT_THROW(BatchDatasetWriter::resume(path, renamed, kColumns), InputError);
+  std::vector<SummaryColumn> more = kColumns;
+  more.push_back({"extra", "1", "", false});
+  EXPECT_THROW(BatchDatasetWriter::resume(path, study, more), InputError);
+  EXPECT_EQ(bytes(path), before);  // refused without a change
+}
