@@ -99,6 +99,7 @@ std::optional<ObstacleClearances> writeScenarioDataset(const std::string& path,
     ObstacleClearances least;
     least.obstacle_count = world.obstacleCount();
     least.step_centre = report.min_centre_clearance;
+    least.step_centre_bound = stepCentreBoundName(scenario.walking);
     least.sole = report.min_clearance;
     least.sole_to_obstacle = report.min_foot_distance;
     return least;

@@ -7,16 +7,20 @@ namespace wpg::datasets::detail {
 namespace {
 
 WalkingField numberField(const char* name, double WalkingParameters::*member) {
-  return {name, member, nullptr, nullptr, nullptr};
+  return {name, member, nullptr, nullptr, nullptr, nullptr};
 }
 WalkingField integerField(const char* name, int WalkingParameters::*member) {
-  return {name, nullptr, member, nullptr, nullptr};
+  return {name, nullptr, member, nullptr, nullptr, nullptr};
 }
 WalkingField polygonField(const char* name, std::array<double, 5> WalkingParameters::*member) {
-  return {name, nullptr, nullptr, member, nullptr};
+  return {name, nullptr, nullptr, member, nullptr, nullptr};
 }
 WalkingField headingField(const char* name, HeadingReference WalkingParameters::*member) {
-  return {name, nullptr, nullptr, nullptr, member};
+  return {name, nullptr, nullptr, nullptr, member, nullptr};
+}
+WalkingField obstacleFormField(const char* name,
+                               ObstacleDistanceForm WalkingParameters::*member) {
+  return {name, nullptr, nullptr, nullptr, nullptr, member};
 }
 
 }  // namespace
@@ -49,6 +53,7 @@ const std::vector<WalkingField>& walkingFields() {
       numberField("initial_foot_separation", &P::initial_foot_separation),
       numberField("stop_foot_separation", &P::stop_foot_separation),
       numberField("obstacle_foot_radius", &P::obstacle_foot_radius),
+      obstacleFormField("obstacle_distance_form", &P::obstacle_distance_form),
       polygonField("feasibility_x", &P::feasibility_x),
       polygonField("feasibility_y", &P::feasibility_y),
       numberField("max_step_yaw_change", &P::max_step_yaw_change),
@@ -89,6 +94,10 @@ void readWalkingFields(const Entries& entries, const std::string& prefix, bool r
     } else if (field.heading) {
       if (!node.IsScalar() || !parseHeadingReference(node.Scalar(), &(parameters->*field.heading)))
         source.fail(key, "support_foot or command", node);
+    } else if (field.obstacle_form) {
+      if (!node.IsScalar() ||
+          !parseObstacleDistanceForm(node.Scalar(), &(parameters->*field.obstacle_form)))
+        source.fail(key, "sole_clearance or paper", node);
     } else {
       const Eigen::Matrix<double, 5, 1> values =
           readVector<5>(node, key, "a list of 5 numbers [m]", source);
@@ -106,6 +115,8 @@ void emitWalkingFields(YAML::Emitter& out, const WalkingParameters& parameters) 
       out << parameters.*field.integer;
     } else if (field.heading) {
       out << headingReferenceName(parameters.*field.heading);
+    } else if (field.obstacle_form) {
+      out << obstacleDistanceFormName(parameters.*field.obstacle_form);
     } else {
       emitNumbers(out, (parameters.*field.polygon).data(), 5);
     }

@@ -39,6 +39,21 @@ const char* headingReferenceName(HeadingReference reference) {
   return reference == HeadingReference::kCommand ? "command" : "support_foot";
 }
 
+bool parseObstacleDistanceForm(const std::string& name, ObstacleDistanceForm* out) {
+  if (name == "sole_clearance") {
+    *out = ObstacleDistanceForm::kSoleClearance;
+  } else if (name == "paper") {
+    *out = ObstacleDistanceForm::kPaper;
+  } else {
+    return false;
+  }
+  return true;
+}
+
+const char* obstacleDistanceFormName(ObstacleDistanceForm form) {
+  return form == ObstacleDistanceForm::kPaper ? "paper" : "sole_clearance";
+}
+
 void WalkingParameters::validate() const {
   requirePositive(com_height, "com_height");
   requirePositive(gravity, "gravity");

@@ -147,7 +147,9 @@ TEST(ShippedScenarios, WalkForward) {
   EXPECT_DOUBLE_EQ(s.request.reference[1].t, 1.0);
   EXPECT_EQ(s.request.reference[1].velocity, Eigen::Vector3d(0.2, 0.0, 0.0));
   EXPECT_TRUE(s.request.pushes.empty());
-  EXPECT_DOUBLE_EQ(s.walking.max_step_yaw_change, 0.05);  // the paper's bound
+  // The authors' code's bound, which the 0.2 rad/s clamp on omega needs (the paper: 0.05).
+  EXPECT_DOUBLE_EQ(s.walking.max_step_yaw_change, 0.17);
+  EXPECT_EQ(s.walking.heading_reference, wpg::HeadingReference::kCommand);
   // No multibody replay unless asked; the filter's classic Kajita settings.
   EXPECT_FALSE(s.replay);
   EXPECT_FALSE(s.filter);
