@@ -92,8 +92,8 @@ double stepCentreMargin(const Obstacle& obstacle, const WalkingParameters& param
 
 const char* stepCentreBoundName(const WalkingParameters& parameters) {
   return parameters.obstacle_distance_form == ObstacleDistanceForm::kPaper
-             ? "sqrt(R^2 + m^2) from a circle's centre, margin from other shapes (eq. 18 as "
-               "written, point steps)"
+             ? "sqrt(R^2 + m^2) from a circle's centre (eq. 18 as written; margin for other "
+               "shapes)"
              : "margin + obstacle_foot_radius";
 }
 
