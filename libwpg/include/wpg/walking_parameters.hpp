@@ -2,7 +2,9 @@
 // Constant description of a walking robot for the pattern generator: timings, template-model
 // constants, foot geometry, step feasibility, cost weights. Defaults are HRP-2's, from the
 // paper (Naveau et al., RA-L 2017, Sec. V) and ../shared/DESIGN.md; robots/<name>/walking.yaml
-// restates them and scenarios may override any field (datasets/SCENARIOS.md).
+// restates them and scenarios may override any field (datasets/SCENARIOS.md). Four defaults
+// differ from the paper's text, on measurement (robots/hrp2/README.md): heading_reference,
+// weight_yaw, max_step_yaw_change (the authors' code's value) and obstacle_distance_form.
 #include <array>
 #include <string>
 #include <vector>
