@@ -94,7 +94,7 @@ struct WalkingParameters {
   //     nmpc_generator.cpp, updateFootVelIneqConstraint: xvmax = yvmax = 0.4 m/s,
   //     yawvmax = 1.5 rad/s). 0 switches the bound off (x and y, or yaw). Off by default: with
   //     the authors' values on HRP-2's `push` the swing foot's peak acceleration rises (18 ->
-  //     31 m/s^2, the correction is pushed to the last sample) and a push at 3.9 s that is
+  //     30 m/s^2, the correction is pushed to the last sample) and a push at 3.9 s that is
   //     rejected without the bound makes the robot fall (robots/hrp2/README.md).
   double max_landing_speed = 0.0;      // [m/s]
   double max_landing_yaw_rate = 0.0;   // [rad/s]
