@@ -24,7 +24,8 @@ enum class HeadingReference {
   kSupportFoot,
   // The command's own heading: the robot's yaw when the walk started plus the integral of the
   // commanded omega. J2 tracks it and J1 turns the command by it, so a robot that had to turn
-  // returns to the commanded heading (wpg option; used to get round obstacles on the path).
+  // returns to the commanded heading (wpg; the default: straight walks, tracked turns, going
+  // round obstacles on the path).
   kCommand,
 };
 // Parses "support_foot" / "command"; returns false on anything else.
