@@ -194,6 +194,7 @@ std::optional<FootstepCheck> checkScenarioFootsteps(const datasets::Scenario& sc
     check.clearances.foot_distance = report.foot_distance;
     check.least.obstacle_count = world.obstacleCount();
     check.least.step_centre = report.min_centre_clearance;
+    check.least.step_centre_bound = stepCentreBoundName(scenario.walking);
     check.least.sole = report.min_clearance;
     check.least.sole_to_obstacle = report.min_foot_distance;
     return check;

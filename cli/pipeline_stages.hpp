@@ -76,8 +76,9 @@ ScenarioRun runScenario(const robots::RobotModel* model, const datasets::Scenari
 // wpg/planning/obstacle_checks.hpp), minima over the steps [m].
 struct ObstacleClearances {
   int obstacle_count = 0;
-  double step_centre = 0.0;  // signed distance of the step centre - margin - obstacle_foot_radius:
-                             // the margin of the NMPC's constraint, >= 0 when it holds
+  double step_centre = 0.0;  // signed distance of the step centre - the NMPC's bound (margin +
+                             // obstacle_foot_radius, or the paper's form): >= 0 when it holds
+  const char* step_centre_bound = "";  // that bound in words (wpg::stepCentreBoundName)
   double sole = 0.0;         // signed distance of the sole - margin
   double sole_to_obstacle = 0.0;  // signed distance of the sole, margin not counted
 };

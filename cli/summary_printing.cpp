@@ -46,8 +46,8 @@ void printRunSummary(std::ostream& out, const datasets::Scenario& scenario,
 
 void printObstacleClearances(std::ostream& out, const ObstacleClearances& clearances) {
   out << "obstacles " << clearances.obstacle_count
-      << "; least clearance: step centre to margin + obstacle_foot_radius (the NMPC's "
-         "constraint) "
+      << "; least clearance: step centre to " << clearances.step_centre_bound
+      << " (the NMPC's constraint) "
       << fixed(clearances.step_centre, 3) << " m, sole to margin " << fixed(clearances.sole, 3)
       << " m; sole to obstacle " << fixed(clearances.sole_to_obstacle, 3) << " m\n";
 }

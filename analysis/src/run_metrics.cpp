@@ -105,8 +105,8 @@ double obstacleClearance(const WalkingParameters& w, const WalkRequest& request,
   double least = std::numeric_limits<double>::infinity();
   for (const Footstep& step : tr.footsteps) {
     for (int i = 0; i < obstacles.obstacleCount(); ++i) {
-      least = std::min(least, stepCentreClearance(obstacles, i, obstacles.obstacle(i).margin,
-                                                  step.pose.head<2>(), w.obstacle_foot_radius));
+      least = std::min(least, stepCentreClearance(obstacles, i, obstacles.obstacle(i), w,
+                                                  step.pose.head<2>()));
     }
   }
   return least;

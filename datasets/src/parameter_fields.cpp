@@ -26,6 +26,13 @@ const WalkingChoice kHeadingReference{
     },
     [](const WalkingParameters& p) { return headingReferenceName(p.heading_reference); }};
 
+const WalkingChoice kObstacleDistanceForm{
+    "sole_clearance or paper",
+    [](const std::string& name, WalkingParameters* p) {
+      return parseObstacleDistanceForm(name, &p->obstacle_distance_form);
+    },
+    [](const WalkingParameters& p) { return obstacleDistanceFormName(p.obstacle_distance_form); }};
+
 const WalkingChoice kZeroCommandGait{
     "stop or step_in_place",
     [](const std::string& name, WalkingParameters* p) {
@@ -74,6 +81,7 @@ const std::vector<WalkingField>& walkingFields() {
       numberField("initial_foot_separation", &P::initial_foot_separation),
       numberField("stop_foot_separation", &P::stop_foot_separation),
       numberField("obstacle_foot_radius", &P::obstacle_foot_radius),
+      choiceField("obstacle_distance_form", &kObstacleDistanceForm),
       polygonField("feasibility_x", &P::feasibility_x),
       polygonField("feasibility_y", &P::feasibility_y),
       numberField("max_step_yaw_change", &P::max_step_yaw_change),

@@ -31,10 +31,10 @@ FootstepObstacleChecks checkFootstepsAgainstObstacles(const WalkingParameters& p
     for (std::size_t s = 0; s < steps; ++s) {
       const Eigen::Vector2d ankle = trajectory.footsteps[s].pose.head<2>();
       for (int i = 0; i < distance.obstacleCount(); ++i) {
-        // The NMPC's obstacle row (eq. 18-19): d(f) >= margin + obstacle_foot_radius.
-        const double value =
-            stepCentreClearance(distance, i, obstacles[static_cast<std::size_t>(i)].margin,
-                                ankle, parameters.obstacle_foot_radius);
+        // The NMPC's obstacle row (eq. 18-19): d(f) >= stepCentreMargin (margin +
+        // obstacle_foot_radius, or the paper's sqrt(R^2 + m^2) - R: obstacle_distance_form).
+        const double value = stepCentreClearance(
+            distance, i, obstacles[static_cast<std::size_t>(i)], parameters, ankle);
         if (value < checks.step_centre_clearance[s]) {
           checks.step_centre_clearance[s] = value;
           checks.step_centre_clearance_obstacle[s] = i;

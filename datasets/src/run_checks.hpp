@@ -18,7 +18,8 @@ namespace wpg::datasets::detail {
 struct FootstepObstacleChecks {
   // The step centres against the NMPC's obstacle constraint (eq. 18-19, the margin grown by the
   // sole radius), with libwpg's exact 2-D distance: min over obstacles of
-  // sd(ankle, obstacle) - margin - parameters.obstacle_foot_radius [m], >= 0 when the constraint
+  // sd(ankle, obstacle) - margin - parameters.obstacle_foot_radius [m] (or the paper's bound,
+  // parameters.obstacle_distance_form: wpg::stepCentreClearance), >= 0 when the constraint
   // holds; the obstacle of that minimum (-1 without obstacles).
   std::vector<double> step_centre_clearance;
   std::vector<int> step_centre_clearance_obstacle;

@@ -278,7 +278,9 @@ void writeObstacles(H5::Group& run, const std::vector<Obstacle>& obstacles) {
       group, "margin", margins, 0,
       {"m", nullptr,
        "security margin (eq. 18-19): the NMPC keeps step centres margin + the walking parameter "
-       "obstacle_foot_radius away from the obstacle",
+       "obstacle_foot_radius away from the obstacle (walking.obstacle_distance_form: "
+       "sole_clearance; paper: sqrt(radius^2 + margin^2) from a circle's centre, margin from "
+       "other shapes)",
        nullptr});
   writeDoubles(group, "vertices", vertices, 2,
                {"m", "world",
@@ -299,7 +301,9 @@ void writeObstacleChecks(H5::Group& checks, const FootstepObstacleChecks& steps,
                {"m", nullptr,
                 "per footstep, min over obstacles of (signed distance of the ankle point to the "
                 "obstacle - margin - obstacle_foot_radius): the margin of the NMPC's obstacle "
-                "constraint (eq. 18-19), >= 0 when it holds",
+                "constraint (eq. 18-19), >= 0 when it holds; with walking.obstacle_distance_form "
+                "paper the bound is the paper's instead (sqrt(radius^2 + margin^2) - radius for "
+                "a circle, margin for other shapes)",
                 nullptr});
   writeInts(checks, "step_centre_clearance_obstacle", steps.step_centre_clearance_obstacle,
             {"1", nullptr, "index (row of obstacles/) of the obstacle of step_centre_clearance",

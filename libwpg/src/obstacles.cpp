@@ -81,9 +81,26 @@ ObstacleSet::ObstacleSet(std::vector<Obstacle> obstacles) : obstacles_(std::move
   }
 }
 
-double stepCentreClearance(const ObstacleDistanceOracle& distance, int index, double margin,
-                           const Eigen::Vector2d& centre, double foot_radius) {
-  return distance.signedDistance(index, centre, nullptr) - margin - foot_radius;
+double stepCentreMargin(const Obstacle& obstacle, const WalkingParameters& parameters) {
+  if (parameters.obstacle_distance_form == ObstacleDistanceForm::kSoleClearance)
+    return obstacle.margin + parameters.obstacle_foot_radius;
+  if (obstacle.type != ObstacleType::kCircle) return obstacle.margin;
+  // eq. (18): |f - c| >= sqrt(R^2 + m^2), i.e. the signed distance |f - c| - R at least this
+  const double R = obstacle.radius, m = obstacle.margin;
+  return std::sqrt(R * R + m * m) - R;
+}
+
+const char* stepCentreBoundName(const WalkingParameters& parameters) {
+  return parameters.obstacle_distance_form == ObstacleDistanceForm::kPaper
+             ? "sqrt(R^2 + m^2) from a circle's centre (eq. 18 as written; margin for other "
+               "shapes)"
+             : "margin + obstacle_foot_radius";
+}
+
+double stepCentreClearance(const ObstacleDistanceOracle& distance, int index,
+                           const Obstacle& obstacle, const WalkingParameters& parameters,
+                           const Eigen::Vector2d& centre) {
+  return distance.signedDistance(index, centre, nullptr) - stepCentreMargin(obstacle, parameters);
 }
 
 double circleSignedDistance(const Eigen::Vector2d& center, double radius,

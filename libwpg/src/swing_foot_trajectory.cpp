@@ -6,6 +6,7 @@ namespace wpg {
 
 void QuinticToRest::plan(double p0, double v0, double a0, double p1, double T) {
   duration_ = T;
+  target_ = p1;
   c_[0] = p0;
   c_[1] = v0;
   c_[2] = 0.5 * a0;
@@ -23,7 +24,10 @@ void QuinticToRest::plan(double p0, double v0, double a0, double p1, double T) {
 }
 
 Eigen::Vector3d QuinticToRest::evaluate(double t) const {
-  t = std::clamp(t, 0.0, std::max(duration_, 0.0));
+  // At the end (and after): the target itself, at rest, so that the foot lands exactly where
+  // the landing is reported (the Horner sum at T differs from p1 by rounding).
+  if (t >= duration_) return {target_, 0.0, 0.0};
+  t = std::max(t, 0.0);
   const double p = c_[0] + t * (c_[1] + t * (c_[2] + t * (c_[3] + t * (c_[4] + t * c_[5]))));
   const double v = c_[1] + t * (2 * c_[2] + t * (3 * c_[3] + t * (4 * c_[4] + t * 5 * c_[5])));
   const double a = 2 * c_[2] + t * (6 * c_[3] + t * (12 * c_[4] + t * 20 * c_[5]));

@@ -21,19 +21,20 @@ void record(const ControlSample& s, WalkTrajectory& out) {
   out.support.push_back(s.support);
 }
 
-// The feet must start clear of every obstacle grown by its margin (and the sole radius).
+// The feet must start clear of every obstacle grown by the obstacle rows' bound (its margin and
+// the sole radius by default; obstacle_distance_form).
 void requireFeetClear(const OnlineWalkingGenerator& generator, const WalkRequest& request,
                       const ObstacleDistanceOracle& distance) {
-  const double foot_radius = generator.parameters().obstacle_foot_radius;
+  const WalkingParameters& parameters = generator.parameters();
   for (int o = 0; o < static_cast<int>(request.obstacles.size()); ++o) {
     for (FootSide side : {FootSide::kLeft, FootSide::kRight}) {
       const Eigen::Vector3d& foot = generator.patternGenerator().footPose(side);
-      const double clearance = stepCentreClearance(distance, o, request.obstacles[o].margin,
-                                                   foot.head<2>(), foot_radius);
+      const double clearance = stepCentreClearance(distance, o, request.obstacles[o],
+                                                   parameters, foot.head<2>());
       if (clearance < 0.0) {
         throw std::invalid_argument(
-            "'obstacles[" + std::to_string(o) + "]': expected the obstacle, its margin and " +
-            "the sole radius clear of the initial feet, but the " +
+            "'obstacles[" + std::to_string(o) + "]': expected the initial feet clear of the " +
+            "obstacle grown by " + stepCentreBoundName(parameters) + ", but the " +
             (side == FootSide::kLeft ? "left" : "right") + " foot is " +
             std::to_string(-clearance) + " m inside");
       }
@@ -48,14 +49,14 @@ void checkLandingsClear(const WalkingParameters& parameters, const WalkRequest& 
   for (const Footstep& step : result.trajectory.footsteps) {
     if (step.landing_time <= 0.0) continue;
     for (int o = 0; o < static_cast<int>(request.obstacles.size()); ++o) {
-      const double clearance =
-          stepCentreClearance(distance, o, request.obstacles[o].margin, step.pose.head<2>(),
-                              parameters.obstacle_foot_radius);
+      const double clearance = stepCentreClearance(distance, o, request.obstacles[o],
+                                                   parameters, step.pose.head<2>());
       if (clearance < -1e-6 && result.success) {
         result.success = false;
         result.message = "the step landing at t = " + std::to_string(step.landing_time) +
                          " s is " + std::to_string(-clearance) + " m inside obstacle " +
-                         std::to_string(o) + "'s margin (its constraint had to be relaxed)";
+                         std::to_string(o) + "'s margin (" + stepCentreBoundName(parameters) +
+                         "; its constraint had to be relaxed)";
       }
     }
   }

@@ -69,6 +69,21 @@ const char* standingPushResponseName(StandingPushResponse response) {
   return response == StandingPushResponse::kStand ? "stand" : "step";
 }
 
+bool parseObstacleDistanceForm(const std::string& name, ObstacleDistanceForm* out) {
+  if (name == "sole_clearance") {
+    *out = ObstacleDistanceForm::kSoleClearance;
+  } else if (name == "paper") {
+    *out = ObstacleDistanceForm::kPaper;
+  } else {
+    return false;
+  }
+  return true;
+}
+
+const char* obstacleDistanceFormName(ObstacleDistanceForm form) {
+  return form == ObstacleDistanceForm::kPaper ? "paper" : "sole_clearance";
+}
+
 void WalkingParameters::validate() const {
   requirePositive(com_height, "com_height");
   requirePositive(gravity, "gravity");

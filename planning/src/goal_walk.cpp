@@ -358,8 +358,8 @@ GoalWalkResult walkToGoal(const wpg::WalkingParameters& parameters, const wpg::W
       if (step.landing_time <= 0.0) continue;
       for (int o = 0; o < static_cast<int>(request.obstacles.size()) && walk.success; ++o) {
         const double clearance =
-            stepCentreClearance(*generator.obstacleDistance(), o, request.obstacles[o].margin,
-                                step.pose.head<2>(), parameters.obstacle_foot_radius);
+            stepCentreClearance(*generator.obstacleDistance(), o, request.obstacles[o], parameters,
+                                step.pose.head<2>());
         if (clearance < -1e-6) {
           walk.success = false;
           walk.message = "the step landing at t = " + std::to_string(step.landing_time) + " s is " +

@@ -39,9 +39,11 @@ FootstepObstacleReport checkFootsteps(const World& world, const wpg::WalkingPara
         report.clearance_obstacle[s] = i;
       }
       report.foot_distance[s] = std::min(report.foot_distance[s], clearance + margin);
-      // The NMPC's obstacle row (eq. 18-19): the margin grown by the sole radius.
-      const double centre = wpg::stepCentreClearance(world, i, margin, pose.head<2>(),
-                                                     parameters.obstacle_foot_radius);
+      // The NMPC's obstacle row (eq. 18-19): the margin grown by the sole radius, or the
+      // paper's sqrt(R^2 + m^2) (parameters.obstacle_distance_form).
+      const double centre =
+          wpg::stepCentreClearance(world, i, world.obstacles()[static_cast<std::size_t>(i)],
+                                   parameters, pose.head<2>());
       if (centre < report.centre_clearance[s]) {
         report.centre_clearance[s] = centre;
         report.centre_clearance_obstacle[s] = i;

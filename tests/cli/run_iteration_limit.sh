@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# run_iteration_limit.sh WPG: a QP capped at 2 active-set iterations (`--set
-# generator.max_qp_iterations=2`, which caps 40 of walk_forward's 100 QPs) makes the walk fail
+# run_iteration_limit.sh WPG: a QP capped at 1 active-set iteration (`--set
+# generator.max_qp_iterations=1`, which caps 63 of walk_forward's 100 QPs; with the defaults of
+# issue 9 none needs more than 2, the paper's cost capped 40 at 2) makes the walk fail
 # honestly: exit 1, the dataset still written, its mpc/status holding iteration_limit (code 3)
 # rows, the run's `success` attribute 0, and the summary counting exactly those rows as
 # iteration_limit.
@@ -10,7 +11,7 @@ source "$(dirname "$0")/common.sh"
 wpg="$1"
 make_workdir
 status=0
-"$wpg" run walk_forward --set generator.max_qp_iterations=2 -o "$WORKDIR/capped.h5" --no-plot \
+"$wpg" run walk_forward --set generator.max_qp_iterations=1 -o "$WORKDIR/capped.h5" --no-plot \
   >"$WORKDIR/stdout" 2>"$WORKDIR/stderr" || status=$?
 cat "$WORKDIR/stdout"; cat "$WORKDIR/stderr" >&2
 [[ $status == 1 ]] || fail "exit status $status, expected 1 (the walk failed)"

@@ -147,7 +147,9 @@ TEST(ShippedScenarios, WalkForward) {
   EXPECT_DOUBLE_EQ(s.request.reference[1].t, 1.0);
   EXPECT_EQ(s.request.reference[1].velocity, Eigen::Vector3d(0.2, 0.0, 0.0));
   EXPECT_TRUE(s.request.pushes.empty());
-  EXPECT_DOUBLE_EQ(s.walking.max_step_yaw_change, 0.05);  // the paper's bound
+  // The authors' code's bound, which the 0.2 rad/s clamp on omega needs (the paper: 0.05).
+  EXPECT_DOUBLE_EQ(s.walking.max_step_yaw_change, 0.17);
+  EXPECT_EQ(s.walking.heading_reference, wpg::HeadingReference::kCommand);
   // No multibody replay unless asked; the filter's classic Kajita settings.
   EXPECT_FALSE(s.replay);
   EXPECT_FALSE(s.filter);
@@ -314,13 +316,25 @@ TEST(ShippedScenarios, FilterModeKeys) {
 // Malformed input: one InputError line naming the file and the key
 // ---------------------------------------------------------------------------------------------
 
+// The non-default value (command is the default since issue 9): the paper's support_foot.
 TEST(Overrides, HeadingReferenceRoundTrips) {
-  const Scenario s = loadShipped("walk_forward", {"walking.heading_reference=command"});
-  EXPECT_EQ(s.walking.heading_reference, wpg::HeadingReference::kCommand);
-  EXPECT_NE(s.resolved_yaml.find("heading_reference: command"), std::string::npos);
+  const Scenario s = loadShipped("walk_forward", {"walking.heading_reference=support_foot"});
+  EXPECT_EQ(s.walking.heading_reference, wpg::HeadingReference::kSupportFoot);
+  EXPECT_NE(s.resolved_yaml.find("heading_reference: support_foot"), std::string::npos);
   const Scenario again =
       wpg::datasets::loadScenarioText(s.resolved_yaml, "run.h5:/scenario", {}, kRobotsDir);
-  EXPECT_EQ(again.walking.heading_reference, wpg::HeadingReference::kCommand);
+  EXPECT_EQ(again.walking.heading_reference, wpg::HeadingReference::kSupportFoot);
+}
+
+TEST(Overrides, ObstacleDistanceFormRoundTrips) {
+  EXPECT_EQ(loadShipped("walk_forward").walking.obstacle_distance_form,
+            wpg::ObstacleDistanceForm::kSoleClearance);
+  const Scenario s = loadShipped("walk_forward", {"walking.obstacle_distance_form=paper"});
+  EXPECT_EQ(s.walking.obstacle_distance_form, wpg::ObstacleDistanceForm::kPaper);
+  EXPECT_NE(s.resolved_yaml.find("obstacle_distance_form: paper"), std::string::npos);
+  const Scenario again =
+      wpg::datasets::loadScenarioText(s.resolved_yaml, "run.h5:/scenario", {}, kRobotsDir);
+  EXPECT_EQ(again.walking.obstacle_distance_form, wpg::ObstacleDistanceForm::kPaper);
 }
 
 TEST_F(ScenarioFiles, ValidBaseLoads) {
@@ -375,6 +389,10 @@ TEST_F(ScenarioFiles, WrongTypes) {
   expectError("walking_heading.yaml",
               replaced(kValidScenario, "max_step_yaw_change: 0.17", "heading_reference: world"),
               {"'walking.heading_reference'", "support_foot or command", "got world"});
+  expectError("walking_obstacle_form.yaml",
+              replaced(kValidScenario, "max_step_yaw_change: 0.17",
+                       "obstacle_distance_form: points"),
+              {"'walking.obstacle_distance_form'", "sole_clearance or paper", "got points"});
   expectError("name_slash.yaml", replaced(kValidScenario, "name: test_case", "name: a/b"),
               {"'name'", "got a/b"});
   expectError("not_a_map.yaml", "- just\n- a list\n", {"expected a map"});

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "../common/obstacle_fields.hpp"
+#include "../common/paper_gait.hpp"
 #include "nmpc_test_problems.hpp"
 #include "test_constraint_families.hpp"
 #include "wpg/nmpc.hpp"
@@ -120,7 +121,10 @@ TEST(ConstraintFamilies, EachFamilyMatchesFiniteDifferences) {
 // A new family is one class and one registration: its rows come after the built-in ones, the
 // finite-difference checker works on it, and the SQP to convergence satisfies it.
 TEST(ConstraintFamilies, AddedFamilyIsEnforced) {
-  const WalkingParameters w;
+  // The paper's gait: with the default yaw bound (0.17 rad) full-step Gauss-Newton with this
+  // extra family cycles at one sample of the walk (50 iterations, no convergence; measured),
+  // and this test is about the family's interface, not about the SQP's globalization.
+  const WalkingParameters w = paperGait();
   NmpcModel model(w, wpg::GeneratorSettings().max_obstacles_in_qp);  // the generator's slots
   // Compatible with the feasibility polygon (the next step lands 0.2 m to 0.4 m aside) but
   // tighter: at 0.3 m/s the step after next wants to land ~0.5 m ahead of the support.
@@ -251,7 +255,9 @@ TEST(ConstraintFamilies, ObstacleRowsRelaxFirst) {
 
 // A QP stopped by its iteration limit is not executed: the plan stays the shifted previous one.
 TEST(ConstraintFamilies, CappedQpKeepsTheShiftedPlan) {
-  const WalkingParameters w;
+  // The paper's gait, whose cold QPs need more than two working-set updates (the defaults'
+  // need at most two on this walk).
+  const WalkingParameters w = paperGait();
   const Samples samples = walkingSamples(w, 8);
   const NmpcModel model(w, wpg::GeneratorSettings().max_obstacles_in_qp);
   NmpcSolver solver(model);

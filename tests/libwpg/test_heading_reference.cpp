@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "../common/paper_gait.hpp"
 #include "wpg/pattern_generator.hpp"
 #include "wpg/walk_generator.hpp"
 
@@ -18,8 +19,9 @@ wpg::WalkRequest curveRequest() {
 }
 
 double finalYaw(wpg::HeadingReference reference, const wpg::WalkRequest& request) {
-  wpg::WalkingParameters parameters;
-  parameters.max_step_yaw_change = 0.17;  // 0.2 rad/s needs 0.16 rad per step
+  // The paper's J2 weight (alpha) with the default yaw bound (0.2 rad/s needs 0.16 rad/step).
+  wpg::WalkingParameters parameters = wpg_test::paperGait();
+  parameters.max_step_yaw_change = 0.17;
   parameters.heading_reference = reference;
   const wpg::WalkResult result = wpg::generateWalk(parameters, request);
   EXPECT_TRUE(result.success) << result.message;
@@ -35,7 +37,8 @@ TEST(HeadingReference, ParsesItsNames) {
   EXPECT_FALSE(wpg::parseHeadingReference("world", &r));
   EXPECT_STREQ(wpg::headingReferenceName(wpg::HeadingReference::kCommand), "command");
   EXPECT_STREQ(wpg::headingReferenceName(wpg::HeadingReference::kSupportFoot), "support_foot");
-  EXPECT_EQ(wpg::WalkingParameters().heading_reference, wpg::HeadingReference::kSupportFoot);
+  // The default since issue 9 (straight walks and tracked turns); the paper's is support_foot.
+  EXPECT_EQ(wpg::WalkingParameters().heading_reference, wpg::HeadingReference::kCommand);
 }
 
 TEST(HeadingReference, CommandHeadingTracksTheIntegralOfOmega) {
@@ -86,7 +89,8 @@ TEST(HeadingReference, ARestartWalksOnFromWhereTheRobotStopped) {
                        {1.0, Eigen::Vector3d(0.1, 0.0, 0.2)},
                        {5.0, Eigen::Vector3d::Zero()},
                        {9.0, Eigen::Vector3d(0.2, 0.0, 0.0)}};
-  wpg::WalkingParameters parameters;
+  // The paper's yaw bound and J2 weight (the situation this test builds), command heading.
+  wpg::WalkingParameters parameters = wpg_test::paperGait();
   parameters.heading_reference = wpg::HeadingReference::kCommand;
   const wpg::WalkResult result = wpg::generateWalk(parameters, request);
   ASSERT_TRUE(result.success) << result.message;

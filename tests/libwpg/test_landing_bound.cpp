@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "../common/paper_gait.hpp"
 #include "nmpc_test_problems.hpp"
 #include "wpg/nmpc.hpp"
 #include "wpg/nmpc/numdiff.hpp"
@@ -26,8 +27,10 @@ using namespace wpg_test;
 constexpr int kLandingFamily = 4;     // x, y (registration order, NmpcModel's constructor)
 constexpr int kLandingYawFamily = 5;  // yaw
 
+// The paper's gait (the push of HoldsBetweenConsecutiveSamplesOfAPushedWalk was placed for it;
+// with the default gait that push does not make the bound act).
 WalkingParameters boundOn() {
-  WalkingParameters w;
+  WalkingParameters w = wpg_test::paperGait();
   w.max_landing_speed = 0.4;  // the authors' values (walking_parameters.hpp)
   w.max_landing_yaw_rate = 1.5;
   return w;

@@ -82,12 +82,18 @@ TEST(NmpcJacobian, MatchesCentralFiniteDifferencesEverywhere) {
   ::testing::Test::RecordProperty("worst_relative_error", std::to_string(worst));
 }
 
-// Obstacle rows (eq. 18-19): circles in the paper's squared form, a box and a polygon through
-// the analytic signed distance; steps kept away from the obstacle boundaries and from the
-// polygon's medial axis regions where the distance is not differentiable (outside only).
-TEST(NmpcJacobian, ObstacleRowsMatchFiniteDifferences) {
+// Obstacle rows (eq. 18-19): circles in the squared form, a box and a polygon through the
+// analytic signed distance; steps kept away from the obstacle boundaries and from the
+// polygon's medial axis regions where the distance is not differentiable (outside only). Both
+// forms of the bound (WalkingParameters::obstacle_distance_form): the default sole_clearance,
+// |F - c|^2 >= (R + m + obstacle_foot_radius)^2, and the paper's eq. (18) as written,
+// |F - c|^2 >= R^2 + m^2.
+class ObstacleRows : public ::testing::TestWithParam<wpg::ObstacleDistanceForm> {};
+
+TEST_P(ObstacleRows, MatchFiniteDifferencesAndTheirForm) {
+  const bool paper = GetParam() == wpg::ObstacleDistanceForm::kPaper;
   WalkingParameters w;
-  w.max_step_yaw_change = 0.17;
+  w.obstacle_distance_form = GetParam();
   const int slots = 4;
   const NmpcModel model(w, slots);
   const NmpcLayout& L = model.layout();
@@ -127,6 +133,8 @@ TEST(NmpcJacobian, ObstacleRowsMatchFiniteDifferences) {
       EXPECT_LE(check.worst, 1e-6) << "pattern " << pattern << " trial " << trial << ": row "
                                    << check.worst_row << " (" << describeRow(L, check.worst_row)
                                    << "), column " << check.worst_column;
+      // The obstacle family alone (family 3), as every family's own check does.
+      EXPECT_LE(wpg::checkConstraintJacobian(model, problem, U, 3).worst, 1e-6);
       // Values: the circle's squared form, the others' margin - distance; -1 for the empty
       // slot and for fixed steps.
       VectorXd g(L.inequalityCount());
@@ -137,12 +145,15 @@ TEST(NmpcJacobian, ObstacleRowsMatchFiniteDifferences) {
           for (int k = 0; k < slots; ++k) EXPECT_EQ(g(L.obstacleRow(i, k)), -1.0);
           continue;
         }
-        // margins grown by the sole radius (WalkingParameters::obstacle_foot_radius)
-        const double foot = model.parameters().obstacle_foot_radius;
-        const double r = obstacles[0].radius + obstacles[0].margin + foot;
-        // the paper's circle form (R + m)^2 - |F - c|^2, scaled by 1 / (2 (R + m)) to metres
-        EXPECT_NEAR(g(L.obstacleRow(i, 0)),
-                    (r * r - (F - obstacles[0].center).squaredNorm()) / (2.0 * r), 1e-12);
+        // sole_clearance: margins grown by the sole radius (obstacle_foot_radius); the
+        // paper's form: point steps
+        const double foot = paper ? 0.0 : model.parameters().obstacle_foot_radius;
+        const double R = obstacles[0].radius, m = obstacles[0].margin;
+        const double bound = paper ? R * R + m * m : (R + m + foot) * (R + m + foot);
+        // bound - |F - c|^2 (eq. 18: the paper's R^2 + m^2, or (R + m + r_sole)^2), scaled by
+        // 1 / (2 sqrt(bound)) to metres
+        const double row = g(L.obstacleRow(i, 0)) * 2.0 * std::sqrt(bound);
+        EXPECT_NEAR(row, bound - (F - obstacles[0].center).squaredNorm(), 1e-12);
         EXPECT_NEAR(g(L.obstacleRow(i, 1)), 0.05 + foot - distance.signedDistance(1, F, nullptr), 1e-12);
         EXPECT_EQ(g(L.obstacleRow(i, 2)), -1.0);
         EXPECT_NEAR(g(L.obstacleRow(i, 3)), 0.02 + foot - distance.signedDistance(2, F, nullptr), 1e-12);
@@ -150,6 +161,44 @@ TEST(NmpcJacobian, ObstacleRowsMatchFiniteDifferences) {
     }
   }
   EXPECT_GE(points, 50);
+}
+
+INSTANTIATE_TEST_SUITE_P(NmpcJacobian, ObstacleRows,
+                         ::testing::Values(wpg::ObstacleDistanceForm::kSoleClearance,
+                                           wpg::ObstacleDistanceForm::kPaper));
+
+// The bound of each form at a step centre (stepCentreMargin, stepCentreClearance: what the
+// post-run checks measure), against the paper's eq. (18) written out.
+TEST(ObstacleDistanceForm, StepCentreBoundIsTheFormsExpression) {
+  WalkingParameters w;
+  const std::vector<wpg::Obstacle> obstacles = wpg_test::threeObstacles();
+  const wpg::AnalyticObstacleDistance distance(obstacles);
+  const wpg::Obstacle& circle = obstacles[0];
+  const double R = circle.radius, m = circle.margin;
+  const Vector2d f = circle.center + Vector2d(0.3, -0.4);  // 0.5 m from the centre
+  EXPECT_EQ(w.obstacle_distance_form, wpg::ObstacleDistanceForm::kSoleClearance);
+  EXPECT_NEAR(wpg::stepCentreMargin(circle, w), m + w.obstacle_foot_radius, 1e-15);
+  EXPECT_NEAR(wpg::stepCentreClearance(distance, 0, circle, w, f),
+              0.5 - (R + m + w.obstacle_foot_radius), 1e-12);
+  EXPECT_STREQ(wpg::stepCentreBoundName(w), "margin + obstacle_foot_radius");
+  w.obstacle_distance_form = wpg::ObstacleDistanceForm::kPaper;
+  // eq. (18): (f - c)^2 >= R^2 + m^2, so the clearance is |f - c| - sqrt(R^2 + m^2), which is
+  // larger than |f - c| - (R + m): the paper's circle lies inside the margin circle.
+  EXPECT_NEAR(wpg::stepCentreClearance(distance, 0, circle, w, f), 0.5 - std::sqrt(R * R + m * m),
+              1e-12);
+  EXPECT_LT(std::sqrt(R * R + m * m), R + m);
+  // Not in the paper: boxes and polygons keep the point step the margin away.
+  EXPECT_NEAR(wpg::stepCentreMargin(obstacles[1], w), obstacles[1].margin, 1e-15);
+  EXPECT_NEAR(wpg::stepCentreMargin(obstacles[2], w), obstacles[2].margin, 1e-15);
+  EXPECT_NE(std::string(wpg::stepCentreBoundName(w)).find("R^2 + m^2"), std::string::npos);
+  // The names of the key's values.
+  wpg::ObstacleDistanceForm form = wpg::ObstacleDistanceForm::kSoleClearance;
+  EXPECT_TRUE(wpg::parseObstacleDistanceForm("paper", &form));
+  EXPECT_EQ(form, wpg::ObstacleDistanceForm::kPaper);
+  EXPECT_TRUE(wpg::parseObstacleDistanceForm("sole_clearance", &form));
+  EXPECT_EQ(form, wpg::ObstacleDistanceForm::kSoleClearance);
+  EXPECT_FALSE(wpg::parseObstacleDistanceForm("points", &form));
+  EXPECT_STREQ(wpg::obstacleDistanceFormName(wpg::ObstacleDistanceForm::kPaper), "paper");
 }
 
 TEST(NmpcJacobian, FixedStepRowsAreInactive) {

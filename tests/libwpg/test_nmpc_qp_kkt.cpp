@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "../common/paper_gait.hpp"
 #include "wpg/lipm_prediction.hpp"
 #include "wpg/nmpc.hpp"
 #include "wpg/pattern_generator.hpp"
@@ -199,7 +200,11 @@ TEST(NmpcQpKkt, SqpStoppedBeforeConvergenceSaysSo) {
   // The curve needs up to ~17 Gauss-Newton iterations (linear convergence: the Gauss-Newton
   // Hessian leaves out the curvature of the yaw-dependent constraints); with a budget of 2 some
   // samples stop early and must be reported, never as "solved".
-  const WalkingParameters w = curveParameters();
+  // The paper's cost (J2 weighted by alpha, chained from the support foot) with the default yaw
+  // bound: the default cost (weight_yaw 100, command heading) converges in two iterations at
+  // every sample of this curve.
+  WalkingParameters w = wpg_test::paperGait(curveParameters());
+  w.max_step_yaw_change = curveParameters().max_step_yaw_change;
   GeneratorSettings settings;
   settings.sqp_iterations = 0;
   settings.max_sqp_iterations = 2;

@@ -190,7 +190,8 @@ TEST(OnlineWalkingGenerator, ACommandTakesEffectAtTheNextNmpcSample) {
   EXPECT_EQ(a.com_position, b.com_position);
   const wpg::NmpcProblem& problem = changed.patternGenerator().problem();
   const wpg::PatternGenerator& pg = changed.patternGenerator();
-  const double heading = pg.gait().feetMeanYaw();  // J1's frame (heading_reference: support_foot)
+  // J1's frame: the commanded heading (heading_reference: command, the default)
+  const double heading = pg.commandedHeading();
   for (int j = 0; j < w.horizon_length; ++j) {
     const double yaw = heading + turn.z() * (j + 1) * w.sampling_period;
     EXPECT_NEAR(problem.velocity_x(j), std::cos(yaw) * turn.x() - std::sin(yaw) * turn.y(), 1e-12);

@@ -8,6 +8,7 @@
 #include <memory>
 #include <string>
 
+#include "../common/paper_gait.hpp"
 #include "test_constraint_families.hpp"
 #include "wpg/online_walking_generator.hpp"
 #include "wpg/walk_generator.hpp"
@@ -85,7 +86,8 @@ INSTANTIATE_TEST_SUITE_P(
 // A capped QP: its iterate is not executed; the plan of that sample is the previous plan
 // shifted by one sample (what the solver held on entry), and the walk fails.
 TEST(WalkStatuses, CappedQpExecutesTheShiftedPlan) {
-  const wpg::WalkingParameters w;
+  // The paper's gait: some of its QPs need more than two working-set updates.
+  const wpg::WalkingParameters w = wpg_test::paperGait();
   wpg::GeneratorSettings settings;
   settings.max_qp_iterations = 2;
   wpg::PatternGenerator generator(w, settings);

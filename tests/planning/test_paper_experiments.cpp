@@ -91,8 +91,11 @@ TEST(PaperExperimentB, BlockedInTranslationItTurnsOnTheSpotThenResumesItsCircle)
   const Experiment e = run("paper_experiment_b");
   expectEveryStepClear(e);
   const wpg::WalkTrajectory& t = e.result.trajectory;
-  // A stretch of 3 s with (almost) no translation while the yaw keeps turning ...
-  const std::size_t window = sampleAt(t, 3.0);
+  // A stretch of 2.5 s with (almost) no translation while the yaw keeps turning (measured
+  // 0.53 rad for 2.0 cm of CoM from 9.5 s; the default command heading turns J1's command
+  // away from the obstacle at omega whatever the feet do, so the robot is held ~2.8 s, the
+  // paper's support-foot heading held it longer: this window was 3 s before issue 9) ...
+  const std::size_t window = sampleAt(t, 2.5);
   std::size_t blocked_end = 0;
   double blocked_turn = 0.0;
   for (std::size_t i = 0; i + window < t.time.size(); i += 10) {

@@ -9,6 +9,8 @@
 
 #include <Eigen/Core>
 
+#include "wpg/walking_parameters.hpp"
+
 namespace wpg {
 
 enum class ObstacleType { kCircle, kBox, kPolygon };
@@ -83,13 +85,23 @@ double circleSignedDistance(const Eigen::Vector2d& center, double radius,
 double polygonSignedDistance(const std::vector<Eigen::Vector2d>& polygon,
                              const Eigen::Vector2d& point, Eigen::Vector2d* gradient);
 
-// The margin of the NMPC's obstacle constraint (eq. 18-19, nmpc/obstacle_constraint.cpp) at a
-// step centre: signed distance to obstacle `index` - its `margin` - `foot_radius` (the walking
-// parameter obstacle_foot_radius), >= 0 when the constraint holds. The one definition behind
-// the start check and the landing check of generateWalk, the dataset's step_centre_clearance
-// and planning/'s footstep report.
-double stepCentreClearance(const ObstacleDistanceOracle& distance, int index, double margin,
-                           const Eigen::Vector2d& centre, double foot_radius);
+// How far beyond `obstacle`'s shape the NMPC's obstacle row (eq. 18-19,
+// nmpc/obstacle_constraint.cpp) keeps a step centre, in parameters.obstacle_distance_form:
+//  - sole_clearance: margin + obstacle_foot_radius (a circle: |f - c| >= R + m + r_sole);
+//  - paper: sqrt(R^2 + m^2) - R for a circle (eq. 18 as written: |f - c|^2 >= R^2 + m^2), and
+//    the margin for the other shapes (the step a point).
+double stepCentreMargin(const Obstacle& obstacle, const WalkingParameters& parameters);
+// What that bound is, in words, for messages and reports ("margin + obstacle_foot_radius" for
+// sole_clearance).
+const char* stepCentreBoundName(const WalkingParameters& parameters);
+
+// The margin of the NMPC's obstacle constraint at a step centre: signed distance to obstacle
+// `index` (described by `obstacle`) - stepCentreMargin(obstacle, parameters), >= 0 when the
+// constraint holds. The one definition behind the start check and the landing check of
+// generateWalk, the dataset's step_centre_clearance and planning/'s footstep report.
+double stepCentreClearance(const ObstacleDistanceOracle& distance, int index,
+                           const Obstacle& obstacle, const WalkingParameters& parameters,
+                           const Eigen::Vector2d& centre);
 
 // Centre and radius of a circle enclosing the obstacle (cheap reach test).
 void boundingCircle(const Obstacle& obstacle, Eigen::Vector2d* center, double* radius);

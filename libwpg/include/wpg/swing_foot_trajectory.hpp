@@ -23,6 +23,7 @@ class QuinticToRest {
  private:
   double c_[6] = {0, 0, 0, 0, 0, 0};
   double duration_ = 0.0;
+  double target_ = 0.0;  // p1: returned exactly at the end (the polynomial's rounding is not)
 };
 
 class SwingFootTrajectory {

@@ -2,7 +2,9 @@
 // Constant description of a walking robot for the pattern generator: timings, template-model
 // constants, foot geometry, step feasibility, cost weights. Defaults are HRP-2's, from the
 // paper (Naveau et al., RA-L 2017, Sec. V) and ../shared/DESIGN.md; robots/<name>/walking.yaml
-// restates them and scenarios may override any field (datasets/SCENARIOS.md).
+// restates them and scenarios may override any field (datasets/SCENARIOS.md). Four defaults
+// differ from the paper's text, on measurement (robots/hrp2/README.md): heading_reference,
+// weight_yaw, max_step_yaw_change (the authors' code's value) and obstacle_distance_form.
 #include <array>
 #include <string>
 #include <vector>
@@ -22,7 +24,8 @@ enum class HeadingReference {
   kSupportFoot,
   // The command's own heading: the robot's yaw when the walk started plus the integral of the
   // commanded omega. J2 tracks it and J1 turns the command by it, so a robot that had to turn
-  // returns to the commanded heading (wpg option; used to get round obstacles on the path).
+  // returns to the commanded heading (wpg; the default: straight walks, tracked turns, going
+  // round obstacles on the path).
   kCommand,
 };
 // Parses "support_foot" / "command"; returns false on anything else.
@@ -51,6 +54,23 @@ enum class StandingPushResponse {
 };
 bool parseStandingPushResponse(const std::string& name, StandingPushResponse* out);  // step / stand
 const char* standingPushResponseName(StandingPushResponse response);
+
+// The bound the obstacle rows (eq. 18-19, nmpc/obstacle_constraint.cpp) put on a step centre f
+// for an obstacle of radius R and security margin m.
+enum class ObstacleDistanceForm {
+  // wpg default: the step centre stays m + obstacle_foot_radius beyond the obstacle, for a
+  // circle |f - c| >= R + m + obstacle_foot_radius, i.e. (f - c)^2 >= (R + m + r_sole)^2: the
+  // whole sole stays out of the margin circle (radius R + m) of the paper's Fig. 8.
+  kSoleClearance,
+  // The paper's eq. (18) as written: (f - c)^2 >= R^2 + m^2, the step a point
+  // (obstacle_foot_radius unused). Its circle, radius sqrt(R^2 + m^2), is smaller than R + m:
+  // the step centre may land inside the margin circle, the sole further in. The paper has only
+  // circles; for boxes and polygons this form keeps the point step m from the shape.
+  kPaper,
+};
+// Parses "sole_clearance" / "paper"; returns false on anything else.
+bool parseObstacleDistanceForm(const std::string& name, ObstacleDistanceForm* out);
+const char* obstacleDistanceFormName(ObstacleDistanceForm form);
 
 struct WalkingParameters {
   // --- template model (Sec. II) -------------------------------------------------------------
@@ -85,23 +105,30 @@ struct WalkingParameters {
   double stop_foot_separation = 0.20;     // lateral distance of the final side-by-side step [m]
   // Obstacle constraint (eq. 18-19) on the step centre grown by this radius, so that the whole
   // sole stays out of the obstacle's margin: the sole's half diagonal for HRP-2. The paper
-  // treats steps as points (0).
+  // treats steps as points (0). Used by the sole_clearance form only.
   double obstacle_foot_radius = 0.1287;   // [m]
+  // Which bound the obstacle rows enforce: sole_clearance (wpg) or the paper's eq. (18) as
+  // written (see ObstacleDistanceForm).
+  ObstacleDistanceForm obstacle_distance_form = ObstacleDistanceForm::kSoleClearance;
   // --- step feasibility polygon for a LEFT step, in the right (support) foot frame (Fig. 5);
   //     a right step uses the mirror image (y -> -y). Counter-clockwise order not required.
   std::array<double, 5> feasibility_x{-0.28, -0.2, 0.0, 0.2, 0.28};  // [m]
   std::array<double, 5> feasibility_y{0.2, 0.3, 0.4, 0.3, 0.2};      // [m]
-  // --- orientation, eq. (16): |yaw(step) - yaw(previous step)| <= bound. Paper: 0.05 rad;
-  //     the authors' code uses 0.17 rad (needed for the paper's own 0.2 rad/s turns).
-  double max_step_yaw_change = 0.05;   // [rad]
-  // --- swing-foot landing bound (Sec. III-C3, last paragraph; landing_bound and landing_yaw_bound families): while a
+  // --- orientation, eq. (16): |yaw(step) - yaw(previous step)| <= bound. The authors' code's
+  //     0.17 rad: the reference clamp max_angular_velocity (0.2 rad/s, the paper's experiment
+  //     B) needs 0.2 * stepDuration() = 0.16 rad per step. The paper's text states 0.05 rad
+  //     (Sec. III-C), which caps turning at 0.0625 rad/s (robots/hrp2/README.md, "The yaw
+  //     bound"); max_angular_velocity = 0.0625 makes the clamp agree with it.
+  double max_step_yaw_change = 0.17;   // [rad]
+  // --- swing-foot landing bound (Sec. III-C3, last paragraph; landing_bound and landing_yaw_bound
+  //     families): while a
   //     foot swings, its landing may move from the one planned at the previous sample by at
   //     most what the foot can travel at this speed in the time left before touchdown. Values
   //     of the authors' code (jrl-umi3218/jrl-walkgen, src/ZMPRefTrajectoryGeneration/
   //     nmpc_generator.cpp, updateFootVelIneqConstraint: xvmax = yvmax = 0.4 m/s,
   //     yawvmax = 1.5 rad/s). 0 switches the bound off (x and y, or yaw). Off by default: with
   //     the authors' values on HRP-2's `push` the swing foot's peak acceleration rises (18 ->
-  //     31 m/s^2, the correction is pushed to the last sample) and a push at 3.9 s that is
+  //     30 m/s^2, the correction is pushed to the last sample) and a push at 3.9 s that is
   //     rejected without the bound makes the robot fall (robots/hrp2/README.md).
   double max_landing_speed = 0.0;      // [m/s]
   double max_landing_yaw_rate = 0.0;   // [rad/s]
@@ -113,11 +140,17 @@ struct WalkingParameters {
   // charge the lateral sway of every step to the tracking (sideways walking, going around
   // obstacles).
   int velocity_window_samples = 1;
-  HeadingReference heading_reference = HeadingReference::kSupportFoot;  // J1 frame, J2 target
-  // Weight of the angular tracking J2. The paper uses alpha for both (Sec. III-B: "a different
-  // weight ... was not necessary"); with it the optimum of (5) yaws every other foot to the
-  // yaw bound on straight walks to bring the feet closer than the feasibility polygon allows.
-  double weight_yaw = 2.5;
+  // J1 frame and J2 target. kCommand by default (wpg): with the paper's kSupportFoot any yaw a
+  // step takes becomes the next step's reference, so a straight walk drifts sideways and a
+  // curve falls behind omega (robots/hrp2/README.md, "Straight walks and turning").
+  HeadingReference heading_reference = HeadingReference::kCommand;
+  // Weight of the angular tracking J2. The paper uses alpha = 2.5 for both (Sec. III-B: "a
+  // different weight ... was not necessary"); with it the optimum of (5) yaws the feet towards
+  // the yaw bound on straight walks (rotating a foot rotates the next step's feasibility
+  // polygon, eq. 14, and lets the feet come closer), 0.05 rad every other foot with the
+  // paper's bound, up to 0.13 rad with 0.17. 100 keeps the toe-out below 0.005 rad and the
+  // walk straight (measured in robots/hrp2/README.md); 2.5 is the paper's.
+  double weight_yaw = 100.0;
   double weight_cop = 1e3;             // beta: CoP close to the support ankle (J3)
   double weight_jerk = 1e-5;           // gamma: jerk regularization (J4)
   // --- swing foot -------------------------------------------------------------------------

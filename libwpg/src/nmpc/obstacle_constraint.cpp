@@ -1,5 +1,9 @@
 // Obstacle avoidance, paper eq. (18)-(19): one row per previewed step and obstacle slot (the
-// obstacles near the steps, chosen at every sample), with libwpg's exact 2-D distances.
+// obstacles near the steps, chosen at every sample), with libwpg's exact 2-D distances. The
+// bound is WalkingParameters::obstacle_distance_form's: the whole sole out of the margin
+// (default) or the paper's R^2 + m^2 as written.
+#include <cmath>
+
 #include "nmpc_internal.hpp"
 #include "wpg/nmpc/model.hpp"
 
@@ -26,23 +30,30 @@ class ObstacleConstraint final : public NamedConstraintFamily {
         }
         const Obstacle& obstacle = problem.obstacles->obstacle(index);
         const Eigen::Vector2d F(U(L.stepX() + i), U(L.stepY() + i));
-        // The step centre keeps the obstacle's margin plus the sole's radius
-        // (obstacle_foot_radius) from the obstacle.
-        const double margin = obstacle.margin + model.parameters().obstacle_foot_radius;
+        const WalkingParameters& w = model.parameters();
         Eigen::Vector2d dg;
         if (obstacle.type == ObstacleType::kCircle) {
-          // eq. (18): (F - c)^2 >= (R + m)^2, written ((R + m)^2 - |F - c|^2) / (2 (R + m))
-          // <= 0: the same feasible set and linearization up to a positive factor, in metres
-          // (to first order the distance missing to the circle), so that the relaxation slack
-          // of this family has one unit whatever the shapes.
+          // eq. (18): (F - c)^2 >= r^2, written (r^2 - |F - c|^2) / (2 r) <= 0: the same
+          // feasible set and linearization up to a positive factor, in metres (to first order
+          // the distance missing to the circle), so that the relaxation slack of this family
+          // has one unit whatever the shapes. r^2 is R^2 + m^2 in the paper's form (eq. 18 as
+          // written, the step a point), (R + m + obstacle_foot_radius)^2 in the default
+          // sole_clearance form (the whole sole out of the margin circle).
           const Eigen::Vector2d d = F - obstacle.center;
-          const double r = obstacle.radius + margin;
-          g(row) = (r * r - d.squaredNorm()) / (2.0 * r);
+          const double R = obstacle.radius, m = obstacle.margin;
+          const double r_squared = w.obstacle_distance_form == ObstacleDistanceForm::kPaper
+                                       ? R * R + m * m
+                                       : (R + m + w.obstacle_foot_radius) *
+                                             (R + m + w.obstacle_foot_radius);
+          const double r = std::sqrt(r_squared);
+          g(row) = (r_squared - d.squaredNorm()) / (2.0 * r);
           dg = -d / r;
         } else {
-          // d(F) >= m  <=>  g = m - d(F) <= 0, with d the signed distance to the convex shape
+          // d(F) >= margin (+ obstacle_foot_radius in the sole_clearance form)  <=>
+          // g = stepCentreMargin - d(F) <= 0, with d the signed distance to the convex shape
           Eigen::Vector2d gradient;
-          g(row) = margin - problem.obstacles->signedDistance(index, F, &gradient);
+          g(row) = stepCentreMargin(obstacle, w) -
+                   problem.obstacles->signedDistance(index, F, &gradient);
           dg = -gradient;
         }
         if (jacobian) {

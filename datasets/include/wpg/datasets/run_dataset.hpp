@@ -20,7 +20,8 @@ constexpr int kRunDatasetSchemaVersion = 2;
 // WalkTrajectory::footsteps, as computed by the caller with the FCL world (planning/:
 // wpg::planning::checkFootsteps returns these columns under the same names). datasets/ does
 // not link FCL; the step centres' clearances it computes itself (libwpg's exact 2-D distance,
-// against the NMPC's constraint: sd(ankle, obstacle) - margin - obstacle_foot_radius).
+// against the NMPC's constraint: sd(ankle, obstacle) - margin - obstacle_foot_radius, or the
+// paper's bound with obstacle_distance_form paper: wpg::stepCentreClearance).
 struct FootstepClearances {
   std::vector<double> clearance;        // min over obstacles of sd(sole, obstacle) - margin [m]
   std::vector<int> clearance_obstacle;  // index of the obstacle of that minimum

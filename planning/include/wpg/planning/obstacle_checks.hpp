@@ -3,7 +3,9 @@
 // numbers per step, because the NMPC and the robot see obstacles differently:
 //  - the step centre (ankle) against the obstacle grown by its margin and by the sole radius
 //    obstacle_foot_radius: the constraint the NMPC enforces (eq. 18-19 generalized:
-//    d(f) - m - obstacle_foot_radius >= 0), so it must never be negative;
+//    d(f) - m - obstacle_foot_radius >= 0; with obstacle_distance_form paper, eq. (18) as
+//    written: |f - c| - sqrt(R^2 + m^2) >= 0 for a circle, d(f) - m >= 0 otherwise:
+//    wpg::stepCentreClearance), so it must never be negative;
 //  - the sole rectangle against the obstacle grown by its margin: what the foot really
 //    occupies. With obstacle_foot_radius below the sole's half diagonal (0.129 m for HRP-2;
 //    the paper's point footsteps: 0) it can be negative while the centre constraint holds; and
@@ -28,8 +30,9 @@ struct FootstepObstacleReport {
   // min over obstacles of signed_distance(sole rectangle, obstacle) [m], margin not counted
   std::vector<double> foot_distance;
   // min over obstacles of signed_distance(ankle point, obstacle) - margin -
-  // parameters.obstacle_foot_radius [m]: the margin of the NMPC's constraint on the step
-  // centre, >= 0 when it holds
+  // parameters.obstacle_foot_radius [m] (the paper's bound instead with obstacle_distance_form
+  // paper: wpg::stepCentreClearance): the margin of the NMPC's constraint on the step centre,
+  // >= 0 when it holds
   std::vector<double> centre_clearance;
   std::vector<int> centre_clearance_obstacle;
 
