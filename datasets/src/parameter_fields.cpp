@@ -18,6 +18,10 @@ WalkingField polygonField(const char* name, std::array<double, 5> WalkingParamet
 WalkingField headingField(const char* name, HeadingReference WalkingParameters::*member) {
   return {name, nullptr, nullptr, nullptr, member};
 }
+WalkingField obstacleLinearizationField(const char* name,
+                                        ObstacleLinearization WalkingParameters::*member) {
+  return {name, nullptr, nullptr, nullptr, nullptr, member};
+}
 
 }  // namespace
 
@@ -49,6 +53,7 @@ const std::vector<WalkingField>& walkingFields() {
       numberField("initial_foot_separation", &P::initial_foot_separation),
       numberField("stop_foot_separation", &P::stop_foot_separation),
       numberField("obstacle_foot_radius", &P::obstacle_foot_radius),
+      obstacleLinearizationField("obstacle_linearization", &P::obstacle_linearization),
       polygonField("feasibility_x", &P::feasibility_x),
       polygonField("feasibility_y", &P::feasibility_y),
       numberField("max_step_yaw_change", &P::max_step_yaw_change),
@@ -89,6 +94,10 @@ void readWalkingFields(const Entries& entries, const std::string& prefix, bool r
     } else if (field.heading) {
       if (!node.IsScalar() || !parseHeadingReference(node.Scalar(), &(parameters->*field.heading)))
         source.fail(key, "support_foot or command", node);
+    } else if (field.obstacle_linearization) {
+      if (!node.IsScalar() ||
+          !parseObstacleLinearization(node.Scalar(), &(parameters->*field.obstacle_linearization)))
+        source.fail(key, "step or command_tangent", node);
     } else {
       const Eigen::Matrix<double, 5, 1> values =
           readVector<5>(node, key, "a list of 5 numbers [m]", source);
@@ -106,6 +115,8 @@ void emitWalkingFields(YAML::Emitter& out, const WalkingParameters& parameters) 
       out << parameters.*field.integer;
     } else if (field.heading) {
       out << headingReferenceName(parameters.*field.heading);
+    } else if (field.obstacle_linearization) {
+      out << obstacleLinearizationName(parameters.*field.obstacle_linearization);
     } else {
       emitNumbers(out, (parameters.*field.polygon).data(), 5);
     }

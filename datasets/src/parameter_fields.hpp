@@ -29,6 +29,7 @@ struct WalkingField {
   int WalkingParameters::*integer;
   std::array<double, 5> WalkingParameters::*polygon;
   HeadingReference WalkingParameters::*heading;
+  ObstacleLinearization WalkingParameters::*obstacle_linearization = nullptr;
 };
 
 // In the struct's order (walking_parameters.hpp); the resolved YAML keeps it.

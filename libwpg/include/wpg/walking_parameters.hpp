@@ -29,6 +29,23 @@ enum class HeadingReference {
 bool parseHeadingReference(const std::string& name, HeadingReference* out);
 const char* headingReferenceName(HeadingReference reference);
 
+// Which half-plane stands for a circle obstacle's row (eq. 18-19) in the QP. Both are inner
+// approximations of eq. (18): a step in the half-plane is outside the grown circle.
+enum class ObstacleLinearization {
+  // The paper (Sec. III-E, eq. 21-22): eq. (18) linearized by the solver at the previewed step
+  // of the previous plan, a half-plane facing that step. With an obstacle on the path its
+  // border is perpendicular to the command and the robot marks time in front of it.
+  kStep,
+  // wpg, experimental: the circle's tangent half-plane turned as far towards the command's
+  // direction as the robot's CoM allows, on the side the robot passes, and J1's reference turned
+  // along it (libwpg/include/wpg/obstacle_tangent.hpp). Fixed during a sample (exact Jacobian:
+  // constant). The robot slides round, but slowly with the paper's cost: it does not pass an
+  // obstacle on the path faster than `step` (robots/hrp2/README.md, measured table).
+  kCommandTangent,
+};
+bool parseObstacleLinearization(const std::string& name, ObstacleLinearization* out);
+const char* obstacleLinearizationName(ObstacleLinearization linearization);
+
 struct WalkingParameters {
   // --- template model (Sec. II) -------------------------------------------------------------
   double com_height = 0.814;           // h [m], CoM height above the ground, eq. (3)
@@ -55,6 +72,9 @@ struct WalkingParameters {
   // sole stays out of the obstacle's margin: the sole's half diagonal for HRP-2. The paper
   // treats steps as points (0).
   double obstacle_foot_radius = 0.1287;   // [m]
+  // How a circle obstacle's row is linearized (see the enum). Boxes and polygons keep the
+  // signed-distance row linearized at the step in both cases.
+  ObstacleLinearization obstacle_linearization = ObstacleLinearization::kStep;
   // --- step feasibility polygon for a LEFT step, in the right (support) foot frame (Fig. 5);
   //     a right step uses the mirror image (y -> -y). Counter-clockwise order not required.
   std::array<double, 5> feasibility_x{-0.28, -0.2, 0.0, 0.2, 0.28};  // [m]

@@ -1,5 +1,8 @@
 // Obstacle avoidance, paper eq. (18)-(19): one row per previewed step and obstacle slot (the
-// obstacles near the steps, chosen at every sample), with libwpg's exact 2-D distances.
+// obstacles near the steps, chosen at every sample), with libwpg's exact 2-D distances. A circle's
+// row is either eq. (18) itself, which the solver linearizes at the step (the paper's
+// linearization), or, when the problem carries a normal for its slot (obstacle_linearization:
+// command_tangent, wpg/obstacle_tangent.hpp), the tangent half-plane of that normal.
 #include "nmpc_internal.hpp"
 #include "wpg/nmpc/model.hpp"
 
@@ -30,7 +33,14 @@ class ObstacleConstraint final : public NamedConstraintFamily {
         // (obstacle_foot_radius) from the obstacle.
         const double margin = obstacle.margin + model.parameters().obstacle_foot_radius;
         Eigen::Vector2d dg;
-        if (obstacle.type == ObstacleType::kCircle) {
+        const auto normal = problem.obstacle_normal.col(k);
+        if (obstacle.type == ObstacleType::kCircle && !normal.isZero()) {
+          // command_tangent linearization (wpg/obstacle_tangent.hpp): the half-plane
+          // n.(F - c) >= R + m + foot radius, n fixed for the sample: g = r - n.(F - c) <= 0,
+          // linear in F (metres, the distance missing to the border), inside eq. (18)'s set.
+          g(row) = obstacle.radius + margin - normal.dot(F - obstacle.center);
+          dg = -normal;
+        } else if (obstacle.type == ObstacleType::kCircle) {
           // eq. (18): (F - c)^2 >= (R + m)^2, written ((R + m)^2 - |F - c|^2) / (2 (R + m))
           // <= 0: the same feasible set and linearization up to a positive factor, in metres
           // (to first order the distance missing to the circle), so that the relaxation slack
