@@ -36,11 +36,13 @@ enum class ObstacleLinearization {
   // of the previous plan, a half-plane facing that step. With an obstacle on the path its
   // border is perpendicular to the command and the robot marks time in front of it.
   kStep,
-  // wpg, experimental: the circle's tangent half-plane turned as far towards the command's
-  // direction as the robot's CoM allows, on the side the robot passes, and J1's reference turned
-  // along it (libwpg/include/wpg/obstacle_tangent.hpp). Fixed during a sample (exact Jacobian:
-  // constant). The robot slides round, but slowly with the paper's cost: it does not pass an
-  // obstacle on the path faster than `step` (robots/hrp2/README.md, measured table).
+  // wpg: the circle's tangent half-plane turned as far towards the command's direction as the
+  // robot's CoM allows, on the side the robot passes, and J1's reference turned along it
+  // (libwpg/include/wpg/obstacle_tangent.hpp). Fixed during a sample (exact Jacobian: constant).
+  // With heading_reference: command and a large weight_yaw the robot slides round an obstacle on
+  // the path and walks on (paper_experiment_a); with the support-foot heading it turns while it
+  // slides and circles the obstacle. Not the default: on cluttered scenes it relaxes rows
+  // (robots/hrp2/README.md, "Obstacles on the path", measured).
   kCommandTangent,
 };
 bool parseObstacleLinearization(const std::string& name, ObstacleLinearization* out);
