@@ -33,6 +33,13 @@ const WalkingChoice kObstacleDistanceForm{
     },
     [](const WalkingParameters& p) { return obstacleDistanceFormName(p.obstacle_distance_form); }};
 
+const WalkingChoice kObstacleLinearization{
+    "step or command_tangent",
+    [](const std::string& name, WalkingParameters* p) {
+      return parseObstacleLinearization(name, &p->obstacle_linearization);
+    },
+    [](const WalkingParameters& p) { return obstacleLinearizationName(p.obstacle_linearization); }};
+
 const WalkingChoice kZeroCommandGait{
     "stop or step_in_place",
     [](const std::string& name, WalkingParameters* p) {
@@ -82,6 +89,7 @@ const std::vector<WalkingField>& walkingFields() {
       numberField("stop_foot_separation", &P::stop_foot_separation),
       numberField("obstacle_foot_radius", &P::obstacle_foot_radius),
       choiceField("obstacle_distance_form", &kObstacleDistanceForm),
+      choiceField("obstacle_linearization", &kObstacleLinearization),
       polygonField("feasibility_x", &P::feasibility_x),
       polygonField("feasibility_y", &P::feasibility_y),
       numberField("max_step_yaw_change", &P::max_step_yaw_change),

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <utility>
 
+#include "wpg/obstacle_tangent.hpp"
+
 namespace wpg {
 
 namespace {
@@ -15,6 +17,12 @@ NmpcModel makeModel(const WalkingParameters& parameters, const GeneratorSettings
   for (const auto& family : extra_families) model.addConstraintFamily(family);
   return model;
 }
+
+// The CoM's clearance from a new command_tangent border: 1.5 side-by-side step widths (0.3 m
+// for HRP-2), so that the inner foot, a half width beside the CoM, still has a step's length of
+// room along the command (measured on paper_experiment_a: 0.1 and 0.2 m block the robot earlier;
+// robots/hrp2/README.md, "Obstacles on the path").
+double tangentClearance(const WalkingParameters& w) { return 1.5 * w.stop_foot_separation; }
 
 }  // namespace
 
@@ -39,6 +47,7 @@ void PatternGenerator::setObstacles(std::vector<Obstacle> obstacles) {
 void PatternGenerator::reset(const Eigen::Vector3d& pose) {
   gait_.reset(pose);
   references_.reset(pose.z());
+  obstacles_.forgetSides();
   com_x_ = Eigen::Vector3d(pose.x(), 0.0, 0.0);
   com_y_ = Eigen::Vector3d(pose.y(), 0.0, 0.0);
   command_.setZero();
@@ -94,6 +103,21 @@ const MpcIterationLog& PatternGenerator::update(double time, const Eigen::Vector
   } else {
     obstacles_.select(problem_.phase.support_pose.head<2>(), settings_.obstacle_reach,
                       problem_.obstacle_slot);
+  }
+  problem_.obstacle_normal.setZero();
+  if (w.obstacle_linearization == ObstacleLinearization::kCommandTangent && !gait_.standing()) {
+    // The circles' half-planes of this sample (wpg/obstacle_tangent.hpp): from the CoM, the
+    // command's direction at this sample (J1's world reference) and the passing side, chosen
+    // from the point between the feet; then J1's reference turned along the borders it drives
+    // into, so that sliding round is what the cost asks for.
+    const Eigen::Vector2d feet_middle =
+        0.5 * (gait_.footPose(FootSide::kLeft) + gait_.footPose(FootSide::kRight)).head<2>();
+    obstacles_.tangentNormals(Eigen::Vector2d(com_x_(0), com_y_(0)), feet_middle,
+                              Eigen::Vector2d(problem_.velocity_x(0), problem_.velocity_y(0)),
+                              w.obstacle_foot_radius, tangentClearance(w),
+                              problem_.obstacle_slot, problem_.obstacle_normal);
+    turnReferenceAlongBorders(problem_.obstacle_normal, problem_.velocity_x,
+                              problem_.velocity_y);
   }
 
   solve();

@@ -84,6 +84,21 @@ const char* obstacleDistanceFormName(ObstacleDistanceForm form) {
   return form == ObstacleDistanceForm::kPaper ? "paper" : "sole_clearance";
 }
 
+bool parseObstacleLinearization(const std::string& name, ObstacleLinearization* out) {
+  if (name == "step") {
+    *out = ObstacleLinearization::kStep;
+  } else if (name == "command_tangent") {
+    *out = ObstacleLinearization::kCommandTangent;
+  } else {
+    return false;
+  }
+  return true;
+}
+
+const char* obstacleLinearizationName(ObstacleLinearization linearization) {
+  return linearization == ObstacleLinearization::kStep ? "step" : "command_tangent";
+}
+
 void WalkingParameters::validate() const {
   requirePositive(com_height, "com_height");
   requirePositive(gravity, "gravity");

@@ -337,6 +337,24 @@ TEST(Overrides, ObstacleDistanceFormRoundTrips) {
   EXPECT_EQ(again.walking.obstacle_distance_form, wpg::ObstacleDistanceForm::kPaper);
 }
 
+TEST(Overrides, ObstacleLinearizationRoundTrips) {
+  const Scenario defaults = loadShipped("walk_forward");
+  EXPECT_EQ(defaults.walking.obstacle_linearization, wpg::ObstacleLinearization::kStep);
+  const Scenario s =
+      loadShipped("walk_forward", {"walking.obstacle_linearization=command_tangent"});
+  EXPECT_EQ(s.walking.obstacle_linearization, wpg::ObstacleLinearization::kCommandTangent);
+  EXPECT_NE(s.resolved_yaml.find("obstacle_linearization: command_tangent"), std::string::npos);
+  const Scenario again =
+      wpg::datasets::loadScenarioText(s.resolved_yaml, "run.h5:/scenario", {}, kRobotsDir);
+  EXPECT_EQ(again.walking.obstacle_linearization, wpg::ObstacleLinearization::kCommandTangent);
+}
+
+TEST_F(ScenarioFiles, UnknownObstacleLinearizationIsAnError) {
+  expectError("bad_linearization.yaml", kValidScenario,
+              {"walking.obstacle_linearization", "step or command_tangent"},
+              {"walking.obstacle_linearization=tangent"});
+}
+
 TEST_F(ScenarioFiles, ValidBaseLoads) {
   const Scenario s = loadScenario(write("valid.yaml", kValidScenario), {}, kRobotsDir);
   EXPECT_EQ(s.name, "test_case");

@@ -443,4 +443,21 @@ TEST(NmpcAllocation, OnlineStepWithCircleBoxAndPolygon) {
   expectNoAllocation(r, "OnlineWalkingGenerator::step() with a circle, a box and a polygon");
 }
 
+// obstacle_linearization: command_tangent (tangent normals, the selector's side and border
+// memory, J1's reference turned along the border): a circle on the path, in the QP throughout.
+TEST(NmpcAllocation, OnlineStepWithCommandTangentObstacleOnThePath) {
+  if (!counterAvailable()) GTEST_SKIP() << "the allocation counter needs glibc (and no sanitizer)";
+  WalkingParameters w;
+  w.obstacle_linearization = wpg::ObstacleLinearization::kCommandTangent;
+  wpg::Obstacle circle;
+  circle.center = Eigen::Vector2d(1.4, 0.0);
+  circle.radius = 0.25;
+  circle.margin = 0.25;
+  const Vector3d forward(0.2, 0.0, 0.0);
+  const LoopResult r = countOverOnlineLoop(w, {circle}, {{30, forward}}, {{100, forward}});
+  EXPECT_EQ(r.obstacles_in_qp, 1);
+  expectNoAllocation(r, "OnlineWalkingGenerator::step() with a command_tangent circle");
+}
+
 }  // namespace
+

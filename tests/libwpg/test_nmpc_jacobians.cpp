@@ -201,6 +201,66 @@ TEST(ObstacleDistanceForm, StepCentreBoundIsTheFormsExpression) {
   EXPECT_STREQ(wpg::obstacleDistanceFormName(wpg::ObstacleDistanceForm::kPaper), "paper");
 }
 
+// command_tangent linearization (wpg/obstacle_tangent.hpp): a circle's row with a normal n in
+// its slot is the half-plane r - n.(F - c) <= 0, linear in the step; the box and polygon of the
+// other slots keep their signed distance (a zero normal column).
+TEST(NmpcJacobian, CommandTangentObstacleRowsMatchFiniteDifferences) {
+  WalkingParameters w;
+  w.max_step_yaw_change = 0.17;
+  const int slots = 3;
+  const NmpcModel model(w, slots);
+  const NmpcLayout& L = model.layout();
+  const std::vector<wpg::Obstacle> obstacles = wpg_test::threeObstacles();
+  const wpg::AnalyticObstacleDistance distance(obstacles);
+  Rng rng(57);
+  int points = 0;
+  for (int pattern = 0; pattern < model.patternCount(); ++pattern) {
+    for (int trial = 0; trial < 4; ++trial) {
+      NmpcProblem problem = randomProblem(model, pattern, trial % 2 ? FootSide::kLeft : FootSide::kRight,
+                                          trial < 2 ? FixedMode::kNone : FixedMode::kRandom, rng);
+      problem.obstacles = &distance;
+      problem.obstacle_slot << 0, 1, 2;
+      const double angle = rng.uniform(-3.0, 3.0);
+      problem.obstacle_normal.col(0) = Vector2d(std::cos(angle), std::sin(angle));
+      VectorXd U = randomU(model, problem, rng);
+      for (int i = 0; i < L.steps; ++i) {  // away from the box and polygon (non-smooth inside)
+        for (int attempt = 0;; ++attempt) {
+          ASSERT_LT(attempt, 1000);
+          const Vector2d F(rng.uniform(-1.2, 1.2), rng.uniform(-1.2, 1.2));
+          if (distance.signedDistance(1, F, nullptr) < 0.02 ||
+              distance.signedDistance(2, F, nullptr) < 0.02)
+            continue;
+          U(L.stepX() + i) = F.x();
+          U(L.stepY() + i) = F.y();
+          break;
+        }
+      }
+      const JacobianCheck check = compareWithFiniteDifferences(model, problem, U);
+      ++points;
+      EXPECT_LE(check.worst, 1e-6) << "pattern " << pattern << " trial " << trial << ": row "
+                                   << check.worst_row << " (" << describeRow(L, check.worst_row)
+                                   << "), column " << check.worst_column;
+      VectorXd g(L.inequalityCount());
+      MatrixXd J(L.inequalityCount(), L.variableCount());
+      wpg::evaluateConstraints(model, problem, U, g, &J);
+      const double r = obstacles[0].radius + obstacles[0].margin + w.obstacle_foot_radius;
+      for (int i = 0; i < L.steps; ++i) {
+        if (problem.phase.step_fixed(i)) continue;
+        const Vector2d F(U(L.stepX() + i), U(L.stepY() + i));
+        const Vector2d n = problem.obstacle_normal.col(0);
+        EXPECT_NEAR(g(L.obstacleRow(i, 0)), r - n.dot(F - obstacles[0].center), 1e-12);
+        EXPECT_EQ(J(L.obstacleRow(i, 0), L.stepX() + i), -n.x());
+        EXPECT_EQ(J(L.obstacleRow(i, 0), L.stepY() + i), -n.y());
+        // inside eq. (18)'s feasible set: a satisfied row keeps the step out of the circle
+        if (g(L.obstacleRow(i, 0)) <= 0.0) EXPECT_GE((F - obstacles[0].center).norm(), r - 1e-12);
+        EXPECT_NEAR(g(L.obstacleRow(i, 1)), 0.05 + w.obstacle_foot_radius -
+                                                distance.signedDistance(1, F, nullptr), 1e-12);
+      }
+    }
+  }
+  EXPECT_GE(points, 30);
+}
+
 TEST(NmpcJacobian, FixedStepRowsAreInactive) {
   const WalkingParameters w;
   const NmpcModel model(w);

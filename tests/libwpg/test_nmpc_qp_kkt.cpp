@@ -14,6 +14,7 @@
 #include "../common/paper_gait.hpp"
 #include "wpg/lipm_prediction.hpp"
 #include "wpg/nmpc.hpp"
+#include "wpg/obstacles.hpp"
 #include "wpg/pattern_generator.hpp"
 
 namespace {
@@ -103,10 +104,12 @@ Kkt kktOfLastQp(const PatternGenerator& generator) {
 }
 
 void expectKktAlongWalk(GeneratorAlgorithm algorithm, const WalkingParameters& w,
-                        const Vector3d& walk, const char* name) {
+                        const Vector3d& walk, const char* name,
+                        const std::vector<wpg::Obstacle>& obstacles = {}) {
   GeneratorSettings settings;
   settings.algorithm = algorithm;
   PatternGenerator generator(w, settings);
+  if (!obstacles.empty()) generator.setObstacles(obstacles);
   Kkt all;
   int failures = 0;
   for (int k = 0; k < kSamples; ++k) {
@@ -133,6 +136,19 @@ TEST(NmpcQpKkt, EveryRealTimeIterationQpIsSolvedToKkt) {
                      "NMPC forward");
   expectKktAlongWalk(GeneratorAlgorithm::kNmpc, curveParameters(), Vector3d(0.2, 0, 0.2),
                      "NMPC curve");
+}
+
+// obstacle_linearization: command_tangent: the rows' normals change between samples, not
+// during one; every QP of a walk into a circle on the path is still solved to KKT.
+TEST(NmpcQpKkt, CommandTangentObstacleQpsAreSolvedToKkt) {
+  WalkingParameters w;
+  w.obstacle_linearization = wpg::ObstacleLinearization::kCommandTangent;
+  wpg::Obstacle circle;
+  circle.center = Eigen::Vector2d(1.4, 0.0);
+  circle.radius = 0.25;
+  circle.margin = 0.25;
+  expectKktAlongWalk(GeneratorAlgorithm::kNmpc, w, Vector3d(0.2, 0, 0),
+                     "NMPC command_tangent obstacle", {circle});
 }
 
 TEST(NmpcQpKkt, EveryLmpcPositionQpIsSolvedToKkt) {

@@ -2,6 +2,7 @@
 // The obstacles a walk avoids (eq. 18-19), owned with libwpg's exact 2-D distances
 // (ObstacleSet: what the NMPC's obstacle rows read, allocation-free), and the choice at each
 // sample of the few that enter the QP (the nearest ones, one per obstacle slot of the model).
+#include <algorithm>
 #include <utility>
 #include <vector>
 
@@ -27,9 +28,24 @@ class ObstacleSelector {
   // margin) within `reach` of `support` [m], -1 for the rest. Does not allocate.
   void select(const Eigen::Vector2d& support, double reach, Eigen::Ref<Eigen::VectorXi> slots);
 
+  // command_tangent linearization (obstacle_tangent.hpp): column k of `normals` <- the
+  // half-plane normal of the circle in slot k (grown by its margin and `foot_radius`), from the
+  // CoM, the command's world `direction` and the obstacle's passing side; zero for an empty slot
+  // or a box or polygon (their rows keep the linearization at the step). The side is chosen
+  // from `feet_middle` when the obstacle comes within reach (select()) and kept while it stays
+  // there, so that the robot does not change its mind half-way round. Does not allocate.
+  void tangentNormals(const Eigen::Vector2d& com, const Eigen::Vector2d& feet_middle,
+                      const Eigen::Vector2d& direction, double foot_radius, double clearance,
+                      const Eigen::Ref<const Eigen::VectorXi>& slots,
+                      Eigen::Ref<Eigen::Matrix2Xd> normals);
+  // Forgets the passing sides (a new walk).
+  void forgetSides() { std::fill(side_.begin(), side_.end(), 0); }
+
  private:
   ObstacleSet obstacles_;
   std::vector<std::pair<double, int>> order_;  // scratch, sized once per set()
+  std::vector<int> side_;  // per obstacle: passing side +1 / -1, 0 = not chosen (out of reach)
+  std::vector<Eigen::Vector2d> normal_;  // per obstacle: its border so far (valid when side_ != 0)
 };
 
 }  // namespace wpg

@@ -72,6 +72,25 @@ enum class ObstacleDistanceForm {
 bool parseObstacleDistanceForm(const std::string& name, ObstacleDistanceForm* out);
 const char* obstacleDistanceFormName(ObstacleDistanceForm form);
 
+// Which half-plane stands for a circle obstacle's row (eq. 18-19) in the QP. Both are inner
+// approximations of eq. (18): a step in the half-plane is outside the grown circle.
+enum class ObstacleLinearization {
+  // The paper (Sec. III-E, eq. 21-22): eq. (18) linearized by the solver at the previewed step
+  // of the previous plan, a half-plane facing that step. With an obstacle on the path its
+  // border is perpendicular to the command and the robot marks time in front of it.
+  kStep,
+  // wpg: the circle's tangent half-plane turned as far towards the command's direction as the
+  // robot's CoM allows, on the side the robot passes, and J1's reference turned along it
+  // (libwpg/include/wpg/obstacle_tangent.hpp). Fixed during a sample (exact Jacobian: constant).
+  // With heading_reference: command and a large weight_yaw the robot slides round an obstacle on
+  // the path and walks on (paper_experiment_a); with the support-foot heading it turns while it
+  // slides and circles the obstacle. Not the default: on cluttered scenes it relaxes rows
+  // (robots/hrp2/README.md, "Obstacles on the path", measured).
+  kCommandTangent,
+};
+bool parseObstacleLinearization(const std::string& name, ObstacleLinearization* out);
+const char* obstacleLinearizationName(ObstacleLinearization linearization);
+
 struct WalkingParameters {
   // --- template model (Sec. II) -------------------------------------------------------------
   double com_height = 0.814;           // h [m], CoM height above the ground, eq. (3)
@@ -110,6 +129,9 @@ struct WalkingParameters {
   // Which bound the obstacle rows enforce: sole_clearance (wpg) or the paper's eq. (18) as
   // written (see ObstacleDistanceForm).
   ObstacleDistanceForm obstacle_distance_form = ObstacleDistanceForm::kSoleClearance;
+  // How a circle obstacle's row is linearized (see the enum). Boxes and polygons keep the
+  // signed-distance row linearized at the step in both cases.
+  ObstacleLinearization obstacle_linearization = ObstacleLinearization::kStep;
   // --- step feasibility polygon for a LEFT step, in the right (support) foot frame (Fig. 5);
   //     a right step uses the mirror image (y -> -y). Counter-clockwise order not required.
   std::array<double, 5> feasibility_x{-0.28, -0.2, 0.0, 0.2, 0.28};  // [m]

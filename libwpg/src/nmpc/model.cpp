@@ -140,6 +140,8 @@ void NmpcModel::checkProblem(const NmpcProblem& problem) const {
   require(problem.yaw_reference.size() == nf, "yaw_reference", nf, problem.yaw_reference.size());
   require(problem.obstacle_slot.size() == layout_.obstacle_slots, "obstacle_slot",
           layout_.obstacle_slots, problem.obstacle_slot.size());
+  require(problem.obstacle_normal.cols() == layout_.obstacle_slots, "obstacle_normal (columns)",
+          layout_.obstacle_slots, problem.obstacle_normal.cols());
   if (phase.pattern < 0 || phase.pattern >= patternCount()) {
     throw std::invalid_argument("NMPC problem: 'phase.pattern': expected 0 to " +
                                 std::to_string(patternCount() - 1) + ", got " +
@@ -186,6 +188,7 @@ NmpcProblem NmpcModel::makeProblem() const {
   problem.velocity_past_y = Eigen::VectorXd::Zero(layout_.horizon);
   problem.yaw_reference = Eigen::VectorXd::Zero(layout_.steps);
   problem.obstacle_slot = Eigen::VectorXi::Constant(layout_.obstacle_slots, -1);
+  problem.obstacle_normal = Eigen::Matrix2Xd::Zero(2, layout_.obstacle_slots);
   return problem;
 }
 

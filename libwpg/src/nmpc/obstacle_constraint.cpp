@@ -1,7 +1,10 @@
 // Obstacle avoidance, paper eq. (18)-(19): one row per previewed step and obstacle slot (the
 // obstacles near the steps, chosen at every sample), with libwpg's exact 2-D distances. The
 // bound is WalkingParameters::obstacle_distance_form's: the whole sole out of the margin
-// (default) or the paper's R^2 + m^2 as written.
+// (default) or the paper's R^2 + m^2 as written. A circle's row is either eq. (18) itself,
+// which the solver linearizes at the step (the paper's linearization), or, when the problem
+// carries a normal for its slot (obstacle_linearization: command_tangent,
+// wpg/obstacle_tangent.hpp), the tangent half-plane of that normal on the same circle.
 #include <cmath>
 
 #include "nmpc_internal.hpp"
@@ -32,13 +35,11 @@ class ObstacleConstraint final : public NamedConstraintFamily {
         const Eigen::Vector2d F(U(L.stepX() + i), U(L.stepY() + i));
         const WalkingParameters& w = model.parameters();
         Eigen::Vector2d dg;
+        const auto normal = problem.obstacle_normal.col(k);
         if (obstacle.type == ObstacleType::kCircle) {
-          // eq. (18): (F - c)^2 >= r^2, written (r^2 - |F - c|^2) / (2 r) <= 0: the same
-          // feasible set and linearization up to a positive factor, in metres (to first order
-          // the distance missing to the circle), so that the relaxation slack of this family
-          // has one unit whatever the shapes. r^2 is R^2 + m^2 in the paper's form (eq. 18 as
-          // written, the step a point), (R + m + obstacle_foot_radius)^2 in the default
-          // sole_clearance form (the whole sole out of the margin circle).
+          // r^2 is R^2 + m^2 in the paper's form (eq. 18 as written, the step a point),
+          // (R + m + obstacle_foot_radius)^2 in the default sole_clearance form (the whole sole
+          // out of the margin circle).
           const Eigen::Vector2d d = F - obstacle.center;
           const double R = obstacle.radius, m = obstacle.margin;
           const double r_squared = w.obstacle_distance_form == ObstacleDistanceForm::kPaper
@@ -46,8 +47,20 @@ class ObstacleConstraint final : public NamedConstraintFamily {
                                        : (R + m + w.obstacle_foot_radius) *
                                              (R + m + w.obstacle_foot_radius);
           const double r = std::sqrt(r_squared);
-          g(row) = (r_squared - d.squaredNorm()) / (2.0 * r);
-          dg = -d / r;
+          if (!normal.isZero()) {
+            // command_tangent linearization (wpg/obstacle_tangent.hpp): the half-plane
+            // n.(F - c) >= r, n fixed for the sample: g = r - n.(F - c) <= 0, linear in F
+            // (metres, the distance missing to the border), inside eq. (18)'s set.
+            g(row) = r - normal.dot(d);
+            dg = -normal;
+          } else {
+            // eq. (18): (F - c)^2 >= r^2, written (r^2 - |F - c|^2) / (2 r) <= 0: the same
+            // feasible set and linearization up to a positive factor, in metres (to first
+            // order the distance missing to the circle), so that the relaxation slack of this
+            // family has one unit whatever the shapes.
+            g(row) = (r_squared - d.squaredNorm()) / (2.0 * r);
+            dg = -d / r;
+          }
         } else {
           // d(F) >= margin (+ obstacle_foot_radius in the sole_clearance form)  <=>
           // g = stepCentreMargin - d(F) <= 0, with d the signed distance to the convex shape
