@@ -9,18 +9,6 @@
 namespace wpg {
 namespace {
 
-void record(const ControlSample& s, WalkTrajectory& out) {
-  out.time.push_back(s.time);
-  out.com.push_back(s.com_position);
-  out.com_vel.push_back(s.com_velocity);
-  out.com_acc.push_back(s.com_acceleration);
-  out.cop.push_back(s.cop);
-  out.left_foot.push_back(s.left_foot);
-  out.right_foot.push_back(s.right_foot);
-  out.free_flyer_yaw.push_back(s.free_flyer_yaw);
-  out.support.push_back(s.support);
-}
-
 // The feet must start clear of every obstacle grown by the obstacle rows' bound (its margin and
 // the sole radius by default; obstacle_distance_form).
 void requireFeetClear(const OnlineWalkingGenerator& generator, const WalkRequest& request,
@@ -42,6 +30,21 @@ void requireFeetClear(const OnlineWalkingGenerator& generator, const WalkRequest
   }
 }
 
+}  // namespace
+
+void appendControlSample(const ControlSample& s, WalkTrajectory& out) {
+  out.time.push_back(s.time);
+  out.com.push_back(s.com_position);
+  out.com_vel.push_back(s.com_velocity);
+  out.com_acc.push_back(s.com_acceleration);
+  out.cop.push_back(s.cop);
+  out.left_foot.push_back(s.left_foot);
+  out.right_foot.push_back(s.right_foot);
+  out.free_flyer_yaw.push_back(s.free_flyer_yaw);
+  out.support.push_back(s.support);
+}
+
+
 // Relaxed obstacle rows (a robot enclosed or pushed into an obstacle) may let a step land in
 // a margin: the walk is then recorded as failed.
 void checkLandingsClear(const WalkingParameters& parameters, const WalkRequest& request,
@@ -62,7 +65,6 @@ void checkLandingsClear(const WalkingParameters& parameters, const WalkRequest& 
   }
 }
 
-}  // namespace
 
 WalkResult generateWalk(const WalkingParameters& parameters, const WalkRequest& request,
                         const ConstraintFamilies& extra_families,
@@ -100,7 +102,7 @@ WalkResult generateWalk(const WalkingParameters& parameters, const WalkRequest& 
                          " s: capture point " + std::to_string(generator.captureDistance()) +
                          " m from the nearest foot (limit " +
                          std::to_string(request.generator.fall_capture_distance) + " m)";
-        record(sample, out);  // the closing sample
+        appendControlSample(sample, out);  // the closing sample
         fallen = true;
         break;
       }
@@ -114,7 +116,7 @@ WalkResult generateWalk(const WalkingParameters& parameters, const WalkRequest& 
         }
       }
       if (observer) observer->afterStep(generator, sample);
-      record(sample, out);
+      appendControlSample(sample, out);
       if (generator.landed()) out.footsteps.push_back(generator.lastLanding());
     }
   }
@@ -124,7 +126,7 @@ WalkResult generateWalk(const WalkingParameters& parameters, const WalkRequest& 
     // The sample at the end belongs to the last period: a swing foot still in the air is
     // where its polynomial puts it (not back at its lift-off pose).
     generator.setPushAcceleration(request.pushAccelerationAt(generator.time()));
-    record(generator.currentSample(), out);
+    appendControlSample(generator.currentSample(), out);
   }
   return result;
 }

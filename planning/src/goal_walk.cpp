@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "wpg/online_walking_generator.hpp"
+#include "wpg/walk_generator.hpp"
 
 namespace wpg::planning {
 namespace {
@@ -27,19 +28,6 @@ constexpr int kMaxStopRetries = 3;
 // replans (the `nmpc_only` baseline of the comparison studies: the NMPC alone meets the
 // obstacles).
 constexpr const char* kNoPlanner = "none";
-
-void record(const ControlSample& s, WalkTrajectory& out) {
-  // The same columns as generateWalk records (walk_generator.cpp), one row per control period.
-  out.time.push_back(s.time);
-  out.com.push_back(s.com_position);
-  out.com_vel.push_back(s.com_velocity);
-  out.com_acc.push_back(s.com_acceleration);
-  out.cop.push_back(s.cop);
-  out.left_foot.push_back(s.left_foot);
-  out.right_foot.push_back(s.right_foot);
-  out.free_flyer_yaw.push_back(s.free_flyer_yaw);
-  out.support.push_back(s.support);
-}
 
 std::string format(double value, int digits = 2) {
   char text[64];
@@ -335,7 +323,7 @@ GoalWalkResult walkToGoal(const wpg::WalkingParameters& parameters, const wpg::W
                        " s: capture point " + std::to_string(generator.captureDistance()) +
                        " m from the nearest foot (limit " +
                        std::to_string(request.generator.fall_capture_distance) + " m)";
-        record(sample, out);
+        appendControlSample(sample, out);
         fallen = true;
         break;
       }
@@ -348,29 +336,15 @@ GoalWalkResult walkToGoal(const wpg::WalkingParameters& parameters, const wpg::W
                          " s ended with status '" + iterationStatusName(log.status) + "'";
         }
       }
-      record(sample, out);
+      appendControlSample(sample, out);
       if (generator.landed()) out.footsteps.push_back(generator.lastLanding());
     }
   }
   // Steps landed inside a margin (relaxed obstacle rows) fail the walk, as in generateWalk.
-  if (walk.success && generator.obstacleDistance()) {
-    for (const Footstep& step : out.footsteps) {
-      if (step.landing_time <= 0.0) continue;
-      for (int o = 0; o < static_cast<int>(request.obstacles.size()) && walk.success; ++o) {
-        const double clearance =
-            stepCentreClearance(*generator.obstacleDistance(), o, request.obstacles[o], parameters,
-                                step.pose.head<2>());
-        if (clearance < -1e-6) {
-          walk.success = false;
-          walk.message = "the step landing at t = " + std::to_string(step.landing_time) + " s is " +
-                         std::to_string(-clearance) + " m inside obstacle " + std::to_string(o) +
-                         "'s margin (its constraint had to be relaxed)";
-        }
-      }
-    }
-  }
+  if (walk.success && generator.obstacleDistance())
+    checkLandingsClear(parameters, request, *generator.obstacleDistance(), walk);
   const ControlSample& last = generator.currentSample();
-  if (!fallen) record(last, out);
+  if (!fallen) appendControlSample(last, out);
   const Eigen::Vector2d stand = 0.5 * (last.left_foot.head<2>() + last.right_foot.head<2>());
   result.final_pose = Eigen::Vector3d(stand.x(), stand.y(), last.free_flyer_yaw);
   result.final_distance = (stand - goal.goal.position).norm();

@@ -14,6 +14,7 @@
 #include "wpg/online_walking_generator.hpp"
 #include "wpg/robots/multibody_replay.hpp"
 #include "wpg/robots/walking_ik.hpp"
+#include "zmp_error_statistics.hpp"
 
 namespace wpg::robots {
 namespace {
@@ -34,20 +35,6 @@ MultibodyReplaySettings zmpReplaySettings(const WalkingParameters& w) {
   return s;
 }
 
-ZmpErrorStatistics errorStatistics(const WalkTrajectory& walk, const Eigen::MatrixXd& zmp) {
-  ZmpErrorStatistics s;
-  double sum = 0.0;
-  int count = 0;
-  for (Eigen::Index i = 0; i < zmp.rows(); ++i) {
-    const Eigen::Vector2d e = walk.cop[static_cast<std::size_t>(i)] - zmp.row(i).transpose();
-    if (!e.allFinite()) continue;
-    sum += e.squaredNorm();
-    s.max = std::max(s.max, e.norm());
-    ++count;
-  }
-  s.rms = count ? std::sqrt(sum / count) : 0.0;
-  return s;
-}
 
 // The controller around the WPG, called by generateWalk around every control period.
 class FilterLoop : public ControlLoopObserver {
@@ -165,8 +152,8 @@ class FilterLoop : public ControlLoopObserver {
     }
     MultibodyReplay validation_replay(model_, zmpReplaySettings(w_));
     out.zmp_multibody_filtered = validation_replay.run(out.q, w_.control_period, com_force).zmp;
-    out.before = errorStatistics(walk, out.zmp_multibody);
-    out.after = errorStatistics(walk, out.zmp_multibody_filtered);
+    out.before = detail::zmpErrorStatistics(walk, out.zmp_multibody);
+    out.after = detail::zmpErrorStatistics(walk, out.zmp_multibody_filtered);
 
     // Timings: per control period, and summed per NMPC iteration (chain_time, as before).
     const Eigen::Index ticks = static_cast<Eigen::Index>(stages_.size());

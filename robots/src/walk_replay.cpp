@@ -9,6 +9,7 @@
 #include "wpg/dynamic_filter.hpp"
 #include "wpg/robots/multibody_replay.hpp"
 #include "wpg/robots/walking_ik.hpp"
+#include "zmp_error_statistics.hpp"
 
 namespace wpg::robots {
 namespace {
@@ -47,20 +48,6 @@ Eigen::MatrixXd solveIk(const WalkingIk& ik, const RobotModel& model, const Walk
   return std::move(result.q);
 }
 
-ZmpErrorStatistics statistics(const WalkTrajectory& walk, const Eigen::MatrixXd& zmp) {
-  ZmpErrorStatistics s;
-  double sum = 0.0;
-  int count = 0;
-  for (Eigen::Index i = 0; i < zmp.rows(); ++i) {
-    const Eigen::Vector2d e = walk.cop[i] - zmp.row(i).transpose();
-    if (!e.allFinite()) continue;
-    sum += e.squaredNorm();
-    s.max = std::max(s.max, e.norm());
-    ++count;
-  }
-  s.rms = count ? std::sqrt(sum / count) : 0.0;
-  return s;
-}
 
 }  // namespace
 
@@ -111,7 +98,7 @@ MultibodyValidation replayWalk(const RobotModel& model, const WalkingParameters&
   auto start = Clock::now();
   out.zmp_multibody = replay.run(q, dt, com_force).zmp;
   const double zmp_time = seconds(start);
-  out.before = statistics(walk, out.zmp_multibody);
+  out.before = detail::zmpErrorStatistics(walk, out.zmp_multibody);
   if (!settings.filter) {
     out.q = q;
     out.after = out.before;
@@ -131,7 +118,7 @@ MultibodyValidation replayWalk(const RobotModel& model, const WalkingParameters&
     const double filter_time = seconds(start);
     out.q = solveIk(ik, model, walk, out.com_filtered, per_iteration, out, true);
     out.zmp_multibody_filtered = replay.run(out.q, dt, com_force).zmp;
-    out.after = statistics(walk, out.zmp_multibody_filtered);
+    out.after = detail::zmpErrorStatistics(walk, out.zmp_multibody_filtered);
     // The whole-walk stages are spread evenly over the iterations (per-sample costs). The
     // validation replay of the corrected motion is not part of the control chain.
     out.chain_stage_time.col(3).setConstant(filter_time / iterations);

@@ -3,6 +3,8 @@
 // the yaw derivative of the CoP rows, and g itself against a direct geometric computation.
 #include <gtest/gtest.h>
 
+#include <initializer_list>
+
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -50,6 +52,26 @@ std::string describeRow(const NmpcLayout& L, int row) {
   if (row < L.firstObstacleRow()) return "yaw step " + std::to_string((row - cop - feas) / 2);
   return "obstacle step " + std::to_string((row - L.firstObstacleRow()) / std::max(1, L.obstacle_slots)) +
          " slot " + std::to_string((row - L.firstObstacleRow()) % std::max(1, L.obstacle_slots));
+}
+
+
+// Every previewed step of U at a random point of [-1.2, 1.2]^2 at least 2 cm from the listed
+// obstacles (their signed distances are not smooth on the boundary).
+void placeStepsClearOf(const NmpcLayout& L, const wpg::AnalyticObstacleDistance& distance,
+                       std::initializer_list<int> obstacles, Rng& rng, VectorXd& U) {
+  for (int i = 0; i < L.steps; ++i) {
+    for (int attempt = 0;; ++attempt) {
+      ASSERT_LT(attempt, 1000);
+      const Vector2d F(rng.uniform(-1.2, 1.2), rng.uniform(-1.2, 1.2));
+      bool clear = true;
+      for (const int o : obstacles)
+        if (distance.signedDistance(o, F, nullptr) < 0.02) clear = false;
+      if (!clear) continue;
+      U(L.stepX() + i) = F.x();
+      U(L.stepY() + i) = F.y();
+      break;
+    }
+  }
 }
 
 TEST(NmpcJacobian, MatchesCentralFiniteDifferencesEverywhere) {
@@ -115,19 +137,7 @@ TEST_P(ObstacleRows, MatchFiniteDifferencesAndTheirForm) {
       problem.obstacle_slot << 0, 1, -1, 2;
       VectorXd U = randomU(model, problem, rng);
       // Steps at least 2 cm away from every obstacle boundary.
-      for (int i = 0; i < L.steps; ++i) {
-        for (int attempt = 0;; ++attempt) {
-          ASSERT_LT(attempt, 1000);
-          const Vector2d F(rng.uniform(-1.2, 1.2), rng.uniform(-1.2, 1.2));
-          bool clear = true;
-          for (int o = 0; o < 3; ++o)
-            if (distance.signedDistance(o, F, nullptr) < 0.02) clear = false;
-          if (!clear) continue;
-          U(L.stepX() + i) = F.x();
-          U(L.stepY() + i) = F.y();
-          break;
-        }
-      }
+      placeStepsClearOf(L, distance, {0, 1, 2}, rng, U);
       const JacobianCheck check = compareWithFiniteDifferences(model, problem, U);
       ++points;
       EXPECT_LE(check.worst, 1e-6) << "pattern " << pattern << " trial " << trial << ": row "
@@ -223,18 +233,7 @@ TEST(NmpcJacobian, CommandTangentObstacleRowsMatchFiniteDifferences) {
       const double angle = rng.uniform(-3.0, 3.0);
       problem.obstacle_normal.col(0) = Vector2d(std::cos(angle), std::sin(angle));
       VectorXd U = randomU(model, problem, rng);
-      for (int i = 0; i < L.steps; ++i) {  // away from the box and polygon (non-smooth inside)
-        for (int attempt = 0;; ++attempt) {
-          ASSERT_LT(attempt, 1000);
-          const Vector2d F(rng.uniform(-1.2, 1.2), rng.uniform(-1.2, 1.2));
-          if (distance.signedDistance(1, F, nullptr) < 0.02 ||
-              distance.signedDistance(2, F, nullptr) < 0.02)
-            continue;
-          U(L.stepX() + i) = F.x();
-          U(L.stepY() + i) = F.y();
-          break;
-        }
-      }
+      placeStepsClearOf(L, distance, {1, 2}, rng, U);  // the box and polygon: non-smooth inside
       const JacobianCheck check = compareWithFiniteDifferences(model, problem, U);
       ++points;
       EXPECT_LE(check.worst, 1e-6) << "pattern " << pattern << " trial " << trial << ": row "

@@ -46,4 +46,13 @@ WalkResult generateWalk(const WalkingParameters& parameters, const WalkRequest& 
                         const ConstraintFamilies& extra_families = {},
                         ControlLoopObserver* observer = nullptr);
 
+// The pieces of generateWalk that other loops over OnlineWalkingGenerator share (the walk to a
+// goal, planning/goal_walk.cpp), so that their trajectories and verdicts are the same:
+// Appends one control period's sample to the trajectory's per-period columns.
+void appendControlSample(const ControlSample& sample, WalkTrajectory& trajectory);
+// Fails a successful walk (success, message) when a landed step lies inside an obstacle grown
+// by the obstacle rows' bound (relaxed obstacle rows; stepCentreClearance below -1e-6 m).
+void checkLandingsClear(const WalkingParameters& parameters, const WalkRequest& request,
+                        const ObstacleDistanceOracle& distance, WalkResult& result);
+
 }  // namespace wpg
