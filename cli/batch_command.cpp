@@ -17,6 +17,7 @@
 #include "wpg/analysis/run_metrics.hpp"
 #include "wpg/datasets/batch_dataset.hpp"
 #include "wpg/datasets/input_error.hpp"
+#include "wpg/datasets/output_file.hpp"
 #include "wpg/datasets/study.hpp"
 
 namespace fs = std::filesystem;
@@ -62,9 +63,14 @@ std::vector<double> summaryValues(const ScenarioOutcome& outcome) {
   return values;
 }
 
-void checkOutputFolder(const fs::path& output) {
+void checkOutputFolder(const fs::path& output, const std::string& study) {
   std::error_code ec;
-  if (fs::is_directory(output, ec)) throw UsageError("output '" + output.string() + "' is a directory");
+  // Never over the study, a device, a folder or a file that is not HDF5 (output_file.hpp).
+  try {
+    datasets::checkOutputPath(output.string(), datasets::OutputKind::kHdf5, {study});
+  } catch (const datasets::InputError& e) {
+    throw UsageError(e.what());
+  }
   for (fs::path folder = output.parent_path(); !folder.empty(); folder = folder.parent_path()) {
     if (fs::exists(folder, ec)) {
       if (!fs::is_directory(folder, ec) || ::access(folder.c_str(), W_OK | X_OK) != 0) {
@@ -148,7 +154,7 @@ int batchCommand(const BatchOptions& options) {
   const datasets::Study study = datasets::loadStudy(
       options.study, [](const std::string& base) { return resolveScenarioPath(base); },
       robotsDirectory(), options.threads);
-  checkOutputFolder(output);
+  checkOutputFolder(output, options.study);
   std::set<std::string> replayed_robots;
   for (const datasets::StudyRun& run : study.runs) {
     if (run.scenario.replay) replayed_robots.insert(run.scenario.robot);

@@ -24,6 +24,7 @@
 #include "cli_common.hpp"
 #include "json_text.hpp"
 #include "pipeline_stages.hpp"
+#include "wpg/datasets/output_file.hpp"
 #include "summary_printing.hpp"
 #include "wpg/analysis/chain_timing.hpp"
 #include "wpg/analysis/zmp_error.hpp"
@@ -233,23 +234,14 @@ void writeJson(const std::string& path, const std::vector<BenchRow>& rows) {
          << (i + 1 < rows.size() ? "," : "") << "\n";
   }
   json << "  ]\n}\n";
-  // Atomic like the datasets: a temporary file in the same folder, then a rename.
-  const fs::path target(path);
-  std::error_code ec;
-  if (target.has_parent_path()) fs::create_directories(target.parent_path(), ec);
-  const std::string temporary = path + ".tmp-" + std::to_string(::getpid());
+  // Atomic like the datasets: an exclusive temporary file in the same folder, then a rename.
+  datasets::TemporaryOutput temporary(path);
   {
-    std::ofstream stream(temporary);
+    std::ofstream stream(temporary.path());
     stream << json.str();
-    if (!stream.flush()) {
-      std::remove(temporary.c_str());
-      throw std::runtime_error("cannot write " + path);
-    }
+    if (!stream.flush()) throw std::runtime_error("cannot write " + path);
   }
-  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
-    std::remove(temporary.c_str());
-    throw std::runtime_error("cannot write " + path);
-  }
+  temporary.commit();
 }
 
 }  // namespace
@@ -267,9 +259,14 @@ int benchCommand(const BenchOptions& options) {
     }
     checkFilterSettings(scenarios.back(), path);
   }
-  std::error_code ec;
-  if (!options.json.empty() && fs::is_directory(options.json, ec)) {
-    throw UsageError("--json '" + options.json + "' is a directory");
+  if (!options.json.empty()) {
+    std::vector<std::string> inputs;
+    for (const std::string& argument : options.scenarios) inputs.push_back(resolveScenarioPath(argument));
+    try {
+      datasets::checkOutputPath(options.json, datasets::OutputKind::kJson, inputs);
+    } catch (const datasets::InputError& e) {
+      throw UsageError(std::string("--json ") + e.what());
+    }
   }
   std::vector<robots::RobotModel> models;
   std::vector<std::string> robot_names;

@@ -14,6 +14,8 @@
 #include <system_error>
 
 #include "cli_common.hpp"
+#include "wpg/datasets/input_error.hpp"
+#include "wpg/datasets/output_file.hpp"
 
 extern char** environ;
 
@@ -90,8 +92,11 @@ int plotCommand(const PlotOptions& options) {
   }
   fs::path figure = options.output;
   if (figure.empty()) figure = fs::path(options.input).replace_extension(".png");
-  if (fs::equivalent(figure, options.input, ec)) {
-    throw UsageError("the figure '" + figure.string() + "' would overwrite the run file");
+  // Never over the run file, a device, a folder or a file that is not a PNG (output_file.hpp).
+  try {
+    datasets::checkOutputPath(figure.string(), datasets::OutputKind::kPng, {options.input});
+  } catch (const datasets::InputError& e) {
+    throw UsageError(e.what());
   }
   if (figure.has_parent_path()) {
     fs::create_directories(figure.parent_path(), ec);

@@ -10,6 +10,7 @@
 #include "pipeline_stages.hpp"
 #include "summary_printing.hpp"
 #include "wpg/datasets/input_error.hpp"
+#include "wpg/datasets/output_file.hpp"
 #include "wpg/datasets/run_dataset_reader.hpp"
 #include "wpg/datasets/scenario.hpp"
 
@@ -47,10 +48,22 @@ int replayCommand(const ReplayOptions& options) {
                                                        : fs::path(options.output);
   fs::path figure_path = fs::path(dataset_path).replace_extension(".png");
   if (figure_path == dataset_path) figure_path += ".png";  // never draw over the dataset
-  std::error_code ec;
-  if (fs::is_directory(dataset_path, ec)) {
-    throw UsageError("output '" + dataset_path.string() + "' is a directory");
+  // The run file is replaced by default (atomically); no device, folder, robot file or file of
+  // another kind is (output_file.hpp).
+  const std::vector<std::string> inputs = {
+      (fs::path(robotsDirectory()) / scenario.robot / "walking.yaml").string(),
+      robotUrdfPath(scenario.robot)};
+  try {
+    datasets::checkOutputPath(dataset_path.string(), datasets::OutputKind::kHdf5, inputs);
+    if (options.plot) {
+      std::vector<std::string> figure_inputs = inputs;
+      figure_inputs.push_back(options.input);
+      datasets::checkOutputPath(figure_path.string(), datasets::OutputKind::kPng, figure_inputs);
+    }
+  } catch (const datasets::InputError& e) {
+    throw UsageError(e.what());
   }
+  std::error_code ec;
 
   const WalkTrajectory& walk = stored.result.trajectory;
   const ReplayOutcome replay = replayScenarioWalk(model, scenario, walk, scenario.filter);

@@ -12,6 +12,7 @@
 #include "summary_printing.hpp"
 #include "wpg/analysis/run_summary.hpp"
 #include "wpg/datasets/input_error.hpp"
+#include "wpg/datasets/output_file.hpp"
 #include "wpg/datasets/scenario.hpp"
 #include "wpg/walk_generator.hpp"
 
@@ -66,10 +67,18 @@ int runCommand(const RunOptions& options) {
       options.output.empty() ? fs::path("out") / (scenario.name + ".h5") : fs::path(options.output);
   fs::path figure_path = fs::path(dataset_path).replace_extension(".png");
   if (figure_path == dataset_path) figure_path += ".png";  // never draw over the dataset
-  std::error_code ec;
-  if (fs::is_directory(dataset_path, ec)) {
-    throw UsageError("output '" + dataset_path.string() + "' is a directory");
+  // Never replace an input, a device, a folder or a file of another kind (output_file.hpp).
+  const std::vector<std::string> inputs = {
+      scenario_path, (fs::path(robotsDirectory()) / scenario.robot / "walking.yaml").string(),
+      robotUrdfPath(scenario.robot)};
+  try {
+    datasets::checkOutputPath(dataset_path.string(), datasets::OutputKind::kHdf5, inputs);
+    if (options.plot)
+      datasets::checkOutputPath(figure_path.string(), datasets::OutputKind::kPng, inputs);
+  } catch (const datasets::InputError& e) {
+    throw UsageError(e.what());
   }
+  std::error_code ec;
   for (fs::path folder = dataset_path.parent_path(); !folder.empty(); folder = folder.parent_path()) {
     if (fs::exists(folder, ec)) {
       if (!fs::is_directory(folder, ec) || ::access(folder.c_str(), W_OK | X_OK) != 0) {

@@ -23,6 +23,7 @@
 #include <H5Cpp.h>
 
 #include "goal_dataset.hpp"
+#include "wpg/datasets/output_file.hpp"
 #include "hdf5_writing.hpp"
 #include "run_group_writing.hpp"
 #include "run_checks.hpp"
@@ -556,40 +557,23 @@ void writeRunDataset(const std::string& path, const Scenario& scenario,
   if (goal && !scenario.goal.enabled) {
     throw std::invalid_argument("writeRunDataset: a goal outcome for a scenario without a goal");
   }
-  const fs::path target(path);
-  if (path.empty() || !target.has_filename()) {
+  if (path.empty() || !fs::path(path).has_filename()) {
     throw std::invalid_argument("writeRunDataset: '" + path + "' is not a file path");
   }
-  const fs::path parent = target.parent_path();
-  if (!parent.empty()) {
-    std::error_code ec;
-    fs::create_directories(parent, ec);
-    if (ec) {
-      throw std::runtime_error(path + ": cannot create the directory '" + parent.string() +
-                               "': " + ec.message());
+  // Written beside the target under an unpredictable name, then renamed over it (atomic on one
+  // file system); removed on failure and on SIGINT / SIGTERM (output_file.hpp).
+  TemporaryOutput temporary(path);
+  {
+    std::lock_guard<std::mutex> lock(hdf5Mutex());
+    H5::Exception::dontPrint();  // errors become exceptions with messages, not stderr dumps
+    try {
+      writeFile(temporary.path(), scenario, result, clearances, multibody, goal);
+    } catch (const H5::Exception& error) {
+      throw std::runtime_error(path + ": cannot write the HDF5 file (" + error.getFuncName() +
+                               ": " + error.getDetailMsg() + ")");
     }
   }
-  // Same directory as the target, so that the rename is atomic (same file system).
-  const std::string temporary = path + ".tmp-" + std::to_string(::getpid());
-
-  std::lock_guard<std::mutex> lock(hdf5Mutex());
-  H5::Exception::dontPrint();  // errors become exceptions with messages, not stderr dumps
-  try {
-    writeFile(temporary, scenario, result, clearances, multibody, goal);
-  } catch (const H5::Exception& error) {
-    std::remove(temporary.c_str());
-    throw std::runtime_error(path + ": cannot write the HDF5 file (" + error.getFuncName() +
-                             ": " + error.getDetailMsg() + ")");
-  } catch (...) {
-    std::remove(temporary.c_str());
-    throw;
-  }
-  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
-    const int error = errno;
-    std::remove(temporary.c_str());
-    throw std::runtime_error(path + ": cannot move the temporary file " + temporary +
-                             " into place: " + std::strerror(error));
-  }
+  temporary.commit();
 }
 
 }  // namespace wpg::datasets

@@ -64,9 +64,10 @@ struct GoalOutcome {
 };
 
 // Writes `result` of `scenario` to `path` (group /runs/<scenario.name>), atomically: the file
-// is written as `<path>.tmp-<pid>` in the same directory, then renamed over `path`; on any
-// error the temporary file is removed and `path` is left as it was. Creates the parent
-// directory when missing.
+// is written as a temporary file created exclusively under an unpredictable name in the same
+// folder (TemporaryOutput, output_file.hpp), then renamed over `path`; on any error, SIGINT or
+// SIGTERM the temporary file is removed and `path` is left as it was. Creates the parent
+// directory when missing. The caller checks `path` first (checkOutputPath).
 //
 // The scenario's obstacles go to /runs/<name>/obstacles/, the footstep clearances to
 // /runs/<name>/checks/ (when the scenario has obstacles; `clearances` may be null, then only
