@@ -157,10 +157,13 @@ const std::vector<SettingField<GeneratorSettings>>& generatorSettingFields() {
   using G = GeneratorSettings;
   static const std::vector<SettingField<G>> fields = {
       integerSetting("sqp_iterations", &G::sqp_iterations, 0,
-                     "an integer >= 0 (1 = real-time iteration, 0 = to convergence)"),
-      integerSetting("max_sqp_iterations", &G::max_sqp_iterations, 1, "an integer >= 1"),
+                     "an integer in [0, 1000] (1 = real-time iteration, 0 = to convergence)",
+                     1000),
+      integerSetting("max_sqp_iterations", &G::max_sqp_iterations, 1, "an integer in [1, 1000]",
+                     1000),
       positiveSetting("sqp_tolerance", &G::sqp_tolerance, "a positive number"),
-      integerSetting("max_qp_iterations", &G::max_qp_iterations, 1, "an integer >= 1"),
+      integerSetting("max_qp_iterations", &G::max_qp_iterations, 1,
+                     "an integer in [1, 100000]", 100000),
       positiveSetting("slack_weight", &G::slack_weight, "a positive number"),
       positiveSetting("fall_capture_distance", &G::fall_capture_distance,
                       "a positive distance in m"),
@@ -176,7 +179,8 @@ const std::vector<SettingField<PreviewControlSettings>>& filterSettingFields() {
   static const std::vector<SettingField<F>> fields = {
       positiveSetting("error_weight", &F::error_weight, "a positive weight (Qe)"),
       positiveSetting("input_weight", &F::input_weight, "a positive weight (R)"),
-      positiveSetting("preview_time", &F::preview_time, "a positive duration in seconds"),
+      positiveSetting("preview_time", &F::preview_time,
+                      "a positive duration of at most 10 seconds", 10.0),
   };
   return fields;
 }

@@ -61,18 +61,20 @@ struct SettingField {
   int Settings::*integer;      // an integer in [minimum, maximum]
   int minimum;
   int maximum;
+  double positive_maximum;  // a positive number is at most this
 };
 
 template <typename Settings>
 SettingField<Settings> positiveSetting(const char* name, double Settings::*member,
-                                       const char* expected) {
-  return {name, expected, member, nullptr, 0, 0};
+                                       const char* expected,
+                                       double maximum = std::numeric_limits<double>::infinity()) {
+  return {name, expected, member, nullptr, 0, 0, maximum};
 }
 template <typename Settings>
 SettingField<Settings> integerSetting(const char* name, int Settings::*member, int minimum,
                                       const char* expected,
                                       int maximum = std::numeric_limits<int>::max()) {
-  return {name, expected, nullptr, member, minimum, maximum};
+  return {name, expected, nullptr, member, minimum, maximum, 0.0};
 }
 
 // `generator:` without `algorithm` (an enum, read and emitted by name before these).
@@ -97,7 +99,9 @@ void readSettingFields(const Entries& entries, const std::string& section,
     const YAML::Node node = entry(entries, field.name);
     const std::string key = childKey(section, field.name);
     if (field.positive) {
-      settings->*field.positive = readPositive(node, key, field.expected, source);
+      const double value = readPositive(node, key, field.expected, source);
+      if (value > field.positive_maximum) source.fail(key, field.expected, node);
+      settings->*field.positive = value;
     } else {
       const int value = readInteger(node, key, field.minimum, field.expected, source);
       if (value > field.maximum) source.fail(key, field.expected, node);

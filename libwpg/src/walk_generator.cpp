@@ -32,6 +32,18 @@ void requireFeetClear(const OnlineWalkingGenerator& generator, const WalkRequest
 
 }  // namespace
 
+void checkWalkSize(const WalkingParameters& parameters, const WalkRequest& request) {
+  // Both validated: duration <= kMaxWalkDuration, control_period >= 1e-6 s; the quotient is
+  // compared as a double, before any conversion to an integer.
+  const double periods = request.duration / parameters.control_period;
+  if (!(periods <= kMaxControlPeriods)) {
+    throw std::invalid_argument(
+        "'duration': expected at most " + std::to_string(static_cast<long long>(kMaxControlPeriods)) +
+        " control periods of " + std::to_string(parameters.control_period) +
+        " s (the walk is kept in memory, ~0.3 kB a period), got " + std::to_string(periods));
+  }
+}
+
 void appendControlSample(const ControlSample& s, WalkTrajectory& out) {
   out.time.push_back(s.time);
   out.com.push_back(s.com_position);
@@ -71,6 +83,7 @@ WalkResult generateWalk(const WalkingParameters& parameters, const WalkRequest& 
                         ControlLoopObserver* observer) {
   parameters.validate();
   request.validate();
+  checkWalkSize(parameters, request);
   OnlineWalkingGenerator generator(parameters, request.generator, extra_families);
   // Obstacle distances: libwpg's exact 2-D ones, as the NMPC's rows see them.
   if (!request.obstacles.empty()) {

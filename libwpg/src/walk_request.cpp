@@ -50,8 +50,9 @@ std::string str(double v) { return detail::formatValue(v); }
 }  // namespace
 
 void WalkRequest::validate() const {
-  if (!std::isfinite(duration) || duration <= 0.0)
-    fail("duration", "a positive number of seconds", str(duration));
+  // Bounded: the walk is recorded every control period in memory (~0.3 kB a period).
+  if (!std::isfinite(duration) || duration <= 0.0 || duration > kMaxWalkDuration)
+    fail("duration", "a positive number of seconds, at most 3600", str(duration));
   if (!std::isfinite(robot_mass) || robot_mass <= 0.0)
     fail("mass", "a positive mass in kg", str(robot_mass));
   for (std::size_t i = 0; i < reference.size(); ++i) {
@@ -82,13 +83,15 @@ void GeneratorSettings::validate() const {
     fail("generator.max_obstacles_in_qp", "an integer in [0, 32]", str(g.max_obstacles_in_qp));
   if (!(g.obstacle_reach > 0.0) || !std::isfinite(g.obstacle_reach))
     fail("generator.obstacle_reach", "a positive distance in m", str(g.obstacle_reach));
-  if (g.sqp_iterations < 0) fail("generator.sqp_iterations", "an integer >= 0", str(g.sqp_iterations));
-  if (g.max_sqp_iterations < 1)
-    fail("generator.max_sqp_iterations", "an integer >= 1", str(g.max_sqp_iterations));
+  // Bounded work (issue #13): a sample never iterates without end.
+  if (g.sqp_iterations < 0 || g.sqp_iterations > kMaxSqpIterations)
+    fail("generator.sqp_iterations", "an integer in [0, 1000]", str(g.sqp_iterations));
+  if (g.max_sqp_iterations < 1 || g.max_sqp_iterations > kMaxSqpIterations)
+    fail("generator.max_sqp_iterations", "an integer in [1, 1000]", str(g.max_sqp_iterations));
   if (!(g.sqp_tolerance > 0.0) || !std::isfinite(g.sqp_tolerance))
     fail("generator.sqp_tolerance", "a positive number", str(g.sqp_tolerance));
-  if (g.max_qp_iterations < 1)
-    fail("generator.max_qp_iterations", "an integer >= 1", str(g.max_qp_iterations));
+  if (g.max_qp_iterations < 1 || g.max_qp_iterations > kMaxQpIterations)
+    fail("generator.max_qp_iterations", "an integer in [1, 100000]", str(g.max_qp_iterations));
   if (!(g.fall_capture_distance > 0.0) || !std::isfinite(g.fall_capture_distance))
     fail("generator.fall_capture_distance", "a positive distance in m", str(g.fall_capture_distance));
   if (!(g.slack_weight > 0.0) || !std::isfinite(g.slack_weight))

@@ -103,10 +103,13 @@ void WalkingParameters::validate() const {
   requirePositive(com_height, "com_height");
   requirePositive(gravity, "gravity");
   requirePositive(sampling_period, "sampling_period");
+  require(sampling_period >= 1e-3 && sampling_period <= 10.0, "sampling_period",
+          "a duration in [0.001, 10] s", sampling_period);
   require(horizon_length >= 2 && horizon_length <= 200, "horizon_length", "an integer in [2, 200]",
           horizon_length);
-  require(single_support_samples >= 1, "single_support_samples", "an integer >= 1",
-          single_support_samples);
+  // Bounded before any product of them (no signed overflow, issue #13).
+  require(single_support_samples >= 1 && single_support_samples <= 1000,
+          "single_support_samples", "an integer in [1, 1000]", single_support_samples);
   // The phase bookkeeping follows the paper (Sec. III-C1): NMPC samples never fall inside a
   // double support phase, which lasts exactly one sampling period.
   require(double_support_samples == 1, "double_support_samples",
@@ -116,7 +119,9 @@ void WalkingParameters::validate() const {
           previewed_steps);
   // Every previewed step must own at least one CoP sample and no sample may fall beyond the
   // last previewed step: N = nf * (samples per step), as the paper's N = 16, nf = 2.
-  require(horizon_length == previewed_steps * stepSamples(), "horizon_length",
+  require(static_cast<long long>(horizon_length) ==
+              static_cast<long long>(previewed_steps) * stepSamples(),
+          "horizon_length",
           "previewed_steps * (single_support_samples + double_support_samples) = " +
               std::to_string(previewed_steps * stepSamples()),
           horizon_length);
@@ -133,9 +138,11 @@ void WalkingParameters::validate() const {
           "push_step_swing_samples", "an integer in [1, single_support_samples]",
           push_step_swing_samples);
   requirePositive(control_period, "control_period");
+  // At most 1000 control periods per sample: the ratio is converted to an integer.
   const double ratio = sampling_period / control_period;
-  require(std::abs(ratio - std::round(ratio)) < 1e-9 && ratio >= 1.0, "control_period",
-          "a divisor of sampling_period", control_period);
+  require(ratio >= 1.0 && ratio <= 1000.0 && std::abs(ratio - std::round(ratio)) < 1e-9,
+          "control_period", "a divisor of sampling_period, at least sampling_period / 1000",
+          control_period);
   requirePositive(foot_length, "foot_length");
   requirePositive(foot_width, "foot_width");
   requireNonNegative(ankle_height, "ankle_height");

@@ -164,6 +164,7 @@ GoalWalkResult walkToGoal(const wpg::WalkingParameters& parameters, const wpg::W
                           const PathFollowerSettings& follower_settings) {
   parameters.validate();
   request.validate();
+  checkWalkSize(parameters, request);
   if (!goal.enabled) throw std::invalid_argument("walkToGoal: the goal request is not enabled");
   checkGoalRequest(parameters, request, goal);
 

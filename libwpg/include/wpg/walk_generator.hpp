@@ -46,6 +46,12 @@ WalkResult generateWalk(const WalkingParameters& parameters, const WalkRequest& 
                         const ConstraintFamilies& extra_families = {},
                         ControlLoopObserver* observer = nullptr);
 
+// At most this many control periods in one walk: ~0.3 kB each in memory, 3600 s at 5 ms.
+constexpr double kMaxControlPeriods = 720000.0;
+// Throws std::invalid_argument naming 'duration' when the walk would record more control
+// periods than kMaxControlPeriods (generateWalk calls it; so may other loops, before any work).
+void checkWalkSize(const WalkingParameters& parameters, const WalkRequest& request);
+
 // The pieces of generateWalk that other loops over OnlineWalkingGenerator share (the walk to a
 // goal, planning/goal_walk.cpp), so that their trajectories and verdicts are the same:
 // Appends one control period's sample to the trajectory's per-period columns.

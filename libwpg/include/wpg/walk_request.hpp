@@ -19,6 +19,11 @@ enum class GeneratorAlgorithm {
 bool parseGeneratorAlgorithm(const std::string& name, GeneratorAlgorithm* out);
 const char* generatorAlgorithmName(GeneratorAlgorithm algorithm);
 
+// Limits of bounded work (issue #13; datasets/SCENARIOS.md, "Limits").
+constexpr int kMaxSqpIterations = 1000;     // generator.sqp_iterations, max_sqp_iterations
+constexpr int kMaxQpIterations = 100000;    // generator.max_qp_iterations
+constexpr double kMaxWalkDuration = 3600.0;  // [s] duration of one walk
+
 struct GeneratorSettings {
   GeneratorAlgorithm algorithm = GeneratorAlgorithm::kNmpc;
   // Gauss-Newton iterations per NMPC sample: 1 = real-time iteration (the paper, Sec. III-E);
