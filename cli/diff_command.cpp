@@ -75,7 +75,6 @@ int diffCommand(const DiffOptions& options) {
   settings.ignore_patterns = options.ignore_patterns;
   const datasets::DatasetDiff diff = datasets::diffDatasets(options.a, options.b, settings);
 
-  const std::size_t fields = diff.datasets_compared + diff.attributes_compared;
   const std::string tolerances = "rtol " + format("%g", options.rtol) + ", atol " +
                                  format("%g", options.atol);
   std::cout << "A " << options.a << "\nB " << options.b << "\n";
@@ -89,7 +88,8 @@ int diffCommand(const DiffOptions& options) {
     return kExitSuccess;
   }
 
-  std::cout << "different: " << diff.differences.size() << " of " << fields << " fields differ\n";
+  std::cout << "different: " << diff.differences.size() << " field"
+            << (diff.differences.size() == 1 ? "" : "s") << " differ\n";
   // The first sample of a dataset (the walk itself) says more than a summary attribute: it is
   // preferred; a scalar attribute is reported when no dataset sample differs.
   const datasets::FieldDifference* first = nullptr;
