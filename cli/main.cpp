@@ -134,11 +134,13 @@ int main(int argc, char** argv) {
   diff_app->add_flag("--ignore-wall-time,!--compare-wall-time", diff.ignore_wall_time,
                      "Leave out the wall-time fields (mpc/solve_time, timing/, plans/"
                      "planning_time and simplification_time, the batch summary's nmpc_time_*); "
-                     "on by default");
+                     "on by default")
+      ->default_str("");
   diff_app->add_option("--ignore", diff.ignore_patterns,
                        "Also leave out the fields whose path matches this shell pattern "
                        "(repeatable; `*` matches `/` too), e.g. '*/checks@*_violation_time'")
-      ->type_name("PATTERN");
+      ->type_name("PATTERN")
+      ->default_str("");
 
   PlotOptions plot;
   CLI::App* plot_app = app.add_subcommand("plot", "Draw the figure of a run dataset (PNG).");

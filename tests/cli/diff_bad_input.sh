@@ -31,6 +31,12 @@ expect_bad other.h5 "$WORKDIR/other.h5" "$reference"
 expect_bad rtol "$reference" "$reference" --rtol -1
 expect_bad 'b is required' "$reference"
 
+"$wpg" diff --help >"$WORKDIR/help" || fail "diff --help: exit status $?"
+for text in 'R=1e-09' 'A=1e-09' --compare-wall-time --ignore; do
+  grep -qF -- "$text" "$WORKDIR/help" || fail "diff --help lacks '$text'"
+done
+"$wpg" --help | grep -q '\bdiff\b' || fail "--help lacks the diff subcommand"
+
 "$wpg" diff "$reference" "$reference" >"$WORKDIR/stdout" || fail "diff of a file with itself: exit status $?"
 grep -q "^same within tolerance" "$WORKDIR/stdout" || fail "diff of a file with itself: $(cat "$WORKDIR/stdout")"
 echo "ok"
