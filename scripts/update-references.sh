@@ -51,8 +51,19 @@ for name in "${scenarios[@]}"; do
     echo "update-references: error: wpg run $name: exit status $status" >&2
     exit 2
   fi
-  echo "$name: $(du -k "$tmp/$name.h5" | cut -f1) KiB$([[ $status == 1 ]] && echo ' (the walk fails: exit 1)')"
+  size="$(du -k "$tmp/$name.h5" | cut -f1) KiB"
+  [[ $status == 0 ]] || size+=", the walk fails: exit 1"
+  # The wall times differ at every run: a reference whose contents are the same bit for bit
+  # (wall times aside) is kept as it is, so that git shows only the walks that changed.
+  if [[ -f "$references/$name.h5" ]] && "$wpg" diff "$references/$name.h5" "$tmp/$name.h5" \
+       --rtol 0 --atol 0 >/dev/null 2>&1; then
+    echo "$name: unchanged ($size)"
+  else
+    mv -f "$tmp/$name.h5" "$references/$name.h5"
+    echo "$name: written ($size)"
+  fi
 done
-mv -f "$tmp"/*.h5 "$references/"
 echo "total: $(cat "$references"/*.h5 | wc -c | awk '{printf "%.2f MiB", $1 / 1048576}') in $references"
-echo "now review \`git diff --stat datasets/references\` and say in the commit why the walks changed"
+echo "review each written one against its previous version:"
+echo "  git show HEAD:datasets/references/<name>.h5 >/tmp/old.h5 && wpg diff /tmp/old.h5 datasets/references/<name>.h5"
+echo "and say in the commit why the walks changed"
