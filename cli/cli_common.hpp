@@ -84,6 +84,16 @@ struct AnalyzeOptions {
 };
 int analyzeCommand(const AnalyzeOptions& options);
 
+// `wpg diff`: exit 0 when A and B agree within the tolerances, 1 when they differ, 2 bad input.
+struct DiffOptions {
+  std::string a, b;               // run or batch files
+  double rtol = 1e-9;             // |a - b| <= atol + rtol * max(|a|, |b|)
+  double atol = 1e-9;             // datasets/references/README.md says why
+  bool ignore_wall_time = true;   // leave out mpc/solve_time, timing/, plans' planning times...
+  std::vector<std::string> ignore_patterns;  // --ignore PATTERN (fnmatch on the field's path)
+};
+int diffCommand(const DiffOptions& options);
+
 struct PlotOptions {
   std::string input;
   std::string output;  // empty: the input with its extension replaced by .png

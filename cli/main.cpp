@@ -118,6 +118,30 @@ int main(int argc, char** argv) {
   analyze_app->add_option("--format", analyze.format, "table, csv or json (one object per run)")
       ->type_name("FORMAT");
 
+  DiffOptions diff;
+  CLI::App* diff_app = app.add_subcommand(
+      "diff",
+      "Compare two run or batch files field by field (every dataset and attribute): print the "
+      "first sample beyond the tolerance and each field that differs. Exit 0 same within the "
+      "tolerance, 1 different, 2 bad input.");
+  diff_app->add_option("a", diff.a, "Reference file (e.g. datasets/references/<scenario>.h5)")
+      ->required()
+      ->type_name("A.h5");
+  diff_app->add_option("b", diff.b, "File to compare with it")->required()->type_name("B.h5");
+  diff_app->add_option("--rtol", diff.rtol, "Relative tolerance: |a - b| <= atol + rtol max(|a|, |b|)")
+      ->type_name("R");
+  diff_app->add_option("--atol", diff.atol, "Absolute tolerance")->type_name("A");
+  diff_app->add_flag("--ignore-wall-time,!--compare-wall-time", diff.ignore_wall_time,
+                     "Leave out the wall-time fields (mpc/solve_time, timing/, plans/"
+                     "planning_time and simplification_time, the batch summary's nmpc_time_*); "
+                     "on by default")
+      ->default_str("");
+  diff_app->add_option("--ignore", diff.ignore_patterns,
+                       "Also leave out the fields whose path matches this shell pattern "
+                       "(repeatable; `*` matches `/` too), e.g. '*/checks@*_violation_time'")
+      ->type_name("PATTERN")
+      ->default_str("");
+
   PlotOptions plot;
   CLI::App* plot_app = app.add_subcommand("plot", "Draw the figure of a run dataset (PNG).");
   plot_app->add_option("run_file", plot.input, "HDF5 dataset written by `wpg run`")
@@ -152,6 +176,7 @@ int main(int argc, char** argv) {
       return batchCommand(batch);
     }
     if (analyze_app->parsed()) return analyzeCommand(analyze);
+    if (diff_app->parsed()) return diffCommand(diff);
     return plotCommand(plot);
   } catch (const UsageError& e) {
     printError(e.what());
