@@ -43,7 +43,6 @@ def main():
         phase = table["phase"][:]
         force = np.abs(table["force"][:])
         bound = table["at_upper_bound"][:] == 1
-        max_force = float(f.attrs["max_force"])
         overrides = [text(o) for o in f.attrs["overrides"]]
     situations = list(dict.fromkeys(situation))
     fig, axes = plt.subplots(1, len(situations), squeeze=False, sharey=True,
@@ -66,7 +65,7 @@ def main():
         ax.set_title(SITUATION_TITLES.get(name, name))
         ax.set_xlabel("phase (fraction of the step since lift-off)")
         ax.set_xlim(-0.02, 1.0)
-        ax.set_ylim(0, max_force * 1.05)
+        ax.set_ylim(0, max(force.max(), 160.0) * 1.12)
         ax.grid(alpha=0.3)
     axes[0][0].set_ylabel("largest recovered |force| of a 100 ms push [N]")
     axes[0][-1].legend(fontsize=8, loc="upper right")

@@ -91,7 +91,7 @@ struct PushSweepOptions {
   std::string json;                    // empty: no JSON list
   std::string output = "out/push_sweep.h5";
   std::vector<std::string> overrides;  // --set, applied to each situation's base scenario
-  double max_force = 400.0;            // [N] upper end of the bisection
+  double max_force = 600.0;            // [N] upper end of the bisection (above every force we found, 490 N)
   double tolerance = 2.5;              // [N] bracket width at which it stops
   bool plot = true;
 };

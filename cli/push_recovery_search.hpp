@@ -43,7 +43,7 @@ datasets::Scenario withPush(const datasets::Scenario& base, double t, const Eige
 bool walkRecovers(const datasets::Scenario& scenario, double push_start, RobotModelCache* models);
 
 struct PushSearchSettings {
-  double max_force = 400.0;     // [N] upper end of the bracket
+  double max_force = 600.0;     // [N] upper end of the bracket
   double tolerance = 2.5;       // [N] bracket width at which the bisection stops
   double duration = 0.1;        // [s] of the push (paper: 100 ms)
   double stronger_factor = 1.15;  // the found force times this must fail (checked, see below)
