@@ -10,6 +10,9 @@ source "$(dirname "$0")/common.sh"
 wpg="$1"
 make_workdir
 cd "$WORKDIR"
+"$wpg" push-sweep --help >help || fail "push-sweep --help: exit $?"
+grep -q 'out/push_sweep.h5' help && grep -q 'K=8' help && grep -q -- '--max-force N=600' help ||
+  fail "push-sweep --help does not show the defaults"
 "$wpg" push-sweep --situation on_spot --phases 2 -j 2 --json sweep.json -o sweep.h5 >stdout ||
   fail "push-sweep: exit $?"
 grep -q "^on_spot   coronal- .* -45 " stdout || fail "no table row beside the paper's: $(cat stdout)"
