@@ -94,6 +94,19 @@ struct DiffOptions {
 };
 int diffCommand(const DiffOptions& options);
 
+struct PushSweepOptions {
+  std::string situation = "both";      // forward, on_spot or both
+  int phases = 8;                      // K phases over one steady step
+  int threads = 1;                     // -j
+  std::string json;                    // empty: no JSON list
+  std::string output = "out/push_sweep.h5";
+  std::vector<std::string> overrides;  // --set, applied to each situation's base scenario
+  double max_force = 600.0;            // [N] upper end of the bisection (above every force we found, 490 N)
+  double tolerance = 2.5;              // [N] bracket width at which it stops
+  bool plot = true;
+};
+int pushSweepCommand(const PushSweepOptions& options);
+
 struct PlotOptions {
   std::string input;
   std::string output;  // empty: the input with its extension replaced by .png

@@ -141,6 +141,39 @@ int main(int argc, char** argv) {
                        "(repeatable; `*` matches `/` too), e.g. '*/checks@*_violation_time'")
       ->type_name("PATTERN")
       ->default_str("");
+  PushSweepOptions push_sweep;
+  push_sweep.threads = std::max(1u, std::thread::hardware_concurrency());
+  CLI::App* push_sweep_app = app.add_subcommand(
+      "push-sweep",
+      "The paper's push-recovery table (Sec. V-B): for each situation (forward: `push`, on_spot: "
+      "`push_stepping_in_place`, each without its push) and direction (sagittal/coronal +/-), "
+      "the largest recovered force of a 100 ms push at K phases of one step (bisection); prints "
+      "it beside the paper's, writes OUT.h5 and OUT.png.");
+  push_sweep_app->add_option("--situation", push_sweep.situation, "forward, on_spot or both")
+      ->type_name("SITUATION");
+  push_sweep_app->add_option("--phases", push_sweep.phases, "Phases spread over one step (from the lift-off)")
+      ->type_name("K");
+  push_sweep_app->add_option("-j,--jobs", push_sweep.threads, "Worker threads (same result for any N)")
+      ->default_str("the number of cores")
+      ->type_name("N");
+  push_sweep_app->add_option("--json", push_sweep.json,
+                             "Also write one object per situation x direction x phase: the push "
+                             "that `wpg run <scenario> --set 'pushes[0]={...}'` replays")
+      ->default_str("none")
+      ->type_name("FILE");
+  push_sweep_app->add_option("-o,--output", push_sweep.output, "HDF5 table to write; the figure goes next to it (.png)")
+      ->type_name("OUT.h5");
+  push_sweep_app->add_option("--set", push_sweep.overrides,
+                             "Override a field of both base scenarios, key=value (repeatable), e.g. "
+                             "--set walking.max_landing_speed=0.4")
+      ->type_name("KEY=VALUE")
+      ->default_str("");
+  push_sweep_app->add_option("--max-force", push_sweep.max_force, "Upper end of the bisection [N]")
+      ->type_name("N");
+  push_sweep_app->add_option("--tolerance", push_sweep.tolerance, "Bracket width at which the bisection stops [N]")
+      ->type_name("N");
+  bool push_sweep_no_plot = false;
+  push_sweep_app->add_flag("--no-plot", push_sweep_no_plot, "Do not draw the figure");
 
   PlotOptions plot;
   CLI::App* plot_app = app.add_subcommand("plot", "Draw the figure of a run dataset (PNG).");
@@ -177,6 +210,10 @@ int main(int argc, char** argv) {
     }
     if (analyze_app->parsed()) return analyzeCommand(analyze);
     if (diff_app->parsed()) return diffCommand(diff);
+    if (push_sweep_app->parsed()) {
+      push_sweep.plot = !push_sweep_no_plot;
+      return pushSweepCommand(push_sweep);
+    }
     return plotCommand(plot);
   } catch (const UsageError& e) {
     printError(e.what());

@@ -1,0 +1,82 @@
+#!/usr/bin/python3
+"""plot_push_sweep.py SWEEP.h5 -o FIG.png: the figure of a `wpg push-sweep` file: the largest
+recovered force of a 100 ms push against the gait phase (fraction of the step since the swing
+foot's lift-off), one line per direction, one panel per walking situation; the paper's value
+(Sec. V-B) of each direction as a dashed line of the same colour; the end of single support
+(phase 0.875 for HRP-2's 0.7 s + 0.1 s step) as a grey band.
+
+Reads /push_sweep with h5py only (layout: datasets/SCHEMA.md, "Push sweep files").
+"""
+import argparse
+
+import h5py
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+# The paper's Sec. V-B forces [N] (magnitudes), as cli/push_sweep_command.cpp reads them.
+PAPER = {
+    "forward": {"sagittal+": 70, "sagittal-": 160, "coronal+": 90, "coronal-": 45},
+    "on_spot": {"sagittal+": 115, "sagittal-": 115, "coronal+": 90, "coronal-": 45},
+}
+COLOURS = {"sagittal+": "tab:blue", "sagittal-": "tab:cyan", "coronal+": "tab:red",
+           "coronal-": "tab:orange"}
+SITUATION_TITLES = {"forward": "walking forward at 0.2 m/s", "on_spot": "stepping in place"}
+
+
+def text(value):
+    return value.decode() if isinstance(value, bytes) else str(value)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("sweep_file")
+    parser.add_argument("-o", "--output", required=True)
+    args = parser.parse_args()
+
+    with h5py.File(args.sweep_file, "r") as f:
+        table = f["push_sweep"]
+        situation = np.array([text(v) for v in table["situation"][:]])
+        direction = np.array([text(v) for v in table["direction"][:]])
+        phase = table["phase"][:]
+        force = np.abs(table["force"][:])
+        bound = table["at_upper_bound"][:] == 1
+        overrides = [text(o) for o in f.attrs["overrides"]]
+    situations = list(dict.fromkeys(situation))
+    fig, axes = plt.subplots(1, len(situations), squeeze=False, sharey=True,
+                             figsize=(5.2 * len(situations) + 0.6, 4.0))
+    for ax, name in zip(axes[0], situations):
+        ax.axvspan(0.875, 1.0, color="0.9", label="double support")
+        for d in COLOURS:
+            rows = (situation == name) & (direction == d)
+            if not rows.any():
+                continue
+            order = np.argsort(phase[rows])
+            x, y = phase[rows][order], force[rows][order]
+            # "-" directions as open squares: on the spot they coincide with "+" (symmetry).
+            marker = dict(marker="o") if d.endswith("+") else dict(marker="s", fillstyle="none")
+            ax.plot(x, y, "-", color=COLOURS[d], label=d, **marker)
+            capped = bound[rows][order]
+            if capped.any():
+                ax.plot(x[capped], y[capped], "^", color=COLOURS[d], markersize=10)
+            ax.axhline(PAPER[name][d], color=COLOURS[d], linestyle="--", linewidth=0.9)
+        ax.set_title(SITUATION_TITLES.get(name, name))
+        ax.set_xlabel("phase (fraction of the step since lift-off)")
+        ax.set_xlim(-0.02, 1.0)
+        ax.set_ylim(0, max(force.max(), 160.0) * 1.12)
+        ax.grid(alpha=0.3)
+    axes[0][0].set_ylabel("largest recovered |force| of a 100 ms push [N]")
+    axes[0][-1].legend(fontsize=8, loc="upper right")
+    title = "Push recovery (dashed: the paper's Sec. V-B; triangles: the upper bound held)"
+    if overrides:
+        title += "\n--set " + " ".join(overrides)
+    fig.suptitle(title, fontsize=10)
+    fig.tight_layout()
+    fig.savefig(args.output, dpi=110)
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
