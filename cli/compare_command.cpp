@@ -224,6 +224,7 @@ int compareCommand(const CompareOptions& options) {
   for (const analysis::ComparisonCell& cell : cells) {
     const auto shown = [](double value, const char* unit, int decimals) {
       if (std::isnan(value)) return std::string("-");
+      if (std::abs(value) < 0.5 * std::pow(10.0, -decimals)) value = 0.0;  // no "-0.000"
       char text[32];
       std::snprintf(text, sizeof text, "%.*f %s", decimals, value, unit);
       return std::string(text);

@@ -40,16 +40,17 @@ class Parameters {
     return readInteger(entry(entries_, name), key(name), minimum,
                        "an integer >= " + std::to_string(minimum), source_);
   }
-  // [low, high] with low <= high (`strict`: low < high), or `fallback`.
+  // Pairs [low, high] with low < high (`strict`) or low <= high, or `fallback`.
   template <int Size>
   Eigen::Matrix<double, Size, 1> ranges(const std::string& name,
                                         const Eigen::Matrix<double, Size, 1>& fallback,
-                                        const std::string& expected) const {
+                                        const std::string& expected, bool strict) const {
     if (!given(name)) return fallback;
     const auto value = readVector<Size>(entry(entries_, name), key(name), expected, source_);
     for (int i = 0; i + 1 < Size; i += 2) {
-      if (!(value[i] < value[i + 1])) {
-        source_.failWith(key(name), "expected " + expected + " with each low < high");
+      if (strict ? !(value[i] < value[i + 1]) : !(value[i] <= value[i + 1])) {
+        source_.failWith(key(name), "expected " + expected + (strict ? " with each low < high"
+                                                                      : " with low <= high"));
       }
     }
     return value;
@@ -96,8 +97,9 @@ GeneratedWorld randomField(const Parameters& p, int run_seed) {
   const int count = p.integer("count", 1, 10);
   const int seed = p.integer("seed", 0, 0);
   const Eigen::Vector4d area = p.ranges<4>("area", Eigen::Vector4d(1.0, 5.0, -1.5, 1.5),
-                                            "[x_min, x_max, y_min, y_max]");
-  const Eigen::Vector2d radius = p.ranges<2>("radius", Eigen::Vector2d(0.15, 0.3), "[low, high]");
+                                            "[x_min, x_max, y_min, y_max]", true);
+  const Eigen::Vector2d radius = p.ranges<2>("radius", Eigen::Vector2d(0.15, 0.3), "[low, high]",
+                                               false);
   if (radius[0] <= 0.0) p.fail("expected radius [low, high] with low > 0");
   const double margin = p.atLeast("margin", 0.0, 0.15);
   const double clearance = p.atLeast("clearance", 0.0, 0.5);
