@@ -183,6 +183,7 @@ ComparisonStudy loadComparisonStudy(const std::string& path, const BaseResolver&
 
   // The base of the generated worlds (their obstacles and goal replace its own).
   YAML::Node base;
+  bool has_base = true;
   std::string base_origin;
   const YAML::Node base_node = detail::entry(top, "base");
   if (base_node.IsDefined() && base_node.IsMap()) {
@@ -191,9 +192,11 @@ ComparisonStudy loadComparisonStudy(const std::string& path, const BaseResolver&
   } else if (base_node.IsDefined()) {
     base_origin = findScenario(base_node, "base", path, resolve_base, source);
     base = detail::parseYamlText(readText(base_origin, "base scenario"), base_origin);
+  } else {
+    has_base = false;
   }
   for (const WorldSpec& world : worlds) {
-    if (!world.generator.empty() && !base.IsDefined()) {
+    if (!world.generator.empty() && !has_base) {
       source.failWith("base", "expected the scenario the generated worlds start from (world '" +
                                   world.name + "' is generated), got none");
     }
