@@ -4,7 +4,7 @@
 DIR/success_rates.png   goal reached / runs per world (groups) and variant (bars)
 DIR/time_to_goal.png    time to goal of the runs that reached it, a box per world x variant
 DIR/top_<world>.png     a top view per world: its obstacles (margins dashed), the goal, and the
-                        CoM path of every variant (one colour each, every seed; a run that
+                        CoM path of every variant (one colour and line style each, every seed; a run that
                         missed the goal ends with a cross). A world drawn per seed (a random
                         field) is shown for its first seed only.
 
@@ -129,6 +129,9 @@ def main():
         time_to_goal = table["time_to_goal"][:]
         reached = table["goal_reached"][:]
         colours = {v: plt.get_cmap("tab10")(i % 10) for i, v in enumerate(variants)}
+        # Line styles too: variants that walk the same route (a planner with NMPC and with
+        # LMPC) draw nearly the same CoM path, and a solid line would hide the other.
+        styles = {v: ("-", "--", ":", "-.")[i % 4] for i, v in enumerate(variants)}
 
         # Success rates: a group of bars per world.
         fig, ax = plt.subplots(figsize=(max(6.0, 1.4 * len(worlds) * max(1, len(variants)) / 2),
@@ -200,12 +203,13 @@ def main():
                     draw_world(ax, run)
                     drawn_world = True
                 com = run["com"][()]
-                ax.plot(com[:, 0], com[:, 1], color=colours[v], linewidth=0.9, alpha=0.75)
+                ax.plot(com[:, 0], com[:, 1], color=colours[v], linestyle=styles[v], linewidth=0.9,
+                        alpha=0.75)
                 if r != 1:
                     ax.plot([com[-1, 0]], [com[-1, 1]], marker="x", color=colours[v],
                             markersize=8, markeredgewidth=2, linestyle="none")
             for variant in variants:
-                ax.plot([], [], color=colours[variant], label=variant)
+                ax.plot([], [], color=colours[variant], linestyle=styles[variant], label=variant)
             ax.plot([], [], marker="x", color="black", linestyle="none", label="goal missed")
             ax.set_aspect("equal")
             ax.autoscale_view()
