@@ -134,8 +134,7 @@ def main():
         styles = {v: ("-", "--", ":", "-.")[i % 4] for i, v in enumerate(variants)}
 
         # Success rates: a group of bars per world.
-        fig, ax = plt.subplots(figsize=(max(6.0, 1.4 * len(worlds) * max(1, len(variants)) / 2),
-                                        4.0))
+        fig, ax = plt.subplots(figsize=(max(6.0, 0.4 * len(worlds) * len(variants) + 2.0), 4.0))
         width = 0.8 / max(1, len(variants))
         for k, variant in enumerate(variants):
             xs = np.arange(len(worlds)) + (k - (len(variants) - 1) / 2) * width
