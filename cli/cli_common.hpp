@@ -78,6 +78,14 @@ struct BatchOptions {
 };
 int batchCommand(const BatchOptions& options);
 
+struct CompareOptions {
+  std::string study;
+  std::string output;  // the folder: study.h5, summary.csv, summary.md, figures
+  int threads = 1;
+  bool plot = true;
+};
+int compareCommand(const CompareOptions& options);
+
 struct AnalyzeOptions {
   std::string input;               // a run or batch file
   std::string format = "table";    // table, csv or json

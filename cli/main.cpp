@@ -109,6 +109,26 @@ int main(int argc, char** argv) {
   bool batch_no_plot = false;
   batch_app->add_flag("--no-plot", batch_no_plot, "Do not draw the summary figure");
 
+  CompareOptions compare;
+  compare.threads = std::max(1u, std::thread::hardware_concurrency());
+  CLI::App* compare_app = app.add_subcommand(
+      "compare",
+      "Run a comparison study (worlds x variants x seeds of walks to a goal, "
+      "datasets/SCENARIOS.md) on worker threads: DIR/study.h5, DIR/summary.csv/.md (one row per "
+      "world x variant) and figures. Exit 0 the study ran (runs that miss the goal are results), "
+      "2 bad input.");
+  compare_app->add_option("study", compare.study, "Comparison study file (YAML)")
+      ->required()
+      ->type_name("STUDY.yaml");
+  compare_app->add_option("-o,--output", compare.output, "Folder to write")
+      ->required()
+      ->type_name("DIR");
+  compare_app->add_option("-j,--jobs", compare.threads, "Worker threads")
+      ->default_str("the number of cores")
+      ->type_name("N");
+  bool compare_no_plot = false;
+  compare_app->add_flag("--no-plot", compare_no_plot, "Do not draw the figures");
+
   AnalyzeOptions analyze;
   CLI::App* analyze_app = app.add_subcommand(
       "analyze", "Print the metrics (datasets/METRICS.md) of every run of a run or batch file.");
@@ -204,6 +224,10 @@ int main(int argc, char** argv) {
       return replayCommand(replay);
     }
     if (bench_app->parsed()) return benchCommand(bench);
+    if (compare_app->parsed()) {
+      compare.plot = !compare_no_plot;
+      return compareCommand(compare);
+    }
     if (batch_app->parsed()) {
       batch.plot = !batch_no_plot;
       return batchCommand(batch);

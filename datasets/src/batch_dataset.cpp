@@ -175,7 +175,7 @@ std::unique_ptr<BatchDatasetWriter> BatchDatasetWriter::create(
     writeIntAttribute(h.file, "schema_version", kRunDatasetSchemaVersion);
     writeIntAttribute(h.file, "batch_schema_version", kBatchDatasetSchemaVersion);
     writeStringAttribute(h.file, "wpg_version", WPG_VERSION_STRING);
-    writeStringAttribute(h.file, "created_by", "wpg batch");
+    writeStringAttribute(h.file, "created_by", study.created_by);
     writeStringAttribute(h.file, "study", study.text);
     writeStringAttribute(h.file, "study_name", study.name);
     writeStringAttribute(h.file, "study_fingerprint", study.fingerprint);

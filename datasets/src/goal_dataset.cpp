@@ -24,7 +24,7 @@ void writeGoal(H5::Group& run, const Scenario& scenario, const GoalOutcome& goal
   writeStringAttribute(run, "goal_outcome", goal.outcome);
 
   // Which obstacles the planner knew from the start (the others it learnt by sensing them).
-  H5::Group obstacles = run.openGroup("obstacles");
+  H5::Group obstacles = openGroup(run, "obstacles");  // recorded by a batch worker too
   std::vector<std::uint8_t> known;
   for (std::size_t i = 0; i < scenario.request.obstacles.size(); ++i)
     known.push_back(scenario.goal.knownToPlanner(i) ? 1 : 0);
@@ -35,7 +35,7 @@ void writeGoal(H5::Group& run, const Scenario& scenario, const GoalOutcome& goal
               nullptr});
 
   const RoutePlannerSettings& settings = scenario.goal.planner;
-  H5::Group plans = run.createGroup("plans");
+  H5::Group plans = createGroup(run, "plans");
   writeStringAttribute(plans, "description",
                        "one row per (re)plan of the global route planner (OMPL, SE(2)); "
                        "statistics named as ompl::tools::Benchmark names them");

@@ -77,6 +77,11 @@ H5::Group createGroup(H5::Group& parent, const std::string& name) {
   return parent.createGroup(name);
 }
 
+H5::Group openGroup(H5::Group& parent, const std::string& name) {
+  if (activeRecording()) return H5::Group();
+  return parent.openGroup(name);
+}
+
 void writeStringAttribute(H5::H5Object& object, const std::string& name,
                           const std::string& value) {
   if (activeRecording()) return;

@@ -58,6 +58,8 @@ ChunkRecording* activeReplay();
 
 // parent.createGroup(name); a placeholder while recording.
 H5::Group createGroup(H5::Group& parent, const std::string& name);
+// An existing group (an empty handle while recording, like createGroup).
+H5::Group openGroup(H5::Group& parent, const std::string& name);
 
 // --- attributes ------------------------------------------------------------------------------
 

@@ -157,6 +157,36 @@ double nextUniform(std::uint64_t* state) {
   return static_cast<double>(z >> 11) * 0x1.0p-53;
 }
 
+void loadStudyScenarios(Study* study, int threads, const std::function<void(StudyRun&)>& load) {
+  const std::size_t total = study->runs.size();
+  std::vector<std::string> errors(total);
+  const auto loadRun = [&](std::size_t index) {
+    try {
+      load(study->runs[index]);
+    } catch (const std::exception& e) {
+      errors[index] = detail::oneLine(e.what());
+    }
+  };
+  const std::size_t workers =
+      std::max<std::size_t>(1, std::min<std::size_t>(threads < 1 ? 1 : static_cast<std::size_t>(threads), total));
+  std::vector<std::thread> pool;
+  for (std::size_t w = 1; w < workers; ++w) {
+    pool.emplace_back([&, w] {
+      for (std::size_t i = w; i < total; i += workers) loadRun(i);
+    });
+  }
+  for (std::size_t i = 0; i < total; i += workers) loadRun(i);
+  for (std::thread& thread : pool) thread.join();
+  std::uint64_t hash = 14695981039346656037ull;
+  for (std::size_t i = 0; i < total; ++i) {
+    if (!errors[i].empty()) throw InputError(errors[i]);
+    hash = fnv1a(study->runs[i].scenario.resolved_yaml, hash);
+  }
+  char hex[17];
+  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(hash));
+  study->fingerprint = hex;
+}
+
 Study loadStudy(const std::string& path, const BaseResolver& resolve_base,
                 const std::string& robots_dir, int threads) {
   Study study;
@@ -250,12 +280,8 @@ Study loadStudy(const std::string& path, const BaseResolver& resolve_base,
     study.runs.push_back(std::move(run));
   }
 
-  // Each run's scenario: the base with its values, loaded and validated as `wpg run` does, on
-  // `threads` threads (each run on its own; the error reported is the first run's that fails,
-  // whatever the threads).
-  std::vector<std::string> errors(total);
-  const auto loadRun = [&](std::size_t index) {
-    StudyRun& run = study.runs[index];
+  // Each run's scenario: the base with its values, loaded and validated as `wpg run` does.
+  loadStudyScenarios(&study, threads, [&](StudyRun& run) {
     std::vector<std::string> overrides;
     std::string described;
     for (const SweptValue& value : run.swept) {
@@ -274,27 +300,10 @@ Study loadStudy(const std::string& path, const BaseResolver& resolve_base,
            at = message.find("--set '", at)) {
         message.replace(at, 5, "sweep");
       }
-      errors[index] = path + ": run " + std::to_string(index) + " (" + described + "): " + message;
+      throw InputError(path + ": run " + std::to_string(run.index) + " (" + described + "): " +
+                       message);
     }
-  };
-  const std::size_t workers =
-      std::min<std::size_t>(threads < 1 ? 1 : static_cast<std::size_t>(threads), total);
-  std::vector<std::thread> pool;
-  for (std::size_t w = 1; w < workers; ++w) {
-    pool.emplace_back([&, w] {
-      for (std::size_t i = w; i < total; i += workers) loadRun(i);
-    });
-  }
-  for (std::size_t i = 0; i < total; i += workers) loadRun(i);
-  for (std::thread& thread : pool) thread.join();
-  std::uint64_t hash = 14695981039346656037ull;
-  for (std::size_t i = 0; i < total; ++i) {
-    if (!errors[i].empty()) throw InputError(errors[i]);
-    hash = fnv1a(study.runs[i].scenario.resolved_yaml, hash);
-  }
-  char hex[17];
-  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(hash));
-  study.fingerprint = hex;
+  });
   return study;
 }
 

@@ -1,6 +1,7 @@
 """compare_batch_files.py A.h5 B.h5: the two files hold the same contents, bit for bit, except
 the wall-time fields (datasets/SCHEMA.md, "Batch files": mpc/solve_time, the timing/ group and
-the summary's nmpc_time_* columns). Exit 0 same, 1 different (each difference on stderr).
+the summary's nmpc_time_* columns; a goal walk's plans/planning_time and
+plans/simplification_time; the planning and NMPC time columns of `wpg compare`'s tables). Exit 0 same, 1 different (each difference on stderr).
 
 Reads both files with h5py only: every group, dataset (values and dtype) and attribute.
 """
@@ -10,7 +11,10 @@ import h5py
 import numpy as np
 
 WALL_TIME = ("solve_time", "timing", "nmpc_time_mean", "nmpc_time_std", "nmpc_time_min",
-             "nmpc_time_max", "nmpc_time_p99")
+             "nmpc_time_max", "nmpc_time_p99",
+             # walks to a goal (plans/) and `wpg compare` (/batch/summary, /compare/summary)
+             "planning_time", "simplification_time", "planning_time_median", "planning_time_max",
+             "nmpc_time_median")
 
 differences = []
 

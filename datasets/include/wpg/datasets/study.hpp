@@ -46,6 +46,7 @@ struct Study {
   // A digest of every run's resolved scenario (FNV-1a 64, hex): two studies with the same name
   // and digest run the same scenarios (`wpg batch --resume` checks it).
   std::string fingerprint;
+  std::string created_by = "wpg batch";  // the command that expands it (root attribute)
 };
 
 // Finds a base given by name or path (`base: walk_forward`): returns a scenario file path;
@@ -64,6 +65,12 @@ using BaseResolver = std::function<std::string(const std::string& base)>;
 // (the message names the run's values).
 Study loadStudy(const std::string& path, const BaseResolver& resolve_base,
                 const std::string& robots_dir, int threads = 1);
+
+// Loads every run's scenario with `load(run)` on `threads` threads (each run on its own), then
+// sets study->fingerprint. `load` throws an exception whose message is the whole error line;
+// the one rethrown (as InputError) is the first failing run's, whatever the threads. Shared by
+// loadStudy and the comparison studies of `wpg compare` (comparison_study.hpp).
+void loadStudyScenarios(Study* study, int threads, const std::function<void(StudyRun& run)>& load);
 
 // The study's seeded generator (SplitMix64, fixed across platforms and compilers, unlike the
 // distributions of <random>): a uniform double in [0, 1) from `state`, which it advances.

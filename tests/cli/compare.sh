@@ -1,0 +1,30 @@
+#!/usr/bin/env bash
+# compare.sh WPG STUDY: `wpg compare` on a tiny comparison study (2 worlds x 2 variants x 2
+# seeds):
+#  - -j 1 and -j 2 give the same study.h5 (every field but the wall times,
+#    compare_batch_files.py), exit 0, with summary.csv/.md (one row per world x variant) and
+#    the figures;
+#  - the table agrees with the per-run rows (check_compare_table.py): success rate, time to
+#    goal median and IQR, least clearance;
+#  - a study run again into the same folder replaces its files.
+set -euo pipefail
+# shellcheck source=common.sh
+source "$(dirname "$0")/common.sh"
+wpg="$1"; study="$2"
+make_workdir
+cd "$WORKDIR"
+
+"$wpg" compare "$study" -o one -j 1 >stdout 2>stderr || fail "-j 1: exit $? ($(cat stderr))"
+grep -q "8/8 runs" stderr || fail "no progress line: $(cat stderr)"
+"$wpg" compare "$study" -o two -j 2 --no-plot >/dev/null 2>&1 || fail "-j 2: exit $?"
+for file in study.h5 summary.csv summary.md; do
+  [[ -s "one/$file" ]] || fail "one/$file missing"
+done
+for figure in success_rates time_to_goal top_field top_trap; do check_png "one/$figure.png"; done
+[[ ! -e two/success_rates.png ]] || fail "--no-plot drew figures"
+"$PYTHON" "$HERE/compare_batch_files.py" one/study.h5 two/study.h5 || fail "-j 1 and -j 2 differ"
+[[ "$(($(wc -l <one/summary.csv) - 1))" == 4 ]] || fail "summary.csv has not 4 rows (2 worlds x 2 variants)"
+"$PYTHON" "$HERE/check_compare_table.py" one/study.h5 one/summary.csv || fail "the table disagrees with the runs"
+"$wpg" compare "$study" -o one -j 2 --no-plot >/dev/null 2>&1 || fail "again into one/: exit $?"
+"$PYTHON" "$HERE/compare_batch_files.py" one/study.h5 two/study.h5 || fail "rerun differs"
+echo "ok"
