@@ -392,6 +392,37 @@ bool isBatchFile(const std::string& path) {
   }
 }
 
+namespace {
+herr_t visitNothing(hid_t, const char*, const H5O_info_t*, void*) { return 0; }
+}  // namespace
+
+bool isDamagedHdf5File(const std::string& path) {
+  std::lock_guard<std::mutex> lock(hdf5Mutex());
+  H5::Exception::dontPrint();
+  const bool hdf5 = [&] {
+    try {
+      return H5::H5File::isHdf5(path);
+    } catch (const H5::Exception&) {
+      return true;  // a signature HDF5 itself cannot follow
+    }
+  }();
+  if (!hdf5) return false;
+  try {
+    const H5::H5File file(path, H5F_ACC_RDONLY);
+    // Every object header: a torn write shows as one HDF5 cannot decode.
+    if (H5Ovisit(file.getId(), H5_INDEX_NAME, H5_ITER_NATIVE, visitNothing, nullptr) < 0)
+      return true;
+    // A batch file killed while it was created: its summary table is not complete.
+    if (file.attrExists("study_name") &&
+        !(file.nameExists("batch") && file.nameExists(kSummaryPath) &&
+          file.openGroup(kSummaryPath).nameExists("done")))
+      return true;
+  } catch (const H5::Exception&) {
+    return true;
+  }
+  return false;
+}
+
 BatchSummaryTable readBatchSummary(const std::string& path) {
   std::lock_guard<std::mutex> lock(hdf5Mutex());
   H5::Exception::dontPrint();

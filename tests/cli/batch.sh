@@ -4,7 +4,8 @@
 #    with the summary CSV, Markdown and figure beside it, and exit 0;
 #  - `wpg analyze` of the batch file agrees with a recomputation from the raw fields
 #    (check_metrics.py, h5py + numpy);
-#  - a batch killed (SIGKILL) half-way leaves a file h5py opens, holding only finished runs;
+#  - a batch killed (SIGKILL) half-way leaves a file h5py opens, holding only finished runs
+#    (or, killed inside HDF5's write of a run, a file --resume moves aside and starts again);
 #    --resume then runs the rest and gives the same contents as the uninterrupted batch;
 #  - --resume of a complete file runs nothing and changes nothing.
 set -euo pipefail
@@ -30,6 +31,7 @@ total="$("$PYTHON" -c "import h5py,sys; f=h5py.File(sys.argv[1]); print(f.attrs[
 # Kill half-way: the delay is adjusted until the kill lands with some but not all runs done.
 delay=0.4
 partial=""
+damaged=""
 for attempt in 1 2 3 4 5 6 7 8; do
   rm -f killed.h5
   "$wpg" batch "$study" -o killed.h5 -j 2 --no-plot >/dev/null 2>&1 &
@@ -50,7 +52,12 @@ with h5py.File(sys.argv[1], "r") as f:
         assert f["runs"][name]["com"].shape[0] > 0
     print(int(done.sum()))
 PY
-)" || fail "the killed batch's file is not readable"
+)" || {
+    # Killed inside HDF5's write of a run (no atomic commit in HDF5 1.10: ~1 kill in 30 at
+    # random times on loaded cores): --resume must move the file aside and start again.
+    echo "attempt $attempt: killed after ${delay}s inside a write: the file does not open"
+    damaged=yes; partial=yes; break
+  }
   echo "attempt $attempt: killed after ${delay}s with $done_runs of $total runs done"
   if (( done_runs == 0 )); then delay="$(echo "$delay * 1.6" | bc -l)"
   elif (( done_runs == total )); then delay="$(echo "$delay * 0.5" | bc -l)"
@@ -59,7 +66,12 @@ done
 [[ -n "$partial" ]] || fail "could not kill the batch half-way"
 "$wpg" batch "$study" -o killed.h5 -j 2 --resume --no-plot >/dev/null 2>resume.err ||
   fail "--resume: exit $? ($(cat resume.err))"
-grep -q "resuming, $done_runs of $total runs already" resume.err || fail "resume: $(cat resume.err)"
+if [[ -n "$damaged" ]]; then
+  grep -q "moved to killed.h5.damaged, starting again" resume.err || fail "resume: $(cat resume.err)"
+  [[ -f killed.h5.damaged ]] || fail "the damaged file was not kept aside"
+else
+  grep -q "resuming, $done_runs of $total runs already" resume.err || fail "resume: $(cat resume.err)"
+fi
 "$PYTHON" "$HERE/compare_batch_files.py" one.h5 killed.h5 || fail "killed + resumed differs"
 
 sum_before="$(md5sum <killed.h5)"
