@@ -24,6 +24,9 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 from matplotlib.patches import Circle, Polygon  # noqa: E402
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from plot_run import convex_hull  # noqa: E402  (one hull for every figure)
+
 OBSTACLE_COLOUR = "0.35"
 
 
@@ -62,19 +65,7 @@ def grown(outline, margin, circle):
                      for x, y in outline for a in np.linspace(0.0, 2.0 * math.pi, 24,
                                                                endpoint=False)})
 
-    def cross(o, a, b):
-        return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0])
-
-    lower, upper = [], []
-    for p in points:
-        while len(lower) >= 2 and cross(lower[-2], lower[-1], p) <= 0:
-            lower.pop()
-        lower.append(p)
-    for p in reversed(points):
-        while len(upper) >= 2 and cross(upper[-2], upper[-1], p) <= 0:
-            upper.pop()
-        upper.append(p)
-    return lower[:-1] + upper[:-1]
+    return convex_hull(points)
 
 
 def draw_world(ax, run):

@@ -20,13 +20,6 @@ namespace {
 namespace fs = std::filesystem;
 using detail::Source;
 
-std::string readText(const std::string& path, const std::string& what) {
-  std::ifstream file(path);
-  if (!file) throw InputError(path + ": cannot read the " + what);
-  std::stringstream text;
-  text << file.rdbuf();
-  return text.str();
-}
 
 std::string flowText(const YAML::Node& node) {
   YAML::Emitter out;
@@ -157,7 +150,7 @@ ComparisonStudy loadComparisonStudy(const std::string& path, const BaseResolver&
   study.created_by = "wpg compare";
   const Source source(path);
   const YAML::Node root = detail::readYamlFile(path, "study file");
-  study.text = readText(path, "study file");
+  study.text = detail::readTextFile(path, "study file");
   const detail::Entries top = detail::readMap(
       root, "", {"name", "base", "seeds", "set", "worlds", "variants"},
       "a comparison study: a map with name, base, seeds, set, worlds and variants", source);
@@ -191,7 +184,7 @@ ComparisonStudy loadComparisonStudy(const std::string& path, const BaseResolver&
     base_origin = path + ":base";
   } else if (base_node.IsDefined()) {
     base_origin = findScenario(base_node, "base", path, resolve_base, source);
-    base = detail::parseYamlText(readText(base_origin, "base scenario"), base_origin);
+    base = detail::parseYamlText(detail::readTextFile(base_origin, "base scenario"), base_origin);
   } else {
     has_base = false;
   }
@@ -264,7 +257,7 @@ ComparisonStudy loadComparisonStudy(const std::string& path, const BaseResolver&
       std::string origin;
       if (world.generator.empty()) {
         origin = world.scenario_path;
-        scenario = detail::parseYamlText(readText(origin, "scenario file"), origin);
+        scenario = detail::parseYamlText(detail::readTextFile(origin, "scenario file"), origin);
       } else {
         origin = path + ":" + world.key;
         scenario = YAML::Clone(base);

@@ -138,13 +138,6 @@ std::uint64_t fnv1a(const std::string& text, std::uint64_t hash) {
   return hash;
 }
 
-std::string readText(const std::string& path, const std::string& what) {
-  std::ifstream file(path);
-  if (!file) throw InputError(path + ": cannot read the " + what);
-  std::stringstream text;
-  text << file.rdbuf();
-  return text.str();
-}
 
 }  // namespace
 
@@ -193,7 +186,7 @@ Study loadStudy(const std::string& path, const BaseResolver& resolve_base,
   study.source_path = path;
   const Source source(path);
   const YAML::Node root = detail::readYamlFile(path, "study file");
-  study.text = readText(path, "study file");
+  study.text = detail::readTextFile(path, "study file");
   const detail::Entries top = detail::readMap(root, "", {"name", "base", "sweep"},
                                               "a study: a map with name, base and sweep", source);
   study.name = detail::readName(detail::entry(top, "name"), "name", "a study name", source);
@@ -216,7 +209,7 @@ Study loadStudy(const std::string& path, const BaseResolver& resolve_base,
         source.failWith("base", e.what());
       }
     }
-    base_text = readText(base_origin, "base scenario");
+    base_text = detail::readTextFile(base_origin, "base scenario");
   } else {
     source.fail("base", "a shipped scenario name, a scenario file or an inline scenario map", base);
   }

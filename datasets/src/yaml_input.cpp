@@ -271,7 +271,7 @@ YAML::Node parseYamlText(const std::string& text, const std::string& origin) {
   return documents.front();
 }
 
-YAML::Node readYamlFile(const std::string& path, const std::string& what) {
+std::string readTextFile(const std::string& path, const std::string& what) {
   std::error_code ec;
   if (fs::is_directory(path, ec)) {
     throw InputError(path + ": cannot read the " + what + ": it is a directory");
@@ -286,7 +286,11 @@ YAML::Node readYamlFile(const std::string& path, const std::string& what) {
   std::ostringstream text;
   text << stream.rdbuf();
   if (stream.bad()) throw InputError(path + ": cannot read the " + what + ": read error");
-  return parseYamlText(text.str(), path);
+  return text.str();
+}
+
+YAML::Node readYamlFile(const std::string& path, const std::string& what) {
+  return parseYamlText(readTextFile(path, what), path);
 }
 
 }  // namespace wpg::datasets::detail

@@ -108,7 +108,10 @@ bool present(const Entries& entries, const std::string& name);
 
 // `text` parsed as one YAML document; `origin` names it in messages.
 YAML::Node parseYamlText(const std::string& text, const std::string& origin);
-// The file at `path`; `what` says what it is in messages ("scenario file").
+// The text of the file at `path`; `what` says what it is in messages ("scenario file").
+// Throws InputError naming the file (missing, a folder, unreadable).
+std::string readTextFile(const std::string& path, const std::string& what);
+// The file at `path` parsed as one YAML document.
 YAML::Node readYamlFile(const std::string& path, const std::string& what);
 
 }  // namespace wpg::datasets::detail
