@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <mutex>
 #include <set>
 #include <sstream>
 
@@ -246,6 +247,7 @@ ComparisonStudy loadComparisonStudy(const std::string& path, const BaseResolver&
     }
   }
 
+  std::mutex shared_nodes;
   loadStudyScenarios(&study, threads, [&](StudyRun& run) {
     const ComparisonRun& cell = comparison.runs[run.index];
     const WorldSpec& world = worlds[cell.world];
@@ -254,7 +256,11 @@ ComparisonStudy loadComparisonStudy(const std::string& path, const BaseResolver&
                                   std::to_string(cell.seed);
     try {
       YAML::Node scenario;
-      std::string origin;
+      std::string origin, text;
+      // yaml-cpp nodes are not thread-safe, not even to read or to assign from: the base, the
+      // world's parameters and goal are shared by every run, so the scenario text is built
+      // under a lock (cheap); parsing and checking it (loadScenarioText) run in parallel.
+      std::unique_lock<std::mutex> lock(shared_nodes);
       if (world.generator.empty()) {
         origin = world.scenario_path;
         scenario = detail::parseYamlText(detail::readTextFile(origin, "scenario file"), origin);
@@ -273,13 +279,17 @@ ComparisonStudy loadComparisonStudy(const std::string& path, const BaseResolver&
         scenario["goal"] = goal;
       }
       if (world.goal.IsDefined()) {
-        for (const auto& item : world.goal) scenario["goal"][item.first.Scalar()] = item.second;
+        for (const auto& item : world.goal)
+          scenario["goal"][item.first.Scalar()] = YAML::Clone(item.second);
       }
+      text = YAML::Dump(scenario) + "\n";
+      scenario = YAML::Node();  // released under the lock: its memory is shared with the base
+      lock.unlock();
       std::vector<std::string> overrides = common;
       for (const std::string& entry : variant_overrides[cell.variant]) overrides.push_back(entry);
       overrides.push_back("planner.seed=" + std::to_string(cell.seed));
       overrides.push_back("name=" + run.name);
-      run.scenario = loadScenarioText(YAML::Dump(scenario) + "\n", origin, overrides, robots_dir);
+      run.scenario = loadScenarioText(text, origin, overrides, robots_dir);
       run.scenario.walking.validate();
       run.scenario.request.validate();
     } catch (const std::exception& e) {
