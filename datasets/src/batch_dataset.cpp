@@ -371,6 +371,10 @@ void BatchDatasetWriter::write(const BatchRunRecord& record, const PreparedRun* 
       }
     }
     writeCell(h.exit_status, row, H5::PredType::NATIVE_INT, &record.exit_status);
+    // The run's group and row first, then its `done` flag: a flag on disk always follows the
+    // group it marks (written together, a kill between the raw-data write of the flag and the
+    // flush of the group's metadata left `done = 1` for a group that was not in the file).
+    h.file.flush(H5F_SCOPE_GLOBAL);
     const unsigned char done = 1;
     writeCell(h.done, row, H5::PredType::NATIVE_UCHAR, &done);
     h.file.flush(H5F_SCOPE_GLOBAL);

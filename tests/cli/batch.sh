@@ -42,22 +42,28 @@ for attempt in 1 2 3 4 5 6 7 8; do
   [[ -f killed.h5 ]] || { delay="$(echo "$delay * 2" | bc -l)"; continue; }
   done_runs="$("$PYTHON" - killed.h5 <<'PY'
 import sys, h5py
-with h5py.File(sys.argv[1], "r") as f:
+try:
+    f = h5py.File(sys.argv[1], "r")
+    f.visit(lambda name: None)
     done = f["batch/summary/done"][:]
-    runs = sorted(f["runs"])
-    finished = sorted(n for n, d in zip(f["batch/summary/name"].asstr()[:], done) if d)
-    # every run marked done is there, complete enough to read its datasets
-    assert set(finished) <= set(runs), (finished, runs)
-    for name in finished:
-        assert f["runs"][name]["com"].shape[0] > 0
-    print(int(done.sum()))
+except Exception:
+    print("damaged")  # killed inside HDF5's write of a run: --resume must start again
+    sys.exit(0)
+runs = sorted(f["runs"])
+finished = sorted(n for n, d in zip(f["batch/summary/name"].asstr()[:], done) if d)
+# every run marked done is there, complete enough to read its datasets
+assert set(finished) <= set(runs), (finished, runs)
+for name in finished:
+    assert f["runs"][name]["com"].shape[0] > 0
+print(int(done.sum()))
 PY
-)" || {
+)" || fail "the killed batch's file holds a run marked done that is not complete"
+  if [[ "$done_runs" == damaged ]]; then
     # Killed inside HDF5's write of a run (no atomic commit in HDF5 1.10: ~1 kill in 30 at
     # random times on loaded cores): --resume must move the file aside and start again.
     echo "attempt $attempt: killed after ${delay}s inside a write: the file does not open"
     damaged=yes; partial=yes; break
-  }
+  fi
   echo "attempt $attempt: killed after ${delay}s with $done_runs of $total runs done"
   if (( done_runs == 0 )); then delay="$(echo "$delay * 1.6" | bc -l)"
   elif (( done_runs == total )); then delay="$(echo "$delay * 0.5" | bc -l)"
