@@ -59,7 +59,7 @@ print(int(done.sum()))
 PY
 )" || fail "the killed batch's file holds a run marked done that is not complete"
   if [[ "$done_runs" == damaged ]]; then
-    # Killed inside HDF5's write of a run (no atomic commit in HDF5 1.10: ~1 kill in 30 at
+    # Killed inside HDF5's write of a run (no atomic commit in HDF5 1.10: ~1 kill in 20 at
     # random times on loaded cores): --resume must move the file aside and start again.
     echo "attempt $attempt: killed after ${delay}s inside a write: the file does not open"
     damaged=yes; partial=yes; break

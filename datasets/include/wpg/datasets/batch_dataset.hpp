@@ -102,8 +102,8 @@ bool isBatchFile(const std::string& path);
 
 // A file that starts like HDF5 (its signature) but whose objects HDF5 cannot all open: what a
 // SIGKILL inside HDF5's write or flush of a run leaves (HDF5 1.10 has no atomic commit; measured
-// on `tests/cli/studies/batch_small.yaml`: 1 kill in 30 at random times with the cores loaded,
-// 0 in 30 on idle cores). `wpg batch --resume` moves such a file aside and starts the study
+// on `tests/cli/studies/batch_small.yaml`: 4 of 75 kills at random times with the cores loaded,
+// 0 of 30 on idle cores). `wpg batch --resume` moves such a file aside and starts the study
 // again. Also true for a batch file killed before its summary table was complete. False for a
 // readable file and for a file that is not HDF5 at all.
 bool isDamagedHdf5File(const std::string& path);
