@@ -1,7 +1,5 @@
 // `wpg run`: scenario file -> generateWalk, or the walk to a goal (-> multibody replay and
 // dynamic filter) -> HDF5 dataset (+ figure) and a short summary.
-#include <unistd.h>
-
 #include <filesystem>
 #include <iostream>
 #include <optional>
@@ -9,6 +7,7 @@
 
 #include "cli_common.hpp"
 #include "pipeline_stages.hpp"
+#include "study_execution.hpp"
 #include "summary_printing.hpp"
 #include "wpg/analysis/run_summary.hpp"
 #include "wpg/datasets/input_error.hpp"
@@ -79,16 +78,7 @@ int runCommand(const RunOptions& options) {
     throw UsageError(e.what());
   }
   std::error_code ec;
-  for (fs::path folder = dataset_path.parent_path(); !folder.empty(); folder = folder.parent_path()) {
-    if (fs::exists(folder, ec)) {
-      if (!fs::is_directory(folder, ec) || ::access(folder.c_str(), W_OK | X_OK) != 0) {
-        throw UsageError("cannot write output '" + dataset_path.string() + "': '" +
-                         folder.string() + "' is not a writable directory");
-      }
-      break;
-    }
-    if (folder == folder.parent_path()) break;
-  }
+  checkWritableParent(dataset_path);
 
   ScenarioRun run;
   try {

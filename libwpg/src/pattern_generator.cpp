@@ -34,7 +34,8 @@ PatternGenerator::PatternGenerator(const WalkingParameters& parameters,
       solver_(model_),
       problem_(model_.makeProblem()),
       gait_(parameters),
-      references_(parameters) {
+      references_(parameters),
+      omega0_(std::sqrt(parameters.gravity / parameters.com_height)) {
   reset();
 }
 
@@ -74,9 +75,8 @@ const MpcIterationLog& PatternGenerator::update(double time, const Eigen::Vector
   // The capture point c + c'/omega0 of the LIPM (eq. 3): where the CoP would have to be to
   // bring the CoM to rest; out of a standing robot's reach it must step.
   const WalkingParameters& w = model_.parameters();
-  const double omega0 = std::sqrt(w.gravity / w.com_height);
-  const Eigen::Vector2d capture_point(com_x_(0) + com_x_(1) / omega0,
-                                      com_y_(0) + com_y_(1) / omega0);
+  const Eigen::Vector2d capture_point(com_x_(0) + com_x_(1) / omega0_,
+                                      com_y_(0) + com_y_(1) / omega0_);
   const GaitScheduler::SampleStart phase_start = gait_.beginSample(command, capture_point);
   if (phase_start.started) {
     references_.restartHeading(gait_.feetMeanYaw());

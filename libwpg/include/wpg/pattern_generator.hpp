@@ -105,6 +105,7 @@ class PatternGenerator {
   NmpcProblem problem_;
   GaitScheduler gait_;
   ReferenceBuilder references_;
+  double omega0_ = 0.0;  // sqrt(g / h) of the LIPM (eq. 3), for the capture point
   ObstacleSelector obstacles_;
   SamplePlan plan_;
   MpcIterationLog log_;
