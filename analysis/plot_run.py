@@ -82,7 +82,6 @@ MAX_RUNS_IN_FIGURE = 50
 import_h5py(SCRIPT)
 try:
     import numpy as np
-    import h5py
     import matplotlib
 
     matplotlib.use("Agg")

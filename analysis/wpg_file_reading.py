@@ -45,7 +45,10 @@ def run_script(script, main):
         report(script, "out of memory")
         sys.exit(2)
     except Exception as error:  # noqa: BLE001 - no traceback for anything a file can cause
-        report(script, "%s: %s" % (type(error).__name__, error))
+        # A content no check above foresaw: named by the input file (the first argument).
+        inputs = [argument for argument in sys.argv[1:] if not argument.startswith("-")]
+        report(script, "%s: cannot read or draw it (%s: %s)"
+               % (inputs[0] if inputs else "?", type(error).__name__, one_line(error)[:200]))
         sys.exit(2)
     sys.exit(status or 0)
 
@@ -121,7 +124,8 @@ class Reader:
         """The dataset `name` below `parent` as a numpy array, checked.
 
         columns: None for 1-D (n,), an int k for (n, k), "any" for (n, k) with any k.
-        kind: "number" (float or integer), "integer", "text" (strings, returned as str).
+        kind: "number" (float or integer), "integer", "text" (strings, returned as str),
+        "auto" (numbers or text, as stored).
         rows: the number of rows it must have (None: any up to max_rows).
         finite: floating-point values must be finite (not for kind "text").
         """
@@ -150,6 +154,8 @@ class Reader:
         if rows is not None and shape[0] != rows:
             self.fail(where, "expected %d rows, got %d" % (rows, shape[0]))
         dtype_kind = item.dtype.kind
+        if kind == "auto":
+            kind = "text" if dtype_kind in "SOU" else "number"
         if kind == "text":
             if dtype_kind not in "SOU":
                 self.fail(where, "expected strings, got %s" % item.dtype)
