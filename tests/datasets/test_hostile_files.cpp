@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <limits>
 #include <string>
 #include <vector>
@@ -21,6 +22,7 @@
 #include "wpg/datasets/run_dataset.hpp"
 #include "wpg/datasets/run_dataset_reader.hpp"
 #include "wpg/datasets/scenario.hpp"
+#include "wpg/datasets/study.hpp"
 #include "wpg/datasets/stored_run_consistency.hpp"
 #include "wpg/walk_generator.hpp"
 
@@ -318,6 +320,31 @@ TEST_F(HostileFiles, BatchSummaryDeclaringHugeColumnsIsRefused) {
   declareRows(file, "/batch/summary/index", 200000000, 0);
   wpg_test::expectInputError([&] { wpg::datasets::readBatchSummary(file); }, file,
                              {"dataset /batch/summary/index declares 200000000 elements"});
+}
+
+// `wpg batch --resume` on a file whose study name is an array of strings: HDF5's C++ API read
+// them all into one pointer (writing past it) before.
+TEST_F(HostileFiles, ResumeRefusesAnArrayStudyName) {
+  const fs::path study_file = directory_ / "two.yaml";
+  std::ofstream(study_file) << "name: two\nbase: walk_forward\nsweep:\n  grid: {robot_mass: [50.0, 55.0]}\n";
+  const wpg::datasets::Study study = wpg::datasets::loadStudy(
+      study_file.string(),
+      [](const std::string& base) { return wpg_test::kScenariosDir + "/" + base + ".yaml"; },
+      wpg_test::kRobotsDir);
+  const std::vector<wpg::datasets::SummaryColumn> columns = {{"distance", "m", "distance", false}};
+  const std::string file = (directory_ / "batch.h5").string();
+  wpg::datasets::BatchDatasetWriter::create(file, study, columns)->close();
+  {
+    H5::H5File f(file, H5F_ACC_RDWR);
+    f.removeAttr("study_name");
+    const H5::StrType type(H5::PredType::C_S1, H5T_VARIABLE);
+    const hsize_t dims[1] = {64};
+    const std::vector<const char*> names(dims[0], "two");
+    f.createAttribute("study_name", type, H5::DataSpace(1, dims)).write(type, names.data());
+  }
+  wpg_test::expectInputError(
+      [&] { wpg::datasets::BatchDatasetWriter::resume(file, study, columns); }, file,
+      {"/:study_name", "expected one value, got 64"});
 }
 
 }  // namespace
