@@ -73,8 +73,15 @@ std::string readStringAttribute(const H5::H5Object& object, const std::string& n
                                 const std::string& file, const std::string& where) {
   const H5::Attribute attribute =
       openSingleAttribute(object, name, H5T_STRING, "a string", file, where);
+  const H5::StrType type = attribute.getStrType();
+  // A fixed-length string is read whole into a buffer of its declared size.
+  if (!type.isVariableStr() && type.getSize() > kMaxReadBytes) {
+    fail(file, "attribute " + where + name + " declares a string of " +
+                   std::to_string(type.getSize()) + " bytes: expected at most " +
+                   std::to_string(kMaxReadBytes));
+  }
   std::string value;
-  attribute.read(attribute.getStrType(), value);
+  attribute.read(type, value);
   return value;
 }
 

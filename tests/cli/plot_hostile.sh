@@ -61,7 +61,13 @@ for file in "$WORKDIR"/flip_*.h5; do
   echo "$(basename "$file"): exit $status in $((SECONDS - start)) s: $(head -c 200 "$WORKDIR/stderr")"
   case $status in
     0) check_png "$WORKDIR/figure.png" ;;
-    2) expect_error_line "$(basename "$file")"
+    2) if grep -q '^wpg: error: the plot script was killed by signal' "$WORKDIR/stderr"; then
+         # HDF5 1.10.8 itself can crash on a corrupt global heap (H5HG_read), under h5py as
+         # under wpg: still one line and exit 2, no traceback (datasets/SCHEMA.md, Reading).
+         [[ "$(wc -l <"$WORKDIR/stderr")" == 1 ]] || fail "$(basename "$file"): not one line"
+       else
+         expect_error_line "$(basename "$file")"
+       fi
        [[ ! -e "$WORKDIR/figure.png" ]] || fail "$(basename "$file"): a figure and an error" ;;
     124) fail "$(basename "$file"): plot ran past $bound s" ;;
     *) fail "$(basename "$file"): exit status $status" ;;
