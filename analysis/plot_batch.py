@@ -5,23 +5,26 @@ runs (exit_status 1) as red crosses. Non-numeric swept values (lists, maps) are 
 rank among the distinct values, labelled with their YAML text.
 
 Reads /batch/summary with h5py only (layout: datasets/SCHEMA.md, "Batch files"; metrics:
-datasets/METRICS.md). Debian's h5py and matplotlib (/usr/bin/python3).
+datasets/METRICS.md), every column checked (wpg_file_reading.py); a bad file gives one line,
+`plot_batch.py: FILE: /path: expected ...`, and exit status 2. Debian's h5py and matplotlib
+(/usr/bin/python3).
 """
 import argparse
+import os
 import sys
 
-import h5py
-import matplotlib
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from wpg_file_reading import BadFile, Reader, import_h5py, open_file, run_script  # noqa: E402
+
+SCRIPT = "plot_batch.py"
+import_h5py(SCRIPT)
+import matplotlib  # noqa: E402
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 DEFAULT_METRICS = "velocity_error_rms,cop_margin_min,distance,qp_iterations_mean"
-
-
-def text(value):
-    return value.decode() if isinstance(value, bytes) else str(value)
 
 
 def main():
@@ -31,17 +34,26 @@ def main():
     parser.add_argument("--metrics", default=DEFAULT_METRICS)
     args = parser.parse_args()
 
-    with h5py.File(args.batch_file, "r") as f:
-        table = f["batch/summary"]
-        columns = [text(c) for c in table.attrs["columns"]]
-        data = {name: table[name][:] for name in columns}
-        units = {name: text(table[name].attrs["units"]) for name in columns}
-        study = text(f.attrs["study_name"])
+    with open_file(args.batch_file) as f:
+        reader = Reader(args.batch_file, f)
+        table = reader.group(reader.group(f, "batch"), "summary")
+        columns = reader.attribute(table, "columns", kind="texts")
+        data, units, rows = {}, {}, None
+        for name in columns:
+            # numbers (NaN: not run) or text (names; swept lists or maps as YAML)
+            data[name] = reader.dataset(table, name, kind="auto", rows=rows, finite=False)
+            rows = len(data[name])
+            units[name] = reader.attribute(table[name], "units", kind="text")
+        study = reader.attribute(f, "study_name", kind="text")
+    for required in ("done", "exit_status"):
+        if required not in data:
+            raise BadFile("%s: /batch/summary:columns: expected the column %s"
+                          % (args.batch_file, required))
     keys = [c for c in columns if c.startswith("sweep.")]
-    metrics = [m for m in args.metrics.split(",") if m in data]
+    metrics = [m for m in args.metrics.split(",") if m in data and data[m].dtype.kind in "fiu"]
     if not keys or not metrics:
-        print(f"{args.batch_file}: no swept key or no metric to plot", file=sys.stderr)
-        return 2
+        raise BadFile("%s: /batch/summary: expected a swept key and a metric to plot"
+                      % args.batch_file)
     done = data["done"] == 1
     failed = done & (data["exit_status"] != 0)
     fig, axes = plt.subplots(len(metrics), len(keys), squeeze=False,
@@ -51,7 +63,7 @@ def main():
         if values.dtype.kind in "fi":
             x, labels = values.astype(float), None
         else:
-            strings = [text(v) for v in values]
+            strings = [str(v) for v in values]
             labels = sorted(set(strings), key=strings.index)
             x = np.array([labels.index(s) for s in strings], dtype=float)
         for row, metric in enumerate(metrics):
@@ -77,4 +89,4 @@ def main():
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    run_script(SCRIPT, main)

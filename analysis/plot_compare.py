@@ -9,40 +9,56 @@ DIR/top_<world>.png     a top view per world: its obstacles (margins dashed), th
                         field) is shown for its first seed only.
 
 Reads /compare/summary, /batch/summary and the runs' com, obstacles/ and goal attributes with
-h5py only (layout: datasets/SCHEMA.md, "Comparison studies"). Debian's h5py and matplotlib.
+h5py only (layout: datasets/SCHEMA.md, "Comparison studies"), every dataset and attribute
+checked (wpg_file_reading.py); a bad file gives one line, `plot_compare.py: FILE: /path:
+expected ...`, and exit status 2. Debian's h5py and matplotlib.
 """
 import argparse
 import math
 import os
 import sys
 
-import h5py
-import matplotlib
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from wpg_file_reading import Reader, import_h5py, open_file, run_script  # noqa: E402
+
+SCRIPT = "plot_compare.py"
+import_h5py(SCRIPT)
+import matplotlib  # noqa: E402
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 from matplotlib.patches import Circle, Polygon  # noqa: E402
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from plot_run import convex_hull  # noqa: E402  (one hull for every figure)
 
 OBSTACLE_COLOUR = "0.35"
+# Figures drawn per world, boxes per world x variant: a study's file may declare any number.
+MAX_WORLDS, MAX_VARIANTS = 100, 50
 
 
-def text(value):
-    return value.decode() if isinstance(value, bytes) else str(value)
+def read_obstacles(reader, run):
+    """The run's obstacles/ datasets, checked against each other."""
+    group = reader.group(run, "obstacles")
+    ob = {"type": reader.dataset(group, "type", kind="integer")}
+    n = len(ob["type"])
+    ob["margin"] = reader.dataset(group, "margin", rows=n)
+    ob["center"] = reader.dataset(group, "center", columns=2, rows=n)
+    ob["radius"] = reader.dataset(group, "radius", rows=n)
+    ob["vertices"] = reader.dataset(group, "vertices", columns=2)
+    ob["vertex_start"] = reader.dataset(group, "vertex_start", kind="integer", rows=n)
+    ob["vertex_count"] = reader.dataset(group, "vertex_count", kind="integer", rows=n)
+    start, count = ob["vertex_start"], ob["vertex_count"]
+    if np.any(start < 0) or np.any(count < 0) or np.any(start + count > len(ob["vertices"])):
+        reader.fail(group.name + "/vertex_start", "expected rows of vertices (%d rows) with "
+                    "vertex_count" % len(ob["vertices"]))
+    return ob
 
 
-def texts(values):
-    return [text(v) for v in values]
-
-
-def obstacle_outlines(run):
+def obstacle_outlines(ob):
     """(outline, margin, circle) per obstacle; circle = (cx, cy, r) or None."""
-    ob = run["obstacles"]
     shapes = []
-    for i in range(int(ob.attrs["count"])):
+    for i in range(len(ob["type"])):
         margin = float(ob["margin"][i])
         if int(ob["type"][i]) == 0:
             cx, cy = ob["center"][i]
@@ -68,29 +84,32 @@ def grown(outline, margin, circle):
     return convex_hull(points)
 
 
-def draw_world(ax, run):
-    for outline, margin, circle in obstacle_outlines(run):
+def draw_world(ax, reader, run):
+    for outline, margin, circle in obstacle_outlines(read_obstacles(reader, run)):
         ax.add_patch(Polygon(outline, closed=True, facecolor=OBSTACLE_COLOUR, alpha=0.45,
                              edgecolor=OBSTACLE_COLOUR, linewidth=1.0))
         if margin > 0:
             ax.add_patch(Polygon(grown(outline, margin, circle), closed=True, fill=False,
                                  edgecolor=OBSTACLE_COLOUR, linestyle="--", linewidth=0.7))
-    gx, gy = float(run.attrs["goal_x"]), float(run.attrs["goal_y"])
-    ax.add_patch(Circle((gx, gy), float(run.attrs["goal_tolerance"]), fill=False,
+    gx, gy = reader.attribute(run, "goal_x"), reader.attribute(run, "goal_y")
+    tolerance = reader.attribute(run, "goal_tolerance")
+    if not all(math.isfinite(v) for v in (gx, gy, tolerance)) or tolerance < 0:
+        reader.fail(run.name + ":goal_x", "expected a finite goal and tolerance >= 0")
+    ax.add_patch(Circle((gx, gy), tolerance, fill=False,
                         edgecolor="black", linewidth=1.0))
     ax.plot([gx], [gy], marker="*", color="gold", markeredgecolor="black", markersize=13,
             linestyle="none", zorder=5)
     ax.plot([0.0], [0.0], marker="o", color="black", markersize=5, linestyle="none", zorder=5)
 
 
-def same_world(f, names):
+def same_world(reader, runs, names):
     """Whether the runs `names` have the same obstacles (a fixed world, not drawn per seed)."""
-    first = f["runs"][names[0]]["obstacles"]
+    first = read_obstacles(reader, reader.group(runs, names[0]))
     for name in names[1:]:
-        other = f["runs"][name]["obstacles"]
+        other = read_obstacles(reader, reader.group(runs, name))
         for key in ("center", "radius", "vertices"):
-            if first[key].shape != other[key].shape or not np.array_equal(first[key][()],
-                                                                           other[key][()]):
+            if first[key].shape != other[key].shape or not np.array_equal(first[key],
+                                                                           other[key]):
                 return False
     return True
 
@@ -102,23 +121,37 @@ def main():
     args = parser.parse_args()
     os.makedirs(args.output, exist_ok=True)
 
-    with h5py.File(args.study_file, "r") as f:
-        study = text(f.attrs["study_name"])
-        worlds = texts(f["compare"].attrs["worlds"])
-        variants = texts(f["compare"].attrs["variants"])
-        cells = f["compare/summary"]
-        cell_world = texts(cells["world"][:])
-        cell_variant = texts(cells["variant"][:])
-        success = {(w, v): r for w, v, r in zip(cell_world, cell_variant, cells["success_rate"][:])}
-        runs_per_cell = {(w, v): int(n) for w, v, n in zip(cell_world, cell_variant,
-                                                          cells["runs"][:])}
-        table = f["batch/summary"]
-        run_names = texts(table["name"][:])
-        run_world = texts(table["sweep.world"][:])
-        run_variant = texts(table["sweep.variant"][:])
-        run_seed = table["sweep.seed"][:]
-        time_to_goal = table["time_to_goal"][:]
-        reached = table["goal_reached"][:]
+    with open_file(args.study_file) as f:
+        reader = Reader(args.study_file, f)
+        study = reader.attribute(f, "study_name", kind="text")
+        compare = reader.group(f, "compare")
+        worlds = reader.attribute(compare, "worlds", kind="texts")
+        variants = reader.attribute(compare, "variants", kind="texts")
+        if not 0 < len(worlds) <= MAX_WORLDS or not 0 < len(variants) <= MAX_VARIANTS:
+            reader.fail(compare.name + ":worlds", "expected 1 to %d worlds and 1 to %d variants"
+                        % (MAX_WORLDS, MAX_VARIANTS))
+        cells = reader.group(compare, "summary")
+        cell_world = list(reader.dataset(cells, "world", kind="text"))
+        rows = len(cell_world)
+        cell_variant = list(reader.dataset(cells, "variant", kind="text", rows=rows))
+        rates = reader.dataset(cells, "success_rate", rows=rows, finite=False)
+        success = {(w, v): r for w, v, r in zip(cell_world, cell_variant, rates)}
+        counts = reader.dataset(cells, "runs", rows=rows)
+        runs_per_cell = {(w, v): int(n) for w, v, n in zip(cell_world, cell_variant, counts)}
+        for w in worlds:
+            for v in variants:
+                if (w, v) not in success:
+                    reader.fail(cells.name + "/world", "expected a row for world %s, variant %s"
+                                % (w, v))
+        table = reader.group(reader.group(f, "batch"), "summary")
+        run_names = list(reader.dataset(table, "name", kind="text"))
+        rows = len(run_names)
+        run_world = list(reader.dataset(table, "sweep.world", kind="text", rows=rows))
+        run_variant = list(reader.dataset(table, "sweep.variant", kind="text", rows=rows))
+        run_seed = reader.dataset(table, "sweep.seed", rows=rows)
+        time_to_goal = reader.dataset(table, "time_to_goal", rows=rows, finite=False)
+        reached = reader.dataset(table, "goal_reached", kind="integer", rows=rows)
+        runs = reader.group(f, "runs")
         colours = {v: plt.get_cmap("tab10")(i % 10) for i, v in enumerate(variants)}
         # Line styles too: variants that walk the same route (a planner with NMPC and with
         # LMPC) draw nearly the same CoM path, and a solid line would hide the other.
@@ -181,18 +214,20 @@ def main():
         # A top view per world.
         for world in worlds:
             names = [n for n, w in zip(run_names, run_world) if w == world]
-            fixed = same_world(f, names)
+            fixed = same_world(reader, runs, names)
             first_seed = min(s for s, w in zip(run_seed, run_world) if w == world)
             fig, ax = plt.subplots(figsize=(8.0, 5.0))
             drawn_world = False
             for name, w, v, s, r in zip(run_names, run_world, run_variant, run_seed, reached):
                 if w != world or (not fixed and s != first_seed):
                     continue
-                run = f["runs"][name]
+                run = reader.group(runs, name)
                 if not drawn_world:
-                    draw_world(ax, run)
+                    draw_world(ax, reader, run)
                     drawn_world = True
-                com = run["com"][()]
+                com = reader.dataset(run, "com", columns=3)
+                if not len(com):
+                    continue
                 ax.plot(com[:, 0], com[:, 1], color=colours[v], linestyle=styles[v], linewidth=0.9,
                         alpha=0.75)
                 if r != 1:
@@ -216,4 +251,4 @@ def main():
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    run_script(SCRIPT, main)

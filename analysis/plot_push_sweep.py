@@ -5,12 +5,20 @@ foot's lift-off), one line per direction, one panel per walking situation; the p
 (Sec. V-B) of each direction as a dashed line of the same colour; the end of single support
 (phase 0.875 for HRP-2's 0.7 s + 0.1 s step) as a grey band.
 
-Reads /push_sweep with h5py only (layout: datasets/SCHEMA.md, "Push sweep files").
+Reads /push_sweep with h5py only (layout: datasets/SCHEMA.md, "Push sweep files"), every
+column checked (wpg_file_reading.py); a bad file gives one line, `plot_push_sweep.py: FILE:
+/path: expected ...`, and exit status 2.
 """
 import argparse
+import os
+import sys
 
-import h5py
-import matplotlib
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from wpg_file_reading import BadFile, Reader, import_h5py, open_file, run_script  # noqa: E402
+
+SCRIPT = "plot_push_sweep.py"
+import_h5py(SCRIPT)
+import matplotlib  # noqa: E402
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
@@ -26,24 +34,24 @@ COLOURS = {"sagittal+": "tab:blue", "sagittal-": "tab:cyan", "coronal+": "tab:re
 SITUATION_TITLES = {"forward": "walking forward at 0.2 m/s", "on_spot": "stepping in place"}
 
 
-def text(value):
-    return value.decode() if isinstance(value, bytes) else str(value)
-
-
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("sweep_file")
     parser.add_argument("-o", "--output", required=True)
     args = parser.parse_args()
 
-    with h5py.File(args.sweep_file, "r") as f:
-        table = f["push_sweep"]
-        situation = np.array([text(v) for v in table["situation"][:]])
-        direction = np.array([text(v) for v in table["direction"][:]])
-        phase = table["phase"][:]
-        force = np.abs(table["force"][:])
-        bound = table["at_upper_bound"][:] == 1
-        overrides = [text(o) for o in f.attrs["overrides"]]
+    with open_file(args.sweep_file) as f:
+        reader = Reader(args.sweep_file, f)
+        table = reader.group(f, "push_sweep")
+        situation = reader.dataset(table, "situation", kind="text")
+        rows = len(situation)
+        direction = reader.dataset(table, "direction", kind="text", rows=rows)
+        phase = reader.dataset(table, "phase", rows=rows)
+        force = np.abs(reader.dataset(table, "force", rows=rows))
+        bound = reader.dataset(table, "at_upper_bound", kind="integer", rows=rows) == 1
+        overrides = reader.attribute(f, "overrides", kind="texts", optional=True, default=[])
+    if rows == 0:
+        raise BadFile("%s: /push_sweep/situation: expected at least one row" % args.sweep_file)
     situations = list(dict.fromkeys(situation))
     fig, axes = plt.subplots(1, len(situations), squeeze=False, sharey=True,
                              figsize=(5.2 * len(situations) + 0.6, 4.0))
@@ -61,7 +69,8 @@ def main():
             capped = bound[rows][order]
             if capped.any():
                 ax.plot(x[capped], y[capped], "^", color=COLOURS[d], markersize=10)
-            ax.axhline(PAPER[name][d], color=COLOURS[d], linestyle="--", linewidth=0.9)
+            if d in PAPER.get(name, {}):
+                ax.axhline(PAPER[name][d], color=COLOURS[d], linestyle="--", linewidth=0.9)
         ax.set_title(SITUATION_TITLES.get(name, name))
         ax.set_xlabel("phase (fraction of the step since lift-off)")
         ax.set_xlim(-0.02, 1.0)
@@ -79,4 +88,4 @@ def main():
 
 
 if __name__ == "__main__":
-    raise SystemExit(main())
+    run_script(SCRIPT, main)

@@ -15,7 +15,10 @@ the offline pass's errors beside the online ones.
 
 Needs Debian's python3-h5py and python3-matplotlib (run it with /usr/bin/python3: a pyenv
 python3 does not see them). The PNG is written atomically (temporary file, then rename).
-Exit status 2 with one line on stderr on a bad file.
+Every dataset and attribute it uses is checked (wpg_file_reading.py: shapes, types, finite
+numbers, sizes bounded before reading); the stored scenario is parsed with PyYAML. A bad file
+gives one line on stderr, `plot_run.py: FILE: /path: expected ...` (after `wpg: error: ` under
+`wpg plot`), and exit status 2; never a traceback.
 
 Why one file of ~600 lines: `wpg plot` runs it as one script with Debian's python3 (no
 package to install); its panels share the reading of the file and the styles above them.
@@ -23,10 +26,14 @@ package to install); its panels share the reading of the file and the styles abo
 import argparse
 import math
 import os
-import re
 import sys
 import tempfile
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from wpg_file_reading import (BadFile, Reader, import_h5py, open_file,  # noqa: E402
+                              parse_scenario, run_script, walking_number)
+
+SCRIPT = "plot_run.py"
 PROG = os.environ.get("WPG_PLOT_PROG") or os.path.basename(sys.argv[0])
 
 # HRP-2 sole (DESIGN.md), used when the run's scenario text does not give the foot size.
@@ -68,72 +75,28 @@ FIG6_REFERENCE = dict(color="tab:blue", linestyle="-", linewidth=1.4)
 FIG6_BEFORE = dict(color="tab:red", linestyle="-.", linewidth=1.2)
 FIG6_AFTER = dict(color="tab:green", linestyle="--", linewidth=1.4)
 FIG6_WINDOW = 3.0  # [s] of steady walking shown per axis
+# One figure row per run, 6.8 in high: matplotlib refuses figures over 2^16 pixels (~87 rows).
+MAX_RUNS_IN_FIGURE = 50
 
 
-class BadInput(Exception):
-    """A problem with the input file: one line on stderr, exit status 2."""
-
-
-def fail(message):
-    sys.stderr.write("%s: error: %s\n" % (PROG, " ".join(str(message).split())))
-    sys.exit(2)
-
-
+import_h5py(SCRIPT)
 try:
     import numpy as np
-    import h5py
     import matplotlib
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     from matplotlib.patches import Circle, Patch, Polygon
     from matplotlib.lines import Line2D
+    import yaml  # noqa: F401  (python3-yaml: the stored scenario is read with it)
 except ImportError as error:
-    fail("plotting needs h5py and matplotlib for %s (%s): install the Debian packages "
-         "python3-h5py python3-matplotlib" % (sys.executable, error))
+    from wpg_file_reading import report
+    report(SCRIPT, "plotting needs h5py, matplotlib and PyYAML for %s (%s): install the Debian "
+           "packages python3-h5py python3-matplotlib python3-yaml" % (sys.executable, error))
+    sys.exit(2)
 
 
-# --- scenario text (root attribute `scenario`) -------------------------------------------------
-def parse_scenario(text):
-    """The scenario YAML as a dict: PyYAML when present, else {} (callers fall back)."""
-    if not text:
-        return {}
-    try:
-        import yaml  # python3-yaml: usually there, not required
-    except ImportError:
-        return {}
-    try:
-        data = yaml.safe_load(text)
-    except yaml.YAMLError:
-        return {}
-    return data if isinstance(data, dict) else {}
-
-
-def walking_value(scenario, text, key, default):
-    """walking.<key> from the scenario, by YAML or by a plain regular expression."""
-    walking = scenario.get("walking")
-    if isinstance(walking, dict) and isinstance(walking.get(key), (int, float)):
-        return float(walking[key])
-    match = re.search(r"^walking:\s*\n(?:[ \t]+.*\n|\s*\n)*?[ \t]+%s:\s*([-+0-9.eE]+)" % key,
-                      text or "", re.MULTILINE)
-    if match:
-        try:
-            return float(match.group(1))
-        except ValueError:
-            pass
-    return default
-
-
-def as_text(value):
-    if value is None:
-        return ""
-    if isinstance(value, bytes):
-        return value.decode("utf-8", "replace")
-    if isinstance(value, np.ndarray) and value.size == 1:
-        return as_text(value.item())
-    return str(value)
-
-
+# --- scenario text (root attribute `scenario`, parsed by wpg_file_reading with PyYAML) --------
 def fmt_number(value):
     try:
         return ("%.3g" % float(value))
@@ -181,86 +144,125 @@ def describe_command(scenario):
     return ""
 
 
-# --- reading -----------------------------------------------------------------------------------
+# --- reading (every dataset checked: wpg_file_reading) -----------------------------------------
 def read_runs(path, only=None):
-    if not os.path.exists(path):
-        raise BadInput("cannot read '%s': no such file" % path)
-    if os.path.isdir(path):
-        raise BadInput("cannot read '%s': it is a directory" % path)
-    if not os.access(path, os.R_OK):
-        raise BadInput("cannot read '%s': permission denied" % path)
-    try:
-        handle = h5py.File(path, "r")
-    except (OSError, ValueError) as error:
-        if not h5py.is_hdf5(path):
-            raise BadInput("cannot read '%s': not an HDF5 file" % path)
-        raise BadInput("cannot read '%s': %s" % (path, str(error)[:200]))
-    with handle:
-        scenario_text = as_text(handle.attrs.get("scenario"))
-        runs_group = handle.get("runs")
-        if not isinstance(runs_group, h5py.Group) or len(runs_group) == 0:
-            raise BadInput("'%s' holds no run: no group under /runs/" % path)
+    with open_file(path) as handle:
+        reader = Reader(path, handle)
+        root_scenario = reader.attribute(handle, "scenario", kind="text", optional=True)
+        runs_group = reader.group(handle, "runs")
         names = sorted(runs_group.keys())
+        if not names:
+            raise BadFile("%s: /runs: expected at least one run group, got none" % path)
         if only is not None:
-            if only not in runs_group:
-                raise BadInput("'%s' has no run '%s' (runs: %s)" % (path, only, ", ".join(names)))
+            if only not in names:
+                raise BadFile("%s: /runs/%s: expected a run group (runs: %s)"
+                              % (path, only, ", ".join(names[:10])))
             names = [only]
+        if len(names) > MAX_RUNS_IN_FIGURE:
+            raise BadFile("%s: /runs: expected at most %d runs in one figure, got %d (draw one "
+                          "with --run NAME)" % (path, MAX_RUNS_IN_FIGURE, len(names)))
         runs = []
         for name in names:
-            group = runs_group[name]
-            if not isinstance(group, h5py.Group):
+            group = reader.group(runs_group, name, optional=True)
+            if group is None:
                 continue
-            missing = [key for key in SCHEMA_DATASETS if key not in group]
-            if missing:
-                raise BadInput("'%s': /runs/%s lacks %s" % (path, name, ", ".join(missing)))
-            run = {"name": name}
-            for key in SCHEMA_DATASETS:
-                run[key] = np.asarray(group[key][()])
-            mpc = group.get("mpc")
-            run["mpc"] = None
-            if isinstance(mpc, h5py.Group) and "time" in mpc and "solve_time" in mpc:
-                run["mpc"] = {key: np.asarray(mpc[key][()]) for key in mpc.keys()
-                              if isinstance(mpc[key], h5py.Dataset)}
-            run["multibody"] = None
-            if isinstance(group.get("zmp_multibody"), h5py.Dataset):
-                multibody = {key: np.asarray(group[key][()]) for key in MULTIBODY_DATASETS
-                             if isinstance(group.get(key), h5py.Dataset)}
-                attributes = group["multibody"].attrs if isinstance(
-                    group.get("multibody"), h5py.Group) else {}
-                multibody.update({key: float(attributes[key]) for key in MULTIBODY_ATTRIBUTES
-                                  if key in attributes})
-                # "online" (the loop of Fig. 3) or "offline"; absent in older files (offline)
-                multibody["filter_mode"] = as_text(attributes.get("filter_mode")) or "offline"
-                run["multibody"] = multibody
-            run["goal"] = read_goal(group)
-            # a batch may store each run's own scenario text on its group
-            run["scenario_text"] = as_text(group.attrs.get("scenario")) or scenario_text
-            check_shapes(path, run)
-            runs.append(run)
+            runs.append(read_run(reader, group, name, root_scenario))
         if not runs:
-            raise BadInput("'%s' holds no run: no group under /runs/" % path)
+            raise BadFile("%s: /runs: expected at least one run group, got none" % path)
         return runs
 
 
-def read_goal(group):
+def read_run(reader, group, name, root_scenario):
+    run = {"name": name}
+    time = reader.dataset(group, "time")
+    n = len(time)
+    if n and not np.all(np.diff(time) > 0):
+        row = int(np.argmax(~(np.diff(time) > 0))) + 1
+        reader.fail(group.name + "/time", "row %d: expected strictly increasing times" % row)
+    run["time"] = time
+    run["com"] = reader.dataset(group, "com", columns=3, rows=n)
+    run["cop"] = reader.dataset(group, "cop", columns=2, rows=n)
+    run["support"] = reader.dataset(group, "support", kind="integer", rows=n)
+    if np.any((run["support"] < 0) | (run["support"] > 2)):
+        reader.fail(group.name + "/support", "expected codes 0, 1 or 2")
+    run["footsteps"] = reader.dataset(group, "footsteps", columns=4)
+    run["footstep_side"] = reader.dataset(group, "footstep_side", kind="integer",
+                                          rows=len(run["footsteps"]))
+    run["mpc"] = None
+    mpc = reader.group(group, "mpc", optional=True)
+    if mpc is not None and reader.has(mpc, "time") and reader.has(mpc, "solve_time"):
+        k = None
+        run["mpc"] = {}
+        for key in ("time", "solve_time", "status"):
+            values = reader.dataset(mpc, key, kind="integer" if key == "status" else "number",
+                                    rows=k, optional=key == "status")
+            if values is None:
+                continue
+            k = len(values)
+            run["mpc"][key] = values
+        status = run["mpc"].get("status")
+        if status is not None and not np.all(np.isin(status, list(STATUS_STYLE))):
+            reader.fail(mpc.name + "/status", "expected codes %s" % ", ".join(
+                str(code) for code in STATUS_STYLE))
+    run["multibody"] = None
+    if reader.has(group, "zmp_multibody"):
+        multibody = {}
+        for key in MULTIBODY_DATASETS:
+            values = reader.dataset(group, key, columns=3 if key == "com_filtered" else 2,
+                                    rows=n, optional=key != "zmp_multibody")
+            if values is not None:
+                multibody[key] = values
+        attributes = reader.group(group, "multibody", optional=True)
+        if attributes is not None:
+            for key in MULTIBODY_ATTRIBUTES:
+                value = reader.attribute(attributes, key, optional=True)
+                if value is not None:
+                    multibody[key] = value
+            # "online" (the loop of Fig. 3) or "offline"; absent in older files (offline)
+            multibody["filter_mode"] = reader.attribute(
+                attributes, "filter_mode", kind="text", optional=True) or "offline"
+        else:
+            multibody["filter_mode"] = "offline"
+        run["multibody"] = multibody
+    run["goal"] = read_goal(reader, group)
+    # a batch stores each run's own scenario text on its group
+    text = reader.attribute(group, "scenario", kind="text", optional=True) or root_scenario
+    where = (group.name + ":scenario") if text is not root_scenario else "/:scenario"
+    run["scenario"] = parse_scenario(reader.path, where, text)
+    return run
+
+
+def read_goal(reader, group):
     """The goal and the routes of a walk to a goal (SCHEMA.md: plans), or None."""
-    if "goal_x" not in group.attrs:
+    if reader.attribute(group, "goal_x", optional=True) is None:
         return None
-    attributes = group.attrs
-    goal = {key: float(attributes[key]) for key in
-            ("goal_x", "goal_y", "goal_yaw", "goal_tolerance", "time_to_goal")
-            if key in attributes}
-    goal["reached"] = int(attributes.get("goal_reached", 0)) == 1
+    goal = {}
+    for key in ("goal_x", "goal_y", "goal_yaw", "goal_tolerance", "time_to_goal"):
+        value = reader.attribute(group, key, optional=True)
+        if value is not None:
+            goal[key] = value
+    for key in ("goal_x", "goal_y"):
+        if not math.isfinite(goal.get(key, math.nan)):
+            reader.fail(group.name + ":" + key, "expected a finite number")
+    goal["goal_tolerance"] = goal.get("goal_tolerance", 0.0)
+    if not (math.isfinite(goal["goal_tolerance"]) and goal["goal_tolerance"] >= 0):
+        reader.fail(group.name + ":goal_tolerance", "expected a finite number >= 0")
+    goal["reached"] = reader.attribute(group, "goal_reached", optional=True, default=0) == 1
     goal["routes"] = []
-    plans = group.get("plans")
-    if isinstance(plans, h5py.Group) and "routes" in plans:
-        routes = np.asarray(plans["routes"][()]).reshape(-1, 3)
-        starts = np.asarray(plans["route_start"][()])
-        counts = np.asarray(plans["route_count"][()])
-        times = np.asarray(plans["time"][()])
-        triggers = np.asarray(plans["trigger"][()])
-        codes = dict(item.split("=") for item in
-                     as_text(plans["trigger"].attrs.get("codes", "")).split(", ") if "=" in item)
+    plans = reader.group(group, "plans", optional=True)
+    if plans is not None and reader.has(plans, "routes"):
+        routes = reader.dataset(plans, "routes", columns=3)
+        starts = reader.dataset(plans, "route_start", kind="integer")
+        p = len(starts)
+        counts = reader.dataset(plans, "route_count", kind="integer", rows=p)
+        times = reader.dataset(plans, "time", rows=p)
+        triggers = reader.dataset(plans, "trigger", kind="integer", rows=p)
+        if np.any(starts < 0) or np.any(counts < 0) or np.any(starts + counts > len(routes)):
+            reader.fail(plans.name + "/route_start",
+                        "expected rows of routes (%d rows) with route_count" % len(routes))
+        codes_text = reader.attribute(plans["trigger"], "codes", kind="text", optional=True,
+                                      default="")
+        codes = dict(item.split("=", 1) for item in codes_text.split(", ") if "=" in item)
         for start, count, time, trigger in zip(starts, counts, times, triggers):
             goal["routes"].append((routes[int(start):int(start) + int(count), :2], float(time),
                                    codes.get(str(int(trigger)), str(int(trigger)))))
@@ -294,28 +296,6 @@ def draw_goal(ax, goal):
     handles.append(Line2D([], [], marker="*", color="gold", markeredgecolor="black",
                           markersize=11, linestyle="none", label=label))
     return handles
-
-
-def check_shapes(path, run):
-    n = run["time"].shape[0] if run["time"].ndim == 1 else -1
-    expected = {"com": (n, 3), "cop": (n, 2), "support": (n,)}
-    for key in (run.get("multibody") or {}):
-        if key in MULTIBODY_DATASETS:
-            expected[key] = (n, 3) if key == "com_filtered" else (n, 2)
-    for key, shape in expected.items():
-        if key in MULTIBODY_DATASETS:
-            if run["multibody"][key].shape != shape:
-                raise BadInput("'%s': /runs/%s/%s has shape %s, expected %s"
-                               % (path, run["name"], key, run["multibody"][key].shape, shape))
-            continue
-        if run[key].shape[:len(shape)] != shape or n < 0:
-            raise BadInput("'%s': /runs/%s/%s has shape %s, expected %s"
-                           % (path, run["name"], key, run[key].shape, shape))
-    footsteps = run["footsteps"]
-    if footsteps.ndim != 2 or footsteps.shape[1] != 4 \
-            or run["footstep_side"].shape != (footsteps.shape[0],):
-        raise BadInput("'%s': /runs/%s footsteps (m x 4) and footstep_side (m) disagree: %s, %s"
-                       % (path, run["name"], footsteps.shape, run["footstep_side"].shape))
 
 
 # --- drawing -----------------------------------------------------------------------------------
@@ -618,11 +598,9 @@ def draw(runs, source_path):
     fig = plt.figure(figsize=(15, sum(heights)))
     outer = fig.add_gridspec(rows, 1, hspace=0.35 if rows > 1 else 0.0, height_ratios=heights)
     for row, run in enumerate(runs):
-        scenario = parse_scenario(run["scenario_text"])
-        foot_length = walking_value(scenario, run["scenario_text"], "foot_length",
-                                    DEFAULT_FOOT_LENGTH)
-        foot_width = walking_value(scenario, run["scenario_text"], "foot_width",
-                                   DEFAULT_FOOT_WIDTH)
+        scenario = run["scenario"]
+        foot_length = walking_number(scenario, "foot_length", DEFAULT_FOOT_LENGTH)
+        foot_width = walking_number(scenario, "foot_width", DEFAULT_FOOT_WIDTH)
         cell = outer[row]
         if run["multibody"] is not None:
             split = cell.subgridspec(2, 1, height_ratios=(6.8, 3.4), hspace=0.28)
@@ -680,20 +658,26 @@ def main():
     parser.add_argument("--run", help="draw only this group of /runs/ (default: all)")
     args = parser.parse_args()
     output = args.output or os.path.splitext(args.run_file)[0] + ".png"
-    try:
-        runs = read_runs(args.run_file, args.run)
-    except BadInput as error:
-        fail(error)
+    runs = read_runs(args.run_file, args.run)
     if not os.path.isdir(os.path.dirname(os.path.abspath(output))):
-        fail("cannot write '%s': no such folder" % output)
-    fig = draw(runs, args.run_file)
+        raise BadFile("%s: cannot write it: no such folder" % output)
+    try:
+        fig = draw(runs, args.run_file)
+    except (ValueError, TypeError, KeyError, IndexError, OverflowError, AttributeError) as error:
+        # numbers the checks let through that matplotlib cannot place (e.g. 1e300 m)
+        raise BadFile("%s: cannot draw it: %s: %s" % (args.run_file, type(error).__name__,
+                                                       str(error)[:160]))
     try:
         save_atomically(fig, output)
     except OSError as error:
-        fail("cannot write '%s': %s" % (output, error))
+        raise BadFile("%s: cannot write it: %s" % (output, error))
+    except (ValueError, OverflowError, RuntimeError) as error:
+        raise BadFile("%s: cannot draw it: %s: %s" % (args.run_file, type(error).__name__,
+                                                       str(error)[:160]))
     finally:
-        plt.close(fig)
+        plt.close("all")
+    return 0
 
 
 if __name__ == "__main__":
-    main()
+    run_script(SCRIPT, main)

@@ -13,6 +13,7 @@
 #include "wpg/datasets/input_error.hpp"
 #include "wpg/datasets/run_dataset_reader.hpp"
 #include "wpg/datasets/scenario.hpp"
+#include "wpg/datasets/stored_run_consistency.hpp"
 
 namespace wpg::cli {
 namespace {
@@ -88,6 +89,7 @@ int analyzeCommand(const AnalyzeOptions& options) {
     const datasets::Scenario scenario = datasets::loadScenarioText(
         stored.scenario_yaml, options.input + ":/runs/" + name + "/scenario", {},
         robotsDirectory());
+    datasets::checkStoredRunMatchesScenario(options.input, stored, scenario);
     analysis::ZmpErrorComparison zmp;
     if (stored.zmp_error) {
       zmp.filtered = stored.zmp_error->filtered;

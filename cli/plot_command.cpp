@@ -104,9 +104,12 @@ int plotCommand(const PlotOptions& options) {
       throw UsageError("cannot create the folder of '" + figure.string() + "': " + ec.message());
     }
   }
+  // The script checks the file and reports a bad one in one line (exit 2); any failure of it
+  // is the input's (no walk ran): exit 2, as every other bad input.
   const int status = drawFigure(options.input, figure.string());
-  if (status == kExitSuccess) std::cout << "figure: " << figure.string() << '\n';
-  return status;
+  if (status != kExitSuccess) return kExitBadInput;
+  std::cout << "figure: " << figure.string() << '\n';
+  return kExitSuccess;
 }
 
 }  // namespace wpg::cli

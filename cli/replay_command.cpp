@@ -13,6 +13,7 @@
 #include "wpg/datasets/output_file.hpp"
 #include "wpg/datasets/run_dataset_reader.hpp"
 #include "wpg/datasets/scenario.hpp"
+#include "wpg/datasets/stored_run_consistency.hpp"
 
 namespace fs = std::filesystem;
 
@@ -34,6 +35,8 @@ int replayCommand(const ReplayOptions& options) {
         {"replay=true", std::string("filter=") + (options.filter ? "true" : "false"),
          "filter_settings.mode=offline"},
         robotsDirectory());
+    // A walk the stored scenario did not generate would be replayed at the wrong period.
+    datasets::checkStoredRunMatchesScenario(options.input, stored, scenario);
   } catch (const datasets::InputError& e) {
     throw UsageError(e.what());
   }

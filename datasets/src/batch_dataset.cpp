@@ -12,8 +12,10 @@
 
 #include <H5Cpp.h>
 
+#include "hdf5_bounded_reading.hpp"
 #include "hdf5_writing.hpp"
 #include "run_group_writing.hpp"
+#include "wpg/datasets/read_limits.hpp"
 #include "yaml_input.hpp"
 
 #ifndef WPG_VERSION_STRING
@@ -99,28 +101,6 @@ void writeStrings(H5::DataSet& dataset, const std::vector<std::string>& values) 
   std::vector<const char*> pointers;
   for (const std::string& value : values) pointers.push_back(value.c_str());
   dataset.write(pointers.data(), stringType());
-}
-
-std::string readStringAttribute(const H5::H5Object& object, const std::string& name) {
-  const H5::Attribute attribute = object.openAttribute(name);
-  std::string value;
-  attribute.read(attribute.getStrType(), value);
-  return value;
-}
-
-std::vector<std::string> readStringListAttribute(const H5::H5Object& object,
-                                                 const std::string& name) {
-  const H5::Attribute attribute = object.openAttribute(name);
-  const hssize_t count = attribute.getSpace().getSimpleExtentNpoints();
-  std::vector<char*> pointers(static_cast<std::size_t>(count));
-  const H5::StrType type = stringType();
-  if (count > 0) attribute.read(type, pointers.data());
-  std::vector<std::string> values;
-  for (char* pointer : pointers) values.emplace_back(pointer ? pointer : "");
-  if (count > 0) {
-    H5Dvlen_reclaim(type.getId(), attribute.getSpace().getId(), H5P_DEFAULT, pointers.data());
-  }
-  return values;
 }
 
 [[noreturn]] void rethrowHdf5(const std::string& path, const std::string& what,
@@ -261,15 +241,18 @@ std::unique_ptr<BatchDatasetWriter> BatchDatasetWriter::resume(
       if (!file.attrExists("study_name") || !file.attrExists("study_fingerprint")) {
         refuse("not a batch file (no root attribute study_name)");
       }
-      const std::string name = readStringAttribute(file, "study_name");
-      const std::string fingerprint = readStringAttribute(file, "study_fingerprint");
+      // Read bounded (hdf5_bounded_reading.hpp): the file may be anyone's.
+      const std::string name = detail::readStringAttribute(file, "study_name", path, "/:");
+      const std::string fingerprint =
+          detail::readStringAttribute(file, "study_fingerprint", path, "/:");
       if (name != study.name || fingerprint != study.fingerprint) {
         refuse("it holds study '" + name + "' (fingerprint " + fingerprint + "), not '" +
                study.name + "' (fingerprint " + study.fingerprint + ")");
       }
       if (!file.nameExists("batch") || !file.nameExists(kSummaryPath)) refuse("no /batch/summary");
       const H5::Group table = file.openGroup(kSummaryPath);
-      if (readStringListAttribute(table, "columns") != columnNames(study, columns)) {
+      if (detail::readStringListAttribute(table, "columns", path, kSummaryPath + std::string(":")) !=
+          columnNames(study, columns)) {
         refuse("its summary columns differ from this wpg's (written by another version?)");
       }
     }
@@ -433,14 +416,24 @@ BatchSummaryTable readBatchSummary(const std::string& path) {
   BatchSummaryTable summary;
   try {
     const H5::H5File file(path, H5F_ACC_RDONLY);
-    summary.study = readStringAttribute(file, "study_name");
+    summary.study = detail::readStringAttribute(file, "study_name", path, "/:");
     const H5::Group table = file.openGroup(kSummaryPath);
-    summary.column_names = readStringListAttribute(table, "columns");
+    summary.column_names =
+        detail::readStringListAttribute(table, "columns", path, kSummaryPath + std::string(":"));
     for (const std::string& name : summary.column_names) {
       const H5::DataSet dataset = table.openDataSet(name);
-      const hsize_t rows = static_cast<hsize_t>(dataset.getSpace().getSimpleExtentNpoints());
+      const std::string where = kSummaryPath + std::string("/") + name;
+      // One row per run: 1-D, bounded before the cells are allocated, as long as the others.
+      const std::vector<hsize_t> dims = detail::boundedExtent(
+          dataset.getSpace(), sizeof(double), kMaxReadElements, path, "dataset " + where);
+      if (dims.size() != 1 || (!summary.cells.empty() && dims[0] != summary.rows)) {
+        throw InputError(path + ": dataset " + where + ": expected a column of " +
+                         (summary.cells.empty() ? std::string("n") : std::to_string(summary.rows)) +
+                         " rows (as the table's others)");
+      }
+      const hsize_t rows = dims[0];
       summary.rows = rows;
-      summary.column_units.push_back(readStringAttribute(dataset, "units"));
+      summary.column_units.push_back(detail::readStringAttribute(dataset, "units", path, where + ":"));
       std::vector<std::string> cells;
       const H5T_class_t type = dataset.getTypeClass();
       if (type == H5T_STRING) {

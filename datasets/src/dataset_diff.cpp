@@ -1,6 +1,9 @@
 // Field-by-field comparison of two HDF5 datasets (wpg/datasets/dataset_diff.hpp). Generic on
 // purpose: every group, dataset and attribute of the files is visited, whatever the schema holds,
-// so that a regression reference also catches a field nobody thought of checking.
+// so that a regression reference also catches a field nobody thought of checking. The files may
+// be anyone's: every size is bounded before it is allocated (read_limits.hpp), and the walk
+// follows each pair of groups once, at most kMaxGroupDepth levels deep (hard and soft links can
+// make cycles and exponentially many paths).
 #include "wpg/datasets/dataset_diff.hpp"
 
 #include <algorithm>
@@ -15,6 +18,8 @@
 
 #include <H5Cpp.h>
 
+#include "hdf5_bounded_reading.hpp"
+#include "wpg/datasets/read_limits.hpp"
 #include "wpg/datasets/run_dataset.hpp"
 
 namespace wpg::datasets {
@@ -51,17 +56,30 @@ std::size_t elementCount(const std::vector<hsize_t>& dims) {
   return count;
 }
 
+// Where a field is, for messages: the file and the object ("dataset /runs/x/com").
+struct FieldPlace {
+  const std::string& file;
+  std::string what;
+};
+
 // Reads a dataset or an attribute (`read(buffer, memory_type)` is given by the caller, as the
-// two classes of the C++ API order their arguments differently).
+// two classes of the C++ API order their arguments differently), its size bounded first.
 template <typename Read>
-Field readField(const H5::DataType& file_type, const H5::DataSpace& space, Read read) {
+Field readField(const H5::DataType& file_type, const H5::DataSpace& space,
+                const FieldPlace& place, Read read) {
   Field field;
-  const int rank = space.getSimpleExtentNdims();
-  field.dims.resize(rank);
-  if (rank > 0) space.getSimpleExtentDims(field.dims.data());
+  const H5T_class_t file_class = file_type.getClass();
+  // Bytes per element in memory: a double for numbers, a pointer for a variable-length string.
+  const std::size_t element_size = std::max<std::size_t>(
+      {file_type.getSize(), sizeof(double),
+       file_class == H5T_STRING ? sizeof(char*) : std::size_t{1}});
+  field.dims = detail::boundedExtent(space, element_size, kMaxReadElements, place.file,
+                                     place.what);
+  if (space.getSimpleExtentType() == H5S_NULL) field.dims.clear();
   field.type_name = typeName(file_type);
-  const std::size_t count = elementCount(field.dims);
-  const H5T_class_t type_class = file_type.getClass();
+  const std::size_t count =
+      space.getSimpleExtentType() == H5S_NULL ? 0 : elementCount(field.dims);
+  const H5T_class_t type_class = file_class;
   if (type_class == H5T_FLOAT || type_class == H5T_INTEGER) {
     field.kind = Field::Kind::kNumber;
     field.numbers.resize(count);
@@ -94,14 +112,28 @@ Field readField(const H5::DataType& file_type, const H5::DataSpace& space, Read 
   return field;
 }
 
-Field readDataset(const H5::DataSet& dataset) {
-  return readField(dataset.getDataType(), dataset.getSpace(),
+Field readDataset(const H5::DataSet& dataset, const FieldPlace& place) {
+  return readField(dataset.getDataType(), dataset.getSpace(), place,
                    [&](void* buffer, const H5::DataType& type) { dataset.read(buffer, type); });
 }
 
-Field readAttribute(const H5::Attribute& attribute) {
-  return readField(attribute.getDataType(), attribute.getSpace(),
+Field readAttribute(const H5::Attribute& attribute, const FieldPlace& place) {
+  return readField(attribute.getDataType(), attribute.getSpace(), place,
                    [&](void* buffer, const H5::DataType& type) { attribute.read(type, buffer); });
+}
+
+// The file and address of an object: the same group reached by two links has the same key.
+std::string objectKey(const H5::H5Object& object) {
+#if H5_VERSION_GE(1, 12, 0)
+  H5O_info2_t info;
+  if (H5Oget_info3(object.getId(), &info, H5O_INFO_BASIC) < 0) throw H5::Exception("H5Oget_info3", "");
+  return std::to_string(info.fileno) + ":" +
+         std::string(reinterpret_cast<const char*>(&info.token), sizeof info.token);
+#else
+  H5O_info_t info;
+  if (H5Oget_info2(object.getId(), &info, H5O_INFO_BASIC) < 0) throw H5::Exception("H5Oget_info2", "");
+  return std::to_string(info.fileno) + ":" + std::to_string(info.addr);
+#endif
 }
 
 std::string shapeText(const std::vector<hsize_t>& dims) {
@@ -135,11 +167,20 @@ std::vector<std::string> lines(const std::string& text) {
 
 class Comparison {
  public:
-  explicit Comparison(const DiffSettings& settings) : settings_(settings) {}
+  Comparison(const DiffSettings& settings, const std::string& path_a, const std::string& path_b)
+      : settings_(settings), path_a_(path_a), path_b_(path_b) {}
 
   DatasetDiff result;
 
-  void compareGroups(const std::string& path, const H5::Group& a, const H5::Group& b) {
+  void compareGroups(const std::string& path, const H5::Group& a, const H5::Group& b,
+                     int depth = 0) {
+    if (depth > kMaxGroupDepth) {
+      throw InputError(path_a_ + " / " + path_b_ + ": group " + path + " is nested " +
+                       std::to_string(depth) + " levels deep: expected at most " +
+                       std::to_string(kMaxGroupDepth) + " (a link cycle?)");
+    }
+    // A pair of groups seen before (reached by another link) is not compared again.
+    if (!visited_.insert({objectKey(a), objectKey(b)}).second) return;
     compareAttributes(path, a, b, path == "/");
     std::set<std::string> names;
     for (hsize_t i = 0; i < a.getNumObjs(); ++i) names.insert(a.getObjnameByIdx(i));
@@ -159,19 +200,23 @@ class Comparison {
       if (type_a != type_b) {
         structural(child, false, "a group in one file, a dataset in the other");
       } else if (type_a == H5O_TYPE_GROUP) {
-        compareGroups(child, a.openGroup(name), b.openGroup(name));
+        compareGroups(child, a.openGroup(name), b.openGroup(name), depth + 1);
       } else if (type_a == H5O_TYPE_DATASET) {
         const H5::DataSet dataset_a = a.openDataSet(name), dataset_b = b.openDataSet(name);
         compareAttributes(child, dataset_a, dataset_b, false);
         ++result.datasets_compared;
-        compareFields(child, false, readDataset(dataset_a), readDataset(dataset_b),
-                      columnNames(dataset_a));
+        compareFields(child, false, readDataset(dataset_a, {path_a_, "dataset " + child}),
+                      readDataset(dataset_b, {path_b_, "dataset " + child}),
+                      columnNames(dataset_a, {path_a_, "attribute " + child + "@columns"}));
       }
     }
   }
 
  private:
   const DiffSettings& settings_;
+  const std::string& path_a_;
+  const std::string& path_b_;
+  std::set<std::pair<std::string, std::string>> visited_;
 
   bool ignoredByPattern(const std::string& path) const {
     for (const std::string& pattern : settings_.ignore_patterns) {
@@ -188,9 +233,10 @@ class Comparison {
     result.differences.push_back(std::move(difference));
   }
 
-  static std::vector<std::string> columnNames(const H5::H5Object& object) {
+  static std::vector<std::string> columnNames(const H5::H5Object& object,
+                                              const FieldPlace& place) {
     if (!object.attrExists("columns")) return {};
-    const Field columns = readAttribute(object.openAttribute("columns"));
+    const Field columns = readAttribute(object.openAttribute("columns"), place);
     if (columns.kind != Field::Kind::kText || columns.texts.size() != 1) return {};
     return splitColumns(columns.texts[0]);
   }
@@ -212,8 +258,8 @@ class Comparison {
         continue;
       }
       ++result.attributes_compared;
-      compareFields(where, true, readAttribute(a.openAttribute(name)),
-                    readAttribute(b.openAttribute(name)), {});
+      compareFields(where, true, readAttribute(a.openAttribute(name), {path_a_, "attribute " + where}),
+                    readAttribute(b.openAttribute(name), {path_b_, "attribute " + where}), {});
     }
   }
 
@@ -363,7 +409,7 @@ DatasetDiff diffDatasets(const std::string& path_a, const std::string& path_b,
     current = path_b;
     const H5::H5File file_b = openDataset(path_b);
     current = path_a + " / " + path_b;
-    Comparison comparison(settings);
+    Comparison comparison(settings, path_a, path_b);
     comparison.compareGroups("/", file_a.openGroup("/"), file_b.openGroup("/"));
     return std::move(comparison.result);
   } catch (const H5::Exception& error) {

@@ -1,9 +1,12 @@
 // Reading a run dataset back into a WalkResult (layout: datasets/SCHEMA.md). Strict like the
-// scenario reader: a missing dataset, a wrong shape or an unknown code is an InputError naming
-// the file and the dataset, never a silently shorter walk.
+// scenario reader: a missing dataset, a wrong shape, a size beyond the readers' limits (checked
+// before anything is allocated, read_limits.hpp), a number that is not finite, a time that does
+// not increase or an unknown code is an InputError naming the file, the dataset and the row,
+// never a silently shorter or corrupt walk.
 #include "wpg/datasets/run_dataset_reader.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <limits>
 #include <optional>
@@ -16,6 +19,8 @@
 
 #include <H5Cpp.h>
 
+#include "hdf5_bounded_reading.hpp"
+#include "wpg/datasets/read_limits.hpp"
 #include "wpg/datasets/run_dataset.hpp"
 
 namespace wpg::datasets {
@@ -33,40 +38,83 @@ class Reader {
   }
 
   // The dataset `name` (below the run group) with `columns` columns (0: 1-D), of type class
-  // `type_class`; returns its rows.
+  // `type_class`, at most kMaxStoredSamples rows; returns its rows. Only the dataspace is read.
   H5::DataSet open(const std::string& name, hsize_t columns, H5T_class_t type_class,
                    hsize_t* rows) const {
-    const std::string where = run_path_ + "/" + name;
-    if (!run_.nameExists(name)) fail("dataset " + where + " is missing");
-    if (run_.childObjType(name) != H5O_TYPE_DATASET) fail(where + " is not a dataset");
+    const std::string where = "dataset " + run_path_ + "/" + name;
+    if (!run_.nameExists(name)) fail(where + " is missing");
+    if (run_.childObjType(name) != H5O_TYPE_DATASET) fail(run_path_ + "/" + name + " is not a dataset");
     H5::DataSet dataset = run_.openDataSet(name);
+    const std::string expected =
+        columns == 0 ? std::string("(n,)") : "(n, " + std::to_string(columns) + ")";
+    // The rank first, then the dimensions into a fixed array: nothing sized by the file.
     const H5::DataSpace space = dataset.getSpace();
-    const int rank = space.getSimpleExtentNdims();
+    const int rank = columns == 0 ? 1 : 2;
     hsize_t dims[2] = {0, 0};
-    if (rank == (columns == 0 ? 1 : 2)) space.getSimpleExtentDims(dims);
-    if (rank != (columns == 0 ? 1 : 2) || (columns != 0 && dims[1] != columns)) {
-      fail("dataset " + where + " has the wrong shape: expected " +
-           (columns == 0 ? std::string("(n,)") : "(n, " + std::to_string(columns) + ")"));
+    if (space.getSimpleExtentType() != H5S_SIMPLE || space.getSimpleExtentNdims() != rank) {
+      fail(where + " has the wrong shape: expected " + expected);
+    }
+    space.getSimpleExtentDims(dims);
+    if (columns != 0 && dims[1] != columns) fail(where + " has the wrong shape: expected " + expected);
+    if (dims[0] > kMaxStoredSamples) {
+      fail(where + " declares " + std::to_string(dims[0]) + " rows: expected at most " +
+           std::to_string(kMaxStoredSamples) + " (3600 s at 5 ms, datasets/SCHEMA.md, Reading)");
     }
     if (dataset.getTypeClass() != type_class) {
-      fail("dataset " + where + " has the wrong type: expected " +
+      fail(where + " has the wrong type: expected " +
            (type_class == H5T_FLOAT ? "floating-point numbers" : "integers"));
     }
     *rows = dims[0];
     return dataset;
   }
 
+  // Finite numbers only: a NaN or an infinity would be copied into every later output.
   std::vector<double> doubles(const std::string& name, hsize_t columns, hsize_t* rows) const {
     H5::DataSet dataset = open(name, columns, H5T_FLOAT, rows);
-    std::vector<double> values(*rows * (columns == 0 ? 1 : columns));
+    const std::size_t width = columns == 0 ? 1 : static_cast<std::size_t>(columns);
+    std::vector<double> values(static_cast<std::size_t>(*rows) * width);
     if (!values.empty()) dataset.read(values.data(), H5::PredType::NATIVE_DOUBLE);
+    for (std::size_t i = 0; i < values.size(); ++i) {
+      if (!std::isfinite(values[i])) {
+        fail("dataset " + run_path_ + "/" + name + " row " + std::to_string(i / width) +
+             (columns == 0 ? std::string() : " column " + std::to_string(i % width)) +
+             ": expected a finite number, got " + std::to_string(values[i]));
+      }
+    }
+    return values;
+  }
+
+  // A time column: finite (doubles) and strictly increasing.
+  std::vector<double> times(const std::string& name, hsize_t* rows) const {
+    std::vector<double> values = doubles(name, 0, rows);
+    for (std::size_t i = 1; i < values.size(); ++i) {
+      if (!(values[i] > values[i - 1])) {
+        fail("dataset " + run_path_ + "/" + name + " row " + std::to_string(i) +
+             ": expected strictly increasing times, got " + std::to_string(values[i]) +
+             " s after " + std::to_string(values[i - 1]) + " s");
+      }
+    }
     return values;
   }
 
   std::vector<int> integers(const std::string& name, hsize_t* rows) const {
     H5::DataSet dataset = open(name, 0, H5T_INTEGER, rows);
-    std::vector<int> values(*rows);
+    std::vector<int> values(static_cast<std::size_t>(*rows));
     if (!values.empty()) dataset.read(values.data(), H5::PredType::NATIVE_INT);
+    return values;
+  }
+
+  // Counts: integers >= 0, exactly `expected_rows` of them.
+  std::vector<int> counts(const std::string& name, hsize_t expected_rows) const {
+    hsize_t rows = 0;
+    std::vector<int> values = integers(name, &rows);
+    expectRows(name, rows, expected_rows);
+    for (std::size_t i = 0; i < values.size(); ++i) {
+      if (values[i] < 0) {
+        fail("dataset " + run_path_ + "/" + name + " row " + std::to_string(i) +
+             ": expected a count >= 0, got " + std::to_string(values[i]));
+      }
+    }
     return values;
   }
 
@@ -75,10 +123,11 @@ class Reader {
     hsize_t rows = 0;
     std::vector<int> values = integers(name, &rows);
     expectRows(name, rows, expected_rows);
-    for (const int value : values) {
-      if (value < low || value > high) {
-        fail("dataset " + run_path_ + "/" + name + " holds the code " + std::to_string(value) +
-             ", expected " + std::to_string(low) + " to " + std::to_string(high));
+    for (std::size_t i = 0; i < values.size(); ++i) {
+      if (values[i] < low || values[i] > high) {
+        fail("dataset " + run_path_ + "/" + name + " row " + std::to_string(i) +
+             " holds the code " + std::to_string(values[i]) + ", expected " +
+             std::to_string(low) + " to " + std::to_string(high));
       }
     }
     return values;
@@ -93,11 +142,17 @@ class Reader {
 
   std::string stringAttribute(const H5::H5Object& object, const std::string& name,
                               const std::string& where) const {
-    if (!object.attrExists(name)) fail("attribute " + where + name + " is missing");
-    const H5::Attribute attribute = object.openAttribute(name);
-    if (attribute.getTypeClass() != H5T_STRING) fail("attribute " + where + name + " is not a string");
-    std::string value;
-    attribute.read(attribute.getStrType(), value);
+    return detail::readStringAttribute(object, name, path_, where);
+  }
+
+  double numberAttribute(const H5::H5Object& object, const std::string& name,
+                         const std::string& where) const {
+    const double value = detail::readNumberAttribute(object, name, path_, where);
+    if (std::isnan(value)) return value;  // NaN: not measured (SCHEMA.md)
+    if (!std::isfinite(value)) {
+      fail("attribute " + where + name + ": expected a finite number or NaN, got " +
+           std::to_string(value));
+    }
     return value;
   }
 
@@ -134,20 +189,15 @@ StoredRun readFile(const std::string& path, const std::string& run_name) {
   if (!root_scenario && !file.attrExists("study")) {
     throw InputError(path + ": root attribute 'scenario' is missing (not a run dataset?)");
   }
-  if (root_scenario) {
-    const H5::Attribute attribute = file.openAttribute("scenario");
-    if (attribute.getTypeClass() != H5T_STRING) {
-      throw InputError(path + ": root attribute 'scenario' is not a string");
-    }
-    attribute.read(attribute.getStrType(), stored.scenario_yaml);
-  }
+  if (root_scenario) stored.scenario_yaml = detail::readStringAttribute(file, "scenario", path, "/:");
   if (!file.nameExists("runs") || file.childObjType("runs") != H5O_TYPE_GROUP) {
     throw InputError(path + ": no group /runs (not a run dataset?)");
   }
   const H5::Group runs = file.openGroup("runs");
   const std::vector<std::string> names = runGroupNames(runs);
-  std::string all;
-  for (const std::string& name : names) all += (all.empty() ? "" : ", ") + name;
+  std::string all;  // for messages: the first names
+  for (std::size_t i = 0; i < names.size() && i < 10; ++i) all += (i ? ", " : "") + names[i];
+  if (names.size() > 10) all += ", ...";
   if (run_name.empty()) {
     if (names.size() != 1) {
       throw InputError(path + ": expected one run under /runs, got " +
@@ -173,19 +223,14 @@ StoredRun readFile(const std::string& path, const std::string& run_name) {
   stored.robot = reader.stringAttribute(run, "robot", run_path + ":");
   if (run.nameExists("multibody") && run.childObjType("multibody") == H5O_TYPE_GROUP) {
     const H5::Group multibody = run.openGroup("multibody");
+    const std::string where = run_path + "/multibody:";
     const auto number = [&](const char* name) {
-      double value = std::numeric_limits<double>::quiet_NaN();
-      if (multibody.attrExists(name)) {
-        multibody.openAttribute(name).read(H5::PredType::NATIVE_DOUBLE, &value);
-      }
-      return value;
+      return multibody.attrExists(name) ? reader.numberAttribute(multibody, name, where)
+                                        : std::numeric_limits<double>::quiet_NaN();
     };
     StoredZmpError zmp;
-    int filtered = 0;
-    if (multibody.attrExists("filtered")) {
-      multibody.openAttribute("filtered").read(H5::PredType::NATIVE_INT, &filtered);
-    }
-    zmp.filtered = filtered != 0;
+    zmp.filtered = multibody.attrExists("filtered") &&
+                   detail::readNumberAttribute(multibody, "filtered", path, where) != 0.0;
     zmp.rms_before = number("zmp_error_rms_before");
     zmp.max_before = number("zmp_error_max_before");
     zmp.rms_after = number("zmp_error_rms_after");
@@ -194,14 +239,12 @@ StoredRun readFile(const std::string& path, const std::string& run_name) {
   }
   if (run.attrExists("message")) stored.result.message = reader.stringAttribute(run, "message", run_path + ":");
   if (run.attrExists("success")) {
-    int success = 1;
-    run.openAttribute("success").read(H5::PredType::NATIVE_INT, &success);
-    stored.result.success = success != 0;
+    stored.result.success = detail::readNumberAttribute(run, "success", path, run_path + ":") != 0.0;
   }
 
   WalkTrajectory& t = stored.result.trajectory;
   hsize_t n = 0, rows = 0;
-  t.time = reader.doubles("time", 0, &n);
+  t.time = reader.times("time", &n);
   if (n < 1) reader.fail("dataset " + run_path + "/time is empty");
   const auto samples = [&](const char* name, hsize_t columns) {
     std::vector<double> values = reader.doubles(name, columns, &rows);
@@ -236,7 +279,7 @@ StoredRun readFile(const std::string& path, const std::string& run_name) {
   const H5::Group mpc = run.openGroup("mpc");
   const Reader log_reader(path, mpc, run_path + "/mpc");
   hsize_t k = 0;
-  const std::vector<double> time = log_reader.doubles("time", 0, &k);
+  const std::vector<double> time = log_reader.times("time", &k);
   const auto per_iteration = [&](const char* name) {
     std::vector<double> values = log_reader.doubles(name, 0, &rows);
     log_reader.expectRows(name, rows, k);
@@ -256,7 +299,9 @@ StoredRun readFile(const std::string& path, const std::string& run_name) {
     }
     return items;
   };
-  if (!mpc.nameExists("slack")) log_reader.fail("dataset " + run_path + "/mpc/slack is missing");
+  if (!mpc.nameExists("slack") || mpc.childObjType("slack") != H5O_TYPE_DATASET) {
+    log_reader.fail("dataset " + run_path + "/mpc/slack is missing");
+  }
   const H5::DataSet slack_set = mpc.openDataSet("slack");
   const std::string where = run_path + "/mpc/slack ";
   const std::vector<std::string> columns = split(log_reader.stringAttribute(slack_set, "columns", where));
@@ -276,15 +321,13 @@ StoredRun readFile(const std::string& path, const std::string& run_name) {
       t.constraint_families.push_back({columns[f], units[f], groups[f]});
   }
   const std::vector<int> relaxed = log_reader.codes("relaxed_families", k, 0, 255);
-  const std::vector<int> qp_iterations = log_reader.integers("qp_iterations", &rows);
-  log_reader.expectRows("qp_iterations", rows, k);
-  const std::vector<int> sqp_iterations = log_reader.integers("sqp_iterations", &rows);
-  log_reader.expectRows("sqp_iterations", rows, k);
+  const std::vector<int> qp_iterations = log_reader.counts("qp_iterations", k);
+  const std::vector<int> sqp_iterations = log_reader.counts("sqp_iterations", k);
   const std::vector<int> status = log_reader.codes("status", k, 0, 255);
   for (hsize_t i = 0; i < k; ++i) {
     if (std::strcmp(iterationStatusName(static_cast<IterationStatus>(status[i])), "unknown") == 0) {
-      log_reader.fail("dataset " + run_path + "/mpc/status holds the unknown code " +
-                      std::to_string(status[i]));
+      log_reader.fail("dataset " + run_path + "/mpc/status row " + std::to_string(i) +
+                      " holds the unknown code " + std::to_string(status[i]));
     }
     MpcIterationLog row;
     row.time = time[i];
@@ -294,6 +337,11 @@ StoredRun readFile(const std::string& path, const std::string& run_name) {
     row.status = static_cast<IterationStatus>(status[i]);
     row.cost = cost[i];
     for (std::size_t f = 0; f < families; ++f) row.slack[f] = slack[i * families + f];
+    if (relaxed[i] >> families != 0) {
+      log_reader.fail("dataset " + run_path + "/mpc/relaxed_families row " + std::to_string(i) +
+                      ": expected bits of the " + std::to_string(families) +
+                      " slack columns only, got " + std::to_string(relaxed[i]));
+    }
     row.relaxed_families = static_cast<std::uint32_t>(relaxed[i]);
     t.mpc.push_back(row);
   }

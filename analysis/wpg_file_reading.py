@@ -1,0 +1,256 @@
+"""Reading wpg's HDF5 files (datasets/SCHEMA.md) in the plot scripts, trusting nothing.
+
+A file given to a plot script may be anyone's: truncated, bit-flipped, or made to declare
+2e8 rows in a few kB. Every read here checks what it gets (group or dataset, rank, columns,
+number type, finite values) and the size a dataset declares BEFORE h5py allocates it (the
+limits of wpg/datasets/read_limits.hpp, datasets/SCHEMA.md "Reading"). Any problem is a
+BadFile whose message is one line, "FILE: /path: expected ...", and `run_script` turns it
+(and any other error while reading or drawing) into that one line on stderr and exit status 2:
+no traceback. The stored scenario is parsed with PyYAML (a setup dependency), never with
+regular expressions.
+"""
+import math
+import os
+import sys
+
+# As wpg/datasets/read_limits.hpp.
+MAX_STORED_SAMPLES = 720001  # rows of a run's per-sample datasets (3600 s at 5 ms, + 1)
+MAX_READ_ELEMENTS = 1 << 26  # elements of any one dataset or attribute
+
+
+class BadFile(Exception):
+    """A problem with an input file: `str(error)` is one line naming the file and the object."""
+
+
+def one_line(text):
+    return " ".join(str(text).split())
+
+
+def report(script, message):
+    """One line on stderr: `wpg: error: SCRIPT: ...` under `wpg`, else `SCRIPT: ...`."""
+    prefix = "wpg: error: " if os.environ.get("WPG_PLOT_PROG") == "wpg" else ""
+    sys.stderr.write("%s%s: %s\n" % (prefix, script, one_line(message)))
+
+
+def run_script(script, main):
+    """Runs main(); a BadFile or any other error becomes one line and exit status 2."""
+    try:
+        status = main()
+    except BadFile as error:
+        report(script, error)
+        sys.exit(2)
+    except KeyboardInterrupt:
+        sys.exit(130)
+    except MemoryError:
+        report(script, "out of memory")
+        sys.exit(2)
+    except Exception as error:  # noqa: BLE001 - no traceback for anything a file can cause
+        # A content no check above foresaw: named by the input file (the first argument).
+        inputs = [argument for argument in sys.argv[1:] if not argument.startswith("-")]
+        report(script, "%s: cannot read or draw it (%s: %s)"
+               % (inputs[0] if inputs else "?", type(error).__name__, one_line(error)[:200]))
+        sys.exit(2)
+    sys.exit(status or 0)
+
+
+def import_h5py(script):
+    """h5py and numpy, or one line and exit 2 naming the Debian packages."""
+    try:
+        import h5py  # noqa: F401
+        import numpy  # noqa: F401
+    except ImportError as error:
+        report(script, "needs h5py and numpy for %s (%s): install the Debian packages "
+               "python3-h5py python3-numpy" % (sys.executable, error))
+        sys.exit(2)
+    return h5py
+
+
+def open_file(path):
+    """The HDF5 file `path`, open for reading."""
+    import h5py
+    if not os.path.exists(path):
+        raise BadFile("%s: cannot read: no such file" % path)
+    if os.path.isdir(path):
+        raise BadFile("%s: cannot read: it is a directory" % path)
+    if not os.access(path, os.R_OK):
+        raise BadFile("%s: cannot read: permission denied" % path)
+    try:
+        return h5py.File(path, "r")
+    except (OSError, ValueError) as error:
+        try:
+            hdf5 = h5py.is_hdf5(path)
+        except (OSError, ValueError):
+            hdf5 = False
+        if not hdf5:
+            raise BadFile("%s: not an HDF5 file" % path)
+        raise BadFile("%s: cannot read the HDF5 file (%s)" % (path, one_line(error)[:200]))
+
+
+class Reader:
+    """Checked reads from one open file; `path` names it in every message."""
+
+    def __init__(self, path, handle):
+        self.path = path
+        self.file = handle
+
+    def fail(self, where, expected):
+        raise BadFile("%s: %s: %s" % (self.path, where, expected))
+
+    def _get(self, parent, name):
+        where = _join(parent.name, name)
+        try:
+            return parent.get(name), where
+        except (OSError, KeyError, ValueError, RuntimeError) as error:
+            self.fail(where, "cannot read it (%s)" % one_line(error)[:160])
+
+    def group(self, parent, name, optional=False):
+        """The group `name` below `parent` (None when optional and absent)."""
+        import h5py
+        item, where = self._get(parent, name)
+        if item is None and optional:
+            return None
+        if not isinstance(item, h5py.Group):
+            self.fail(where, "expected a group" + (", missing" if item is None else ""))
+        return item
+
+    def has(self, parent, name):
+        try:
+            return name in parent
+        except (OSError, KeyError, ValueError, RuntimeError):
+            return False
+
+    def dataset(self, parent, name, columns=None, kind="number", rows=None,
+                max_rows=MAX_STORED_SAMPLES, finite=True, optional=False):
+        """The dataset `name` below `parent` as a numpy array, checked.
+
+        columns: None for 1-D (n,), an int k for (n, k), "any" for (n, k) with any k.
+        kind: "number" (float or integer), "integer", "text" (strings, returned as str),
+        "auto" (numbers or text, as stored).
+        rows: the number of rows it must have (None: any up to max_rows).
+        finite: floating-point values must be finite (not for kind "text").
+        """
+        import h5py
+        import numpy as np
+        item, where = self._get(parent, name)
+        if item is None and optional:
+            return None
+        if not isinstance(item, h5py.Dataset):
+            self.fail(where, "expected a dataset" + (", missing" if item is None else ""))
+        shape = item.shape
+        if shape is None:
+            shape = (0,)
+        expected_shape = ("(n,)" if columns is None else
+                          "(n, k)" if columns == "any" else "(n, %d)" % columns)
+        if len(shape) != (1 if columns is None else 2) or (
+                isinstance(columns, int) and shape[1] != columns):
+            self.fail(where, "expected shape %s, got %s" % (expected_shape, shape))
+        elements = 1
+        for extent in shape:
+            elements *= int(extent)
+        if shape[0] > max_rows or elements > MAX_READ_ELEMENTS:
+            self.fail(where, "declares shape %s: expected at most %d rows and %d elements "
+                      "(the readers' limits, datasets/SCHEMA.md)"
+                      % (shape, max_rows, MAX_READ_ELEMENTS))
+        if rows is not None and shape[0] != rows:
+            self.fail(where, "expected %d rows, got %d" % (rows, shape[0]))
+        dtype_kind = item.dtype.kind
+        if kind == "auto":
+            kind = "text" if dtype_kind in "SOU" else "number"
+        if kind == "text":
+            if dtype_kind not in "SOU":
+                self.fail(where, "expected strings, got %s" % item.dtype)
+        elif kind == "integer":
+            if dtype_kind not in "iu":
+                self.fail(where, "expected integers, got %s" % item.dtype)
+        elif dtype_kind not in "fiu":
+            self.fail(where, "expected numbers, got %s" % item.dtype)
+        try:
+            if kind == "text":
+                values = item.asstr()[()] if dtype_kind in "SO" else item[()]
+                return np.asarray([str(v) for v in np.asarray(values).reshape(-1)])
+            values = np.asarray(item[()])
+        except (OSError, ValueError, TypeError, UnicodeDecodeError, RuntimeError) as error:
+            self.fail(where, "cannot read it (%s)" % one_line(error)[:160])
+        if finite and values.dtype.kind == "f" and values.size and \
+                not np.all(np.isfinite(values)):
+            row = int(np.argwhere(~np.isfinite(values.reshape(shape[0], -1)))[0][0])
+            self.fail(where, "row %d: expected finite numbers" % row)
+        return values
+
+    def attribute(self, obj, name, kind="number", default=None, optional=False):
+        """The attribute `name` of `obj`: one number ("number") or one string ("text");
+        a list of strings ("texts"). `default` when absent and optional."""
+        import numpy as np
+        where = obj.name + ":" + name
+        try:
+            present = name in obj.attrs
+        except (OSError, KeyError, ValueError, RuntimeError) as error:
+            self.fail(where, "cannot read it (%s)" % one_line(error)[:160])
+        if not present:
+            if optional:
+                return default
+            self.fail(where, "expected an attribute, missing")
+        try:
+            shape = obj.attrs.get_id(name).shape
+            elements = 1
+            for extent in shape or ():
+                elements *= int(extent)
+            if elements > MAX_READ_ELEMENTS:
+                self.fail(where, "declares shape %s: expected at most %d elements"
+                          % (shape, MAX_READ_ELEMENTS))
+            value = obj.attrs[name]
+        except BadFile:
+            raise
+        except (OSError, KeyError, ValueError, TypeError, RuntimeError) as error:
+            self.fail(where, "cannot read it (%s)" % one_line(error)[:160])
+        if kind == "texts":
+            items = np.asarray(value, dtype=object).reshape(-1)
+            if not all(isinstance(v, (str, bytes)) for v in items):
+                self.fail(where, "expected a list of strings")
+            return [_text(v) for v in items]
+        array = np.asarray(value, dtype=object).reshape(-1) if not isinstance(
+            value, (str, bytes)) else [value]
+        if len(array) != 1:
+            self.fail(where, "expected one value, got %d" % len(array))
+        value = array[0]
+        if kind == "text":
+            if not isinstance(value, (str, bytes)):
+                self.fail(where, "expected a string")
+            return _text(value)
+        if isinstance(value, (str, bytes)) or not isinstance(value, (int, float, np.number)):
+            self.fail(where, "expected a number")
+        return float(value)
+
+
+def _text(value):
+    return value.decode("utf-8", "replace") if isinstance(value, bytes) else str(value)
+
+
+def _join(parent, name):
+    return (parent.rstrip("/") + "/" + name) if not name.startswith("/") else name
+
+
+def parse_scenario(path, where, text):
+    """The stored scenario (YAML text) as a dict; BadFile when it is not a YAML mapping."""
+    import yaml  # python3-yaml, a setup dependency
+    if not text:
+        raise BadFile("%s: %s: expected the scenario's YAML text, got nothing" % (path, where))
+    try:
+        data = yaml.safe_load(text)
+    except yaml.YAMLError as error:
+        mark = getattr(error, "problem_mark", None)
+        raise BadFile("%s: %s: expected the scenario's YAML text, got a YAML error%s"
+                      % (path, where, " at line %d" % (mark.line + 1) if mark else ""))
+    if not isinstance(data, dict):
+        raise BadFile("%s: %s: expected the scenario's YAML text (a mapping)" % (path, where))
+    return data
+
+
+def walking_number(scenario, key, default):
+    """walking.<key> of a parsed scenario when it is a finite positive number, else default."""
+    walking = scenario.get("walking")
+    value = walking.get(key) if isinstance(walking, dict) else None
+    if isinstance(value, (int, float)) and not isinstance(value, bool) and \
+            math.isfinite(value) and value > 0:
+        return float(value)
+    return default
