@@ -93,7 +93,8 @@ Scenario loadScenarioTree(YAML::Node root, const std::string& path,
     const Entries entries = readMap(root, "", topLevelKeys(), "a map of scenario keys", source);
 
     scenario.name = readName(entry(entries, "name"), "name",
-                             "a name of letters, digits, '_', '-', '.' (the HDF5 group name)",
+                             "a name of at most 128 letters, digits, '_', '-', '.' (the HDF5 group "
+                             "and default file name)",
                              source);
     if (readName(entry(entries, "robot"), "robot", robot_expected, source) != scenario.robot) {
       throw std::logic_error("loadScenario: the robot changed while merging");
