@@ -131,11 +131,28 @@ ReplayOutcome replayScenarioWalk(const robots::RobotModel& model,
     // a walk too short to replay (a fall in the first samples) is a failed run, not bad input
     throw std::runtime_error(std::string("cannot replay the walk: ") + e.what());
   }
+  // The replay is a stage with its own verdict: a motion it could not follow (joint angles or a
+  // filtered CoM that are not finite) is a failed replay, never numbers in the dataset.
+  const MultibodyValidation& v = outcome.validation;
+  if (!v.q.allFinite() || !v.com_filtered.allFinite()) {
+    throw std::runtime_error("cannot replay the walk: the joint angles or the filtered CoM are "
+                             "not finite");
+  }
   outcome.wall_time =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   outcome.walk_duration = analysis::walkDuration(walk);
   return outcome;
 }
+
+namespace {
+
+// A walk the replay cannot follow fails the run; the walk is still written (exit 1).
+void recordReplayFailure(WalkResult& result, const std::string& why) {
+  result.success = false;
+  result.message = result.message.empty() ? why : result.message + "; " + why;
+}
+
+}  // namespace
 
 ScenarioRun runScenario(const robots::RobotModel* model, const datasets::Scenario& scenario) {
   ScenarioRun run;
@@ -143,8 +160,21 @@ ScenarioRun runScenario(const robots::RobotModel* model, const datasets::Scenari
                       scenario.filter_loop.mode != DynamicFilterMode::kOffline;
   if (!online) {
     run.walk = runScenarioWalk(scenario);
-    if (model)
-      run.replay = replayScenarioWalk(*model, scenario, run.walk.result.trajectory, scenario.filter);
+    if (!model) return run;
+    WalkResult& result = run.walk.result;
+    // Long enough by the scenario's duration (checked when it was loaded); a walk that fell in
+    // its first samples is not, and is written without the multibody fields.
+    if (result.trajectory.size() < 3) {
+      recordReplayFailure(result, "the walk is too short to replay (" +
+                                      std::to_string(result.trajectory.size()) +
+                                      " samples, the replay needs 3)");
+      return run;
+    }
+    try {
+      run.replay = replayScenarioWalk(*model, scenario, result.trajectory, scenario.filter);
+    } catch (const std::runtime_error& e) {
+      recordReplayFailure(result, e.what());
+    }
     return run;
   }
   if (scenario.goal.enabled)
