@@ -106,6 +106,11 @@ YAML::Node circle(double x, double y, double radius, double margin) {
 // valid goal scenario (the planner's footprint disc fits at both ends).
 GeneratedWorld randomField(const Parameters& p, int run_seed) {
   const int count = p.integer("count", 1, 10);
+  // Each circle takes up to 1000 draws, and every run of the study holds them all.
+  if (count > kMaxGeneratedObstacles) {
+    p.fail("expected count at most " + std::to_string(kMaxGeneratedObstacles) +
+           " (SCENARIOS.md, \"Limits\"), got " + std::to_string(count));
+  }
   const int seed = p.integer("seed", 0, 0);
   const Eigen::Vector4d area = p.ranges<4>("area", Eigen::Vector4d(1.0, 5.0, -1.5, 1.5),
                                             "[x_min, x_max, y_min, y_max]", true);

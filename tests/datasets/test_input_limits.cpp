@@ -194,6 +194,9 @@ TEST_F(InputFiles, GeneratedWorldsBeyondTheLengthLimitNameTheKey) {
   EXPECT_NE(comparisonError(write("d.yaml", head + "  - {name: w, doorway: {offset: -1e200}}\n"))
                 .find("'worlds[0].doorway.offset'"),
             std::string::npos);
+  EXPECT_NE(comparisonError(write("n.yaml", head + "  - {name: w, random_field: {count: 2147483647}}\n"))
+                .find("expected count at most 10000"),
+            std::string::npos);
 }
 
 TEST_F(InputFiles, NamesTooLongForAFileNameAreRefused) {

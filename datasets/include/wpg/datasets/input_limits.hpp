@@ -19,6 +19,9 @@ constexpr std::size_t kMaxOverridePathSteps = 32;
 // coordinates, and 1e155 m overflows to inf there.
 constexpr double kMaxLength = 1e4;
 
+// Circles of a generated random field (comparison studies).
+constexpr int kMaxGeneratedObstacles = 10000;
+
 // Push forces [N] at most this in magnitude (the paper's largest recovered push is ~500 N): a
 // 1e30 N push drives the inverse kinematics of the replay to non-finite joint angles.
 constexpr double kMaxPushForce = 1e5;
