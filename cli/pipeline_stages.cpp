@@ -134,9 +134,10 @@ ReplayOutcome replayScenarioWalk(const robots::RobotModel& model,
   // The replay is a stage with its own verdict: a motion it could not follow (joint angles or a
   // filtered CoM that are not finite) is a failed replay, never numbers in the dataset.
   const MultibodyValidation& v = outcome.validation;
-  if (!v.q.allFinite() || !v.com_filtered.allFinite()) {
-    throw std::runtime_error("cannot replay the walk: the joint angles or the filtered CoM are "
-                             "not finite");
+  if (!v.q.allFinite() || !v.com_filtered.allFinite() || !v.zmp_multibody.allFinite() ||
+      !v.zmp_multibody_filtered.allFinite()) {
+    throw std::runtime_error("cannot replay the walk: the joint angles, the filtered CoM or the "
+                             "multibody ZMP are not finite");
   }
   outcome.wall_time =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
