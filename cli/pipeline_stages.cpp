@@ -116,6 +116,19 @@ double ReplayOutcome::realTimeFactor() const {
   return analysis::realTimeFactor(walk_duration, wall_time);
 }
 
+namespace {
+
+const char* const kNotFinite =
+    "cannot replay the walk: the joint angles, the filtered CoM or the multibody ZMP are not "
+    "finite";
+
+bool allFinite(const MultibodyValidation& v) {
+  return v.q.allFinite() && v.com_filtered.allFinite() && v.zmp_multibody.allFinite() &&
+         v.zmp_multibody_filtered.allFinite();
+}
+
+}  // namespace
+
 ReplayOutcome replayScenarioWalk(const robots::RobotModel& model,
                                  const datasets::Scenario& scenario, const WalkTrajectory& walk,
                                  bool filter) {
@@ -133,12 +146,7 @@ ReplayOutcome replayScenarioWalk(const robots::RobotModel& model,
   }
   // The replay is a stage with its own verdict: a motion it could not follow (joint angles or a
   // filtered CoM that are not finite) is a failed replay, never numbers in the dataset.
-  const MultibodyValidation& v = outcome.validation;
-  if (!v.q.allFinite() || !v.com_filtered.allFinite() || !v.zmp_multibody.allFinite() ||
-      !v.zmp_multibody_filtered.allFinite()) {
-    throw std::runtime_error("cannot replay the walk: the joint angles, the filtered CoM or the "
-                             "multibody ZMP are not finite");
-  }
+  if (!allFinite(outcome.validation)) throw std::runtime_error(kNotFinite);
   outcome.wall_time =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   outcome.walk_duration = analysis::walkDuration(walk);
@@ -199,14 +207,24 @@ ScenarioRun runScenario(const robots::RobotModel* model, const datasets::Scenari
   run.walk.result = std::move(loop.walk);
   outcome.validation = std::move(loop.validation);
   outcome.walk_duration = analysis::walkDuration(run.walk.result.trajectory);
+  if (!allFinite(outcome.validation)) {
+    recordReplayFailure(run.walk.result, kNotFinite);
+    return run;
+  }
   if (scenario.filter_loop.mode == DynamicFilterMode::kBoth) {
     // The offline pass needs the open-loop walk (the online one's CoM jumps where the WPG was
     // re-initialised): generated again without the loop.
     const WalkResult open_loop = generateWalk(scenario.walking, scenario.request);
-    const ReplayOutcome offline = replayScenarioWalk(*model, scenario, open_loop.trajectory, true);
-    outcome.validation.has_offline_comparison = true;
-    outcome.validation.offline_before = offline.validation.before;
-    outcome.validation.offline_after = offline.validation.after;
+    try {
+      const ReplayOutcome offline =
+          replayScenarioWalk(*model, scenario, open_loop.trajectory, true);
+      outcome.validation.has_offline_comparison = true;
+      outcome.validation.offline_before = offline.validation.before;
+      outcome.validation.offline_after = offline.validation.after;
+    } catch (const std::runtime_error& e) {
+      recordReplayFailure(run.walk.result, std::string("offline pass: ") + e.what());
+      return run;
+    }
   }
   run.replay = std::move(outcome);
   return run;

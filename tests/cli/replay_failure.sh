@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# replay_failure.sh WPG: a walk the multibody replay cannot follow (a CoM height of 1e-300 m:
+# replay_failure.sh WPG: with the filter offline and online, a walk the multibody replay cannot follow (a CoM height of 1e-300 m:
 # the filter's LIPM and the multibody ZMP overflow) fails the run (exit 1) and the dataset is
 # still written, with success = 0, a message naming the replay, no multibody fields and no
 # non-finite number anywhere (issue 13, item 9: before, exit 0 with NaN in
@@ -9,11 +9,14 @@ set -euo pipefail
 source "$(dirname "$0")/common.sh"
 wpg="$1"
 make_workdir
+for mode in offline online; do
+rm -f "$WORKDIR/run.h5"
 status=0
 "$wpg" run walk_forward --filter --no-plot --set duration=2 --set walking.com_height=1e-300 \
+  --set filter_settings.mode=$mode \
   -o "$WORKDIR/run.h5" >"$WORKDIR/stdout" 2>"$WORKDIR/stderr" || status=$?
-echo "stderr: $(cat "$WORKDIR/stderr")"
-[[ $status == 1 ]] || fail "exit status $status, expected 1"
+echo "$mode: stderr: $(cat "$WORKDIR/stderr")"
+[[ $status == 1 ]] || fail "$mode: exit status $status, expected 1"
 [[ -s "$WORKDIR/run.h5" ]] || fail "no dataset written"
 "$PYTHON" - "$WORKDIR/run.h5" <<'PY' || fail "bad dataset"
 import sys
@@ -34,4 +37,5 @@ with h5py.File(sys.argv[1], "r") as f:
     f.visititems(visit)
     assert not bad, f"non-finite numbers in {bad}"
 PY
+done
 echo "ok"
