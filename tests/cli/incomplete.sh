@@ -25,7 +25,13 @@ status=0
   >"$WORKDIR/stdout" 2>"$WORKDIR/stderr" || status=$?
 expect_incomplete "write past the file size limit"
 
-# A walk of 3600 s keeps ~200 MB in memory: 150 MB of address space cannot hold it.
+# A walk of 3600 s keeps ~200 MB in memory: 150 MB of address space cannot hold it. A build
+# that cannot even start in 150 MB (AddressSanitizer reserves terabytes) skips this part.
+if ! (ulimit -v 150000; exec "$wpg" --version) >/dev/null 2>&1; then
+  echo "skipped the out-of-memory case: wpg does not start in 150 MB of address space"
+  echo "ok"
+  exit 0
+fi
 status=0
 (ulimit -v 150000; exec "$wpg" run walk_forward --no-plot --set duration=3600 \
   -o "$WORKDIR/out/run.h5") >"$WORKDIR/stdout" 2>"$WORKDIR/stderr" || status=$?
