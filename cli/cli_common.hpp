@@ -11,6 +11,9 @@ namespace wpg::cli {
 constexpr int kExitSuccess = 0;
 constexpr int kExitRunFailed = 1;  // the walk was generated but some NMPC iteration failed
 constexpr int kExitBadInput = 2;   // bad scenario, option or file: nothing was written
+// Could not complete for want of a resource or an I/O error (out of memory, disk full, a write
+// that failed): nothing was written (the temporary output is removed).
+constexpr int kExitIncomplete = 3;
 
 // A user mistake detected by the CLI itself (bad option value, missing file): exit 2.
 class UsageError : public std::runtime_error {

@@ -1,7 +1,9 @@
 // The `wpg` executable: command-line parsing only (CLI11 is the slowest header of the project
 // to compile, so it stays in this file); the subcommands live in the other cli/*.cpp files.
 #include <algorithm>
+#include <cstdlib>
 #include <exception>
+#include <new>
 #include <thread>
 #include <iostream>
 #include <stdexcept>
@@ -10,6 +12,20 @@
 
 #include "cli_common.hpp"
 #include "wpg/datasets/input_error.hpp"
+
+namespace {
+
+// Exit 3 (could not complete; the temporary output is already removed) without the libraries'
+// exit-time cleanup: after a failed write HDF5 may hold a file it could not close, and its
+// termination handler crashes on it (exit 139 instead of 3).
+[[noreturn]] void leaveIncomplete(const std::string& what) {
+  wpg::cli::printError("could not complete: " + what);
+  std::cout.flush();
+  std::cerr.flush();
+  std::_Exit(wpg::cli::kExitIncomplete);
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   using namespace wpg::cli;
@@ -23,7 +39,8 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.footer(
       "Exit codes: 0 success, 1 the walk failed (dataset still written), 2 bad input (nothing "
-      "written).\nData (robots, scenarios, plot script): " + dataDirectory() +
+      "written), 3 could not complete (out of memory, I/O error; no output file written).\n"
+      "Data (robots, scenarios, plot script): " + dataDirectory() +
       " (set WPG_DATA_DIR to use another).");
 
   RunOptions run;
@@ -248,8 +265,11 @@ int main(int argc, char** argv) {
   } catch (const std::invalid_argument& e) {
     printError(e.what());
     return kExitBadInput;
+  } catch (const std::bad_alloc&) {
+    leaveIncomplete("out of memory");
   } catch (const std::exception& e) {
-    printError(e.what());
-    return kExitRunFailed;
+    // A walk that fails returns kExitRunFailed with its dataset written; an exception that
+    // reaches here stopped the command before its output was complete (I/O error, disk full).
+    leaveIncomplete(e.what());
   }
 }

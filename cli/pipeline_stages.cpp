@@ -116,6 +116,19 @@ double ReplayOutcome::realTimeFactor() const {
   return analysis::realTimeFactor(walk_duration, wall_time);
 }
 
+namespace {
+
+const char* const kNotFinite =
+    "cannot replay the walk: the joint angles, the filtered CoM or the multibody ZMP are not "
+    "finite";
+
+bool allFinite(const MultibodyValidation& v) {
+  return v.q.allFinite() && v.com_filtered.allFinite() && v.zmp_multibody.allFinite() &&
+         v.zmp_multibody_filtered.allFinite();
+}
+
+}  // namespace
+
 ReplayOutcome replayScenarioWalk(const robots::RobotModel& model,
                                  const datasets::Scenario& scenario, const WalkTrajectory& walk,
                                  bool filter) {
@@ -131,11 +144,24 @@ ReplayOutcome replayScenarioWalk(const robots::RobotModel& model,
     // a walk too short to replay (a fall in the first samples) is a failed run, not bad input
     throw std::runtime_error(std::string("cannot replay the walk: ") + e.what());
   }
+  // The replay is a stage with its own verdict: a motion it could not follow (joint angles or a
+  // filtered CoM that are not finite) is a failed replay, never numbers in the dataset.
+  if (!allFinite(outcome.validation)) throw std::runtime_error(kNotFinite);
   outcome.wall_time =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   outcome.walk_duration = analysis::walkDuration(walk);
   return outcome;
 }
+
+namespace {
+
+// A walk the replay cannot follow fails the run; the walk is still written (exit 1).
+void recordReplayFailure(WalkResult& result, const std::string& why) {
+  result.success = false;
+  result.message = result.message.empty() ? why : result.message + "; " + why;
+}
+
+}  // namespace
 
 ScenarioRun runScenario(const robots::RobotModel* model, const datasets::Scenario& scenario) {
   ScenarioRun run;
@@ -143,8 +169,21 @@ ScenarioRun runScenario(const robots::RobotModel* model, const datasets::Scenari
                       scenario.filter_loop.mode != DynamicFilterMode::kOffline;
   if (!online) {
     run.walk = runScenarioWalk(scenario);
-    if (model)
-      run.replay = replayScenarioWalk(*model, scenario, run.walk.result.trajectory, scenario.filter);
+    if (!model) return run;
+    WalkResult& result = run.walk.result;
+    // Long enough by the scenario's duration (checked when it was loaded); a walk that fell in
+    // its first samples is not, and is written without the multibody fields.
+    if (result.trajectory.size() < 3) {
+      recordReplayFailure(result, "the walk is too short to replay (" +
+                                      std::to_string(result.trajectory.size()) +
+                                      " samples, the replay needs 3)");
+      return run;
+    }
+    try {
+      run.replay = replayScenarioWalk(*model, scenario, result.trajectory, scenario.filter);
+    } catch (const std::runtime_error& e) {
+      recordReplayFailure(result, e.what());
+    }
     return run;
   }
   if (scenario.goal.enabled)
@@ -168,14 +207,24 @@ ScenarioRun runScenario(const robots::RobotModel* model, const datasets::Scenari
   run.walk.result = std::move(loop.walk);
   outcome.validation = std::move(loop.validation);
   outcome.walk_duration = analysis::walkDuration(run.walk.result.trajectory);
+  if (!allFinite(outcome.validation)) {
+    recordReplayFailure(run.walk.result, kNotFinite);
+    return run;
+  }
   if (scenario.filter_loop.mode == DynamicFilterMode::kBoth) {
     // The offline pass needs the open-loop walk (the online one's CoM jumps where the WPG was
     // re-initialised): generated again without the loop.
     const WalkResult open_loop = generateWalk(scenario.walking, scenario.request);
-    const ReplayOutcome offline = replayScenarioWalk(*model, scenario, open_loop.trajectory, true);
-    outcome.validation.has_offline_comparison = true;
-    outcome.validation.offline_before = offline.validation.before;
-    outcome.validation.offline_after = offline.validation.after;
+    try {
+      const ReplayOutcome offline =
+          replayScenarioWalk(*model, scenario, open_loop.trajectory, true);
+      outcome.validation.has_offline_comparison = true;
+      outcome.validation.offline_before = offline.validation.before;
+      outcome.validation.offline_after = offline.validation.after;
+    } catch (const std::runtime_error& e) {
+      recordReplayFailure(run.walk.result, std::string("offline pass: ") + e.what());
+      return run;
+    }
   }
   run.replay = std::move(outcome);
   return run;

@@ -26,12 +26,14 @@ namespace {
 
 constexpr const char* kPython = "/usr/bin/python3";
 
+// Messages are one line: line breaks become spaces, and any other control character (user
+// text quoted in a usage error) is escaped.
 std::string oneLine(std::string text) {
   for (char& c : text) {
     if (c == '\n' || c == '\r') c = ' ';
   }
   while (!text.empty() && text.back() == ' ') text.pop_back();
-  return text;
+  return datasets::escapeControlCharacters(text);
 }
 
 }  // namespace

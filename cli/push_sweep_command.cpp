@@ -21,6 +21,7 @@
 #include "ordered_parallel.hpp"
 #include "push_recovery_search.hpp"
 #include "wpg/datasets/input_error.hpp"
+#include "wpg/datasets/input_limits.hpp"
 #include "wpg/datasets/output_file.hpp"
 #include "wpg/datasets/push_sweep_dataset.hpp"
 
@@ -93,8 +94,10 @@ void checkOptions(const PushSweepOptions& options) {
     throw UsageError("--phases: expected a number of phases in [1, 1000], got " + std::to_string(options.phases));
   }
   if (options.threads < 1) throw UsageError("-j: expected a number of worker threads >= 1");
-  if (!std::isfinite(options.max_force) || options.max_force <= 0.0) {
-    throw UsageError("--max-force: expected a force > 0 N");
+  // The scenarios' bound on push forces (SCENARIOS.md, "Limits") holds for the sweep's pushes.
+  if (!std::isfinite(options.max_force) || options.max_force <= 0.0 ||
+      options.max_force > datasets::kMaxPushForce) {
+    throw UsageError("--max-force: expected a force > 0 N and at most 1e5 N");
   }
   if (!std::isfinite(options.tolerance) || options.tolerance <= 0.0 ||
       options.tolerance >= options.max_force) {

@@ -69,7 +69,17 @@ int replayCommand(const ReplayOptions& options) {
   std::error_code ec;
 
   const WalkTrajectory& walk = stored.result.trajectory;
-  const ReplayOutcome replay = replayScenarioWalk(model, scenario, walk, scenario.filter);
+  // A stored walk the replay cannot follow is bad input: there is nothing to write.
+  if (walk.size() < 3) {
+    throw UsageError(options.input + ": the run /runs/" + stored.name + " has " +
+                     std::to_string(walk.size()) + " samples, the replay needs at least 3");
+  }
+  ReplayOutcome replay;
+  try {
+    replay = replayScenarioWalk(model, scenario, walk, scenario.filter);
+  } catch (const std::runtime_error& e) {
+    throw UsageError(options.input + ": " + e.what());
+  }
 
   if (dataset_path.has_parent_path()) {
     fs::create_directories(dataset_path.parent_path(), ec);

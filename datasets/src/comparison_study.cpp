@@ -1,6 +1,7 @@
 // Comparison study files: worlds x variants x seeds expanded into a Study
 // (wpg/datasets/comparison_study.hpp).
 #include "wpg/datasets/comparison_study.hpp"
+#include "wpg/datasets/input_limits.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -95,7 +96,8 @@ WorldSpec readWorld(const YAML::Node& node, std::size_t index, const std::string
       detail::readMap(node, world.key, known,
                       "a world: a map with name, and scenario or a generator", source);
   world.name = detail::readName(detail::entry(entries, "name"), detail::childKey(world.key, "name"),
-                                "a world name (letters, digits, _ - .)", source);
+                                "a world name (at most 32 letters, digits, _ - .)", source,
+                                kMaxStudyNameLength);
   std::vector<std::string> kinds;
   if (detail::present(entries, "scenario")) kinds.push_back("scenario");
   for (const std::string& generator : detail::worldGeneratorNames()) {
@@ -155,7 +157,9 @@ ComparisonStudy loadComparisonStudy(const std::string& path, const BaseResolver&
   const detail::Entries top = detail::readMap(
       root, "", {"name", "base", "seeds", "set", "worlds", "variants"},
       "a comparison study: a map with name, base, seeds, set, worlds and variants", source);
-  study.name = detail::readName(detail::entry(top, "name"), "name", "a study name", source);
+  study.name = detail::readName(detail::entry(top, "name"), "name",
+                                "a study name (at most 32 letters, digits, _ - .)", source,
+                                kMaxStudyNameLength);
   comparison.seeds = readSeeds(detail::entry(top, "seeds"), source);
   const std::vector<std::string> common = overridesOf(detail::entry(top, "set"), "set", source);
 
@@ -202,7 +206,9 @@ ComparisonStudy loadComparisonStudy(const std::string& path, const BaseResolver&
   }
   std::vector<std::vector<std::string>> variant_overrides;
   for (const auto& item : variants_node) {
-    const std::string name = detail::readName(item.first, "variants", "a variant name (letters, digits, _ - .)", source);
+    const std::string name = detail::readName(item.first, "variants",
+                                              "a variant name (at most 32 letters, digits, _ - .)",
+                                              source, kMaxStudyNameLength);
     for (const std::string& known : comparison.variants) {
       if (known == name) source.failWith("variants", "variant '" + name + "' is named twice");
     }

@@ -2,6 +2,7 @@
 #include "goal_sections.hpp"
 
 #include "parameter_fields.hpp"
+#include "wpg/datasets/input_limits.hpp"
 
 #include <cstdint>
 #include <limits>
@@ -15,7 +16,7 @@ GoalRequest readGoalRequest(const YAML::Node& goal_node, const YAML::Node& plann
   const Entries goal = readMap(goal_node, "goal", {"position", "yaw", "tolerance", "yaw_tolerance"},
                                "a map {position: [x, y], yaw, tolerance, yaw_tolerance}", source);
   WalkGoal& g = request.goal;
-  g.position = readVector<2>(entry(goal, "position"), "goal.position",
+  g.position = readLengthVector<2>(entry(goal, "position"), "goal.position",
                              "[x, y] in m, world frame (2 numbers)", source);
   if (present(goal, "yaw")) {
     g.has_yaw = true;
@@ -24,6 +25,8 @@ GoalRequest readGoalRequest(const YAML::Node& goal_node, const YAML::Node& plann
   if (present(goal, "tolerance")) {
     g.tolerance = readPositive(entry(goal, "tolerance"), "goal.tolerance",
                                "a positive distance in m", source);
+    checkMagnitude(g.tolerance, kMaxLength, "m", entry(goal, "tolerance"), "goal.tolerance",
+                   "a positive distance in m", source);
   }
   if (present(goal, "yaw_tolerance")) {
     g.yaw_tolerance = readPositive(entry(goal, "yaw_tolerance"), "goal.yaw_tolerance",
@@ -59,7 +62,7 @@ GoalRequest readGoalRequest(const YAML::Node& goal_node, const YAML::Node& plann
     }
     const auto read = [&](const char* name, double* value, const char* expected) {
       if (present(planner, name)) {
-        *value = readNumber(entry(planner, name), std::string("planner.") + name, expected, source);
+        *value = readLength(entry(planner, name), std::string("planner.") + name, expected, source);
       }
     };
     read("robot_radius", &p.robot_radius, "a radius >= 0 in m (0: from the robot)");
@@ -68,7 +71,7 @@ GoalRequest readGoalRequest(const YAML::Node& goal_node, const YAML::Node& plann
     read("lookahead", &p.lookahead, "a positive distance in m");
     if (present(planner, "bounds")) {
       p.has_bounds = true;
-      p.bounds = readVector<4>(entry(planner, "bounds"), "planner.bounds",
+      p.bounds = readLengthVector<4>(entry(planner, "bounds"), "planner.bounds",
                                "[x_min, x_max, y_min, y_max] in m (4 numbers)", source);
     }
   }

@@ -121,8 +121,8 @@ bool holdsKind(const std::string& path, OutputKind kind, std::uintmax_t size) {
 }
 
 [[noreturn]] void refuse(const std::string& path, OutputKind kind, const std::string& got) {
-  throw InputError("'" + path + "': expected a regular file to write " + outputKindName(kind) +
-                   " to, got " + got + " (nothing written)");
+  throw InputError("'" + escapeControlCharacters(path) + "': expected a regular file to write " +
+                   outputKindName(kind) + " to, got " + got + " (nothing written)");
 }
 
 }  // namespace
@@ -136,10 +136,24 @@ const char* outputKindName(OutputKind kind) {
   return "a file";
 }
 
+namespace {
+constexpr std::size_t kMaxFileNameBytes = 255;   // NAME_MAX of Linux file systems
+constexpr std::size_t kTemporaryNameExtra = 8;   // "." before, ".XXXXXX" after
+}  // namespace
+
 void checkOutputPath(const std::string& path, OutputKind kind,
                      const std::vector<std::string>& inputs) {
   if (path.empty()) refuse(path, kind, "an empty path");
   if (path.back() == '/') refuse(path, kind, "a folder name (it ends with '/')");
+  // The temporary file ".<name>.XXXXXX" (TemporaryOutput) must fit in a file name too: checked
+  // here, before the work, not when the output is written.
+  const std::size_t name_length = fs::path(path).filename().string().size();
+  if (name_length + kTemporaryNameExtra > kMaxFileNameBytes) {
+    refuse(path, kind, "a file name of " + std::to_string(name_length) + " bytes (at most " +
+                           std::to_string(kMaxFileNameBytes - kTemporaryNameExtra) +
+                           ": the temporary file beside it adds " +
+                           std::to_string(kTemporaryNameExtra) + ")");
+  }
   struct stat target {};
   if (::stat(path.c_str(), &target) != 0) {
     if (errno == ENOENT) return;  // a new file (its folder is created when written)

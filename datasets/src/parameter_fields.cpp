@@ -2,6 +2,9 @@
 #include "parameter_fields.hpp"
 
 #include <limits>
+#include <set>
+
+#include "wpg/datasets/input_limits.hpp"
 
 namespace wpg::datasets::detail {
 namespace {
@@ -113,6 +116,20 @@ std::vector<std::string> walkingFieldNames() {
   return names;
 }
 
+namespace {
+
+// The walking parameters that are lengths [m]: bounded by kMaxLength (input_limits.hpp).
+bool isLengthField(const std::string& name) {
+  static const std::set<std::string> names = {
+      "com_height",     "foot_length",           "foot_width",           "ankle_height",
+      "cop_margin_x",   "cop_margin_y",          "initial_foot_separation",
+      "stop_foot_separation", "obstacle_foot_radius", "feasibility_x", "feasibility_y",
+      "step_height"};
+  return names.count(name) > 0;
+}
+
+}  // namespace
+
 void readWalkingFields(const Entries& entries, const std::string& prefix, bool require_all,
                        const Source& source, WalkingParameters* parameters) {
   for (const WalkingField& field : walkingFields()) {
@@ -123,7 +140,9 @@ void readWalkingFields(const Entries& entries, const std::string& prefix, bool r
       continue;
     }
     if (field.number) {
-      parameters->*field.number = readNumber(node, key, "a number", source);
+      parameters->*field.number = isLengthField(field.name)
+                                      ? readLength(node, key, "a length in m", source)
+                                      : readNumber(node, key, "a number", source);
     } else if (field.integer) {
       parameters->*field.integer =
           readInteger(node, key, std::numeric_limits<int>::min(), "an integer", source);
@@ -132,7 +151,7 @@ void readWalkingFields(const Entries& entries, const std::string& prefix, bool r
         source.fail(key, field.choice->expected, node);
     } else {
       const Eigen::Matrix<double, 5, 1> values =
-          readVector<5>(node, key, "a list of 5 numbers [m]", source);
+          readLengthVector<5>(node, key, "a list of 5 numbers [m]", source);
       for (int i = 0; i < 5; ++i) (parameters->*field.polygon)[i] = values[i];
     }
   }
@@ -166,10 +185,11 @@ const std::vector<SettingField<GeneratorSettings>>& generatorSettingFields() {
                      "an integer in [1, 100000]", 100000),
       positiveSetting("slack_weight", &G::slack_weight, "a positive number"),
       positiveSetting("fall_capture_distance", &G::fall_capture_distance,
-                      "a positive distance in m"),
+                      "a positive distance of at most 1e4 m", kMaxLength),
       integerSetting("max_obstacles_in_qp", &G::max_obstacles_in_qp, 0,
                      "an integer in [0, 32] (obstacles in the QP at each sample)", 32),
-      positiveSetting("obstacle_reach", &G::obstacle_reach, "a positive distance in m"),
+      positiveSetting("obstacle_reach", &G::obstacle_reach, "a positive distance of at most 1e4 m",
+                      kMaxLength),
   };
   return fields;
 }

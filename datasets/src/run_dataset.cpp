@@ -497,15 +497,32 @@ void writeMultibody(H5::Group& run, const Scenario& scenario, const MultibodyVal
 void writeFile(const std::string& file_path, const Scenario& scenario, const WalkResult& result,
                const FootstepClearances* clearances, const MultibodyValidation* multibody,
                const GoalOutcome* goal) {
-  H5::H5File file(file_path, H5F_ACC_TRUNC);
+  // Closing the file closes every object still open and flushes them (a strong close): a write
+  // that fails there (disk full) is an error of file.close(), not a message of a destructor
+  // that the commit would never hear of.
+  H5::FileAccPropList access;
+  access.setFcloseDegree(H5F_CLOSE_STRONG);
+  auto owned = std::make_unique<H5::H5File>(file_path, H5F_ACC_TRUNC,
+                                            H5::FileCreatPropList::DEFAULT, access);
+  H5::H5File& file = *owned;
   writeIntAttribute(file, "schema_version", kRunDatasetSchemaVersion);
   writeStringAttribute(file, "wpg_version", WPG_VERSION_STRING);
   writeStringAttribute(file, "scenario", scenario.resolved_yaml);
   writeStringAttribute(file, "created_by", "wpg");  // wpg run, wpg replay or a program of yours
 
-  H5::Group runs = file.createGroup("runs");
-  writeRunGroup(runs, scenario.name, scenario, result, clearances, multibody, goal);
-  file.close();  // inside the try of the caller: a failed flush is an error, not a warning
+  {
+    H5::Group runs = file.createGroup("runs");
+    writeRunGroup(runs, scenario.name, scenario, result, clearances, multibody, goal);
+  }
+  try {
+    file.close();  // inside the try of the caller: a failed flush is an error, not a warning
+  } catch (const H5::Exception&) {
+    // HDF5 1.10 crashes when a file whose close failed is closed again (as ~H5File would):
+    // the handle is let go. The temporary file is removed by the caller; the CLI exits without
+    // HDF5's termination (exit code 3, cli/main.cpp).
+    static_cast<void>(owned.release());
+    throw;
+  }
 }
 
 }  // namespace

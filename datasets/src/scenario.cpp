@@ -9,6 +9,7 @@
 //   resolved_scenario   the emitter of the resolved YAML
 #include "wpg/datasets/scenario.hpp"
 
+#include <cmath>
 #include <filesystem>
 #include <stdexcept>
 
@@ -20,6 +21,7 @@
 #include "scenario_overrides.hpp"
 #include "scenario_sections.hpp"
 #include "yaml_input.hpp"
+#include "wpg/walk_generator.hpp"
 
 namespace wpg::datasets {
 namespace {
@@ -93,7 +95,8 @@ Scenario loadScenarioTree(YAML::Node root, const std::string& path,
     const Entries entries = readMap(root, "", topLevelKeys(), "a map of scenario keys", source);
 
     scenario.name = readName(entry(entries, "name"), "name",
-                             "a name of letters, digits, '_', '-', '.' (the HDF5 group name)",
+                             "a name of at most 128 letters, digits, '_', '-', '.' (the HDF5 group "
+                             "and default file name)",
                              source);
     if (readName(entry(entries, "robot"), "robot", robot_expected, source) != scenario.robot) {
       throw std::logic_error("loadScenario: the robot changed while merging");
@@ -164,6 +167,24 @@ Scenario loadScenarioTree(YAML::Node root, const std::string& path,
     scenario.goal.validate();
   } catch (const std::invalid_argument& error) {
     source.failFile(error.what());
+  }
+  // Bounded work and a walk of at least one NMPC iteration (libwpg's limits), checked here so
+  // that every command (run, batch, compare, replay) refuses it before anything runs.
+  try {
+    checkWalkSize(scenario.walking, scenario.request);
+  } catch (const std::invalid_argument& error) {
+    source.failFile(error.what());
+  }
+  if (scenario.replay) {
+    // The multibody replay differentiates the motion: it needs 3 samples (2 control periods).
+    const double T = scenario.walking.sampling_period;
+    const long periods = std::lround(scenario.request.duration / T) *
+                         std::lround(T / scenario.walking.control_period);
+    if (periods < 2) {
+      source.failWith("duration", "expected a walk of at least 2 control periods for the "
+                                  "multibody replay (replay or filter is on), got " +
+                                      std::to_string(periods));
+    }
   }
 
   scenario.resolved_yaml = emitResolved(scenario);

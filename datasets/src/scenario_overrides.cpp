@@ -6,26 +6,43 @@
 #include <cctype>
 #include <charconv>
 
+#include <yaml-cpp/depthguard.h>
+
+#include "wpg/datasets/input_limits.hpp"
+
 namespace wpg::datasets::detail {
 namespace {
 
 std::vector<PathStep> parseOverrideKey(const std::string& key, const std::string& text,
                                        const Source& source) {
+  // A key of thousands of names is shown by its start: the message stays one short line.
+  const auto start_of = [](const std::string& long_text) {
+    constexpr std::size_t kShown = 100;
+    return long_text.size() <= kShown ? long_text : long_text.substr(0, kShown) + "...";
+  };
   auto bad = [&](const std::string& why) -> void {
-    source.failFile("--set '" + text + "': expected key=value with a dotted key such as " +
-                    "'generator.sqp_iterations' or 'reference[1].v', got key '" + key + "' (" +
-                    why + ")");
+    source.failFile("--set '" + start_of(text) + "': expected key=value with a dotted key such " +
+                    "as 'generator.sqp_iterations' or 'reference[1].v', got key '" +
+                    start_of(key) + "' (" + why + ")");
   };
   std::vector<PathStep> path;
   std::size_t i = 0;
   const auto is_name_char = [](char c) {
     return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-';
   };
+  // Bounded before the path is walked (assignPath recurses, and names each step's container).
+  const auto add = [&](PathStep step) {
+    if (path.size() == kMaxOverridePathSteps) {
+      bad("expected at most " + std::to_string(kMaxOverridePathSteps) +
+          " names and indices; SCENARIOS.md, \"Limits\"");
+    }
+    path.push_back(std::move(step));
+  };
   while (true) {
     const std::size_t start = i;
     while (i < key.size() && is_name_char(key[i])) ++i;
     if (i == start) bad("a name is empty or has a character other than letters, digits, _ and -");
-    path.push_back({key.substr(start, i - start), 0});
+    add({key.substr(start, i - start), 0});
     while (i < key.size() && key[i] == '[') {
       const std::size_t close = key.find(']', i);
       if (close == std::string::npos) bad("'[' without ']'");
@@ -35,7 +52,7 @@ std::vector<PathStep> parseOverrideKey(const std::string& key, const std::string
       if (digits.empty() || result.ec != std::errc() || result.ptr != digits.data() + digits.size()) {
         bad("a list index must be a non-negative integer");
       }
-      path.push_back({"", index});
+      add({"", index});
       i = close + 1;
     }
     if (i == key.size()) break;
@@ -107,12 +124,24 @@ ParsedOverride parseOverride(const std::string& text, Source* source) {
   ParsedOverride parsed;
   parsed.text = text;
   parsed.path = parseOverrideKey(key, text, *source);
+  std::vector<YAML::Node> documents;
   try {
-    parsed.value = YAML::Load(value_text);
+    documents = YAML::LoadAll(value_text);
+  } catch (const YAML::DeepRecursion&) {
+    source->failFile("--set '" + text + "': key '" + key +
+                     "': expected a YAML value with lists and maps nested less deeply (the YAML "
+                     "reader stops past a few hundred levels)");
   } catch (const YAML::Exception& error) {
     source->failFile("--set '" + text + "': key '" + key +
                      "': expected a YAML value, got a syntax error: " + error.msg);
   }
+  // A second document ('1\n---\n2') would otherwise be dropped without a word.
+  if (documents.size() > 1) {
+    source->failFile("--set '" + text + "': key '" + key +
+                     "': expected one YAML value, got " + std::to_string(documents.size()) +
+                     " documents (separated by '---')");
+  }
+  parsed.value = documents.empty() ? YAML::Node(YAML::NodeType::Null) : documents.front();
   // From now on, messages about this key say that the value came from --set.
   source->addOverride({pathText(parsed.path, parsed.path.size()), text});
   return parsed;

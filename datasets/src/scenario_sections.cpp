@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "parameter_fields.hpp"
+#include "wpg/datasets/input_limits.hpp"
 
 namespace wpg::datasets::detail {
 namespace {
@@ -78,16 +79,19 @@ Obstacle readObstacle(const YAML::Node& item, const std::string& key, const Sour
   }
   const Entries entries = readMap(item, key, keys, map_expected, source);
   if (obstacle.type == ObstacleType::kCircle || obstacle.type == ObstacleType::kBox) {
-    obstacle.center = readVector<2>(entry(entries, "center"), key + ".center",
+    obstacle.center = readLengthVector<2>(entry(entries, "center"), key + ".center",
                                     "[x, y] in m, world frame (2 numbers)", source);
   }
   if (obstacle.type == ObstacleType::kCircle) {
     obstacle.radius =
         readPositive(entry(entries, "radius"), key + ".radius", "a positive radius in m", source);
+    checkMagnitude(obstacle.radius, kMaxLength, "m", entry(entries, "radius"), key + ".radius",
+                   "a positive radius in m", source);
   }
   if (obstacle.type == ObstacleType::kBox) {
     const std::string size_expected = "[length along its x, width] in m (2 positive numbers)";
-    obstacle.size = readVector<2>(entry(entries, "size"), key + ".size", size_expected, source);
+    obstacle.size =
+        readLengthVector<2>(entry(entries, "size"), key + ".size", size_expected, source);
     if (!(obstacle.size.minCoeff() > 0.0))
       source.fail(key + ".size", size_expected, entry(entries, "size"));
     if (present(entries, "yaw")) {
@@ -102,13 +106,15 @@ Obstacle readObstacle(const YAML::Node& item, const std::string& key, const Sour
       source.fail(key + ".vertices", vertices_expected, vertices);
     }
     for (std::size_t v = 0; v < vertices.size(); ++v) {
-      obstacle.vertices.push_back(readVector<2>(vertices[v], indexKey(key + ".vertices", v),
+      obstacle.vertices.push_back(readLengthVector<2>(vertices[v], indexKey(key + ".vertices", v),
                                                 "[x, y] in m (2 numbers)", source));
     }
   }
   if (present(entries, "margin")) {
     obstacle.margin = readNumberAtLeast(entry(entries, "margin"), key + ".margin", 0.0,
                                         "a distance >= 0 in m", source);
+    checkMagnitude(obstacle.margin, kMaxLength, "m", entry(entries, "margin"), key + ".margin",
+                   "a distance >= 0 in m", source);
   }
   // Goal walks (issue 10): an obstacle the route planner learns of only once sensed; the NMPC
   // avoids it either way.
@@ -209,6 +215,10 @@ std::vector<Push> readPushes(const YAML::Node& node, const Source& source) {
                                source);
     push.force = readVector<2>(entry(entries, "force"), key + ".force",
                                "[fx, fy] in N, world frame (2 numbers)", source);
+    for (std::size_t i = 0; i < 2; ++i) {
+      checkMagnitude(push.force[static_cast<int>(i)], kMaxPushForce, "N",
+                     entry(entries, "force")[i], indexKey(key + ".force", i), "a force", source);
+    }
     if (present(entries, "duration")) {
       push.duration = readPositive(entry(entries, "duration"), key + ".duration",
                                    "a positive duration in seconds", source);

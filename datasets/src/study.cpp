@@ -1,5 +1,6 @@
 // Study files: parsing, sweep expansion and the runs' scenarios (wpg/datasets/study.hpp).
 #include "wpg/datasets/study.hpp"
+#include "wpg/datasets/input_limits.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -189,7 +190,9 @@ Study loadStudy(const std::string& path, const BaseResolver& resolve_base,
   study.text = detail::readTextFile(path, "study file");
   const detail::Entries top = detail::readMap(root, "", {"name", "base", "sweep"},
                                               "a study: a map with name, base and sweep", source);
-  study.name = detail::readName(detail::entry(top, "name"), "name", "a study name", source);
+  study.name = detail::readName(detail::entry(top, "name"), "name",
+                                "a study name (at most 32 letters, digits, _ - .)", source,
+                                kMaxStudyNameLength);
 
   // The base scenario's text and where it came from.
   const YAML::Node base = detail::entry(top, "base");

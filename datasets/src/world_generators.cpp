@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <map>
 
+#include "wpg/datasets/input_limits.hpp"
 #include "wpg/datasets/study.hpp"
 
 namespace wpg::datasets::detail {
@@ -24,16 +25,21 @@ class Parameters {
 
   double positive(const std::string& name, double fallback) const {
     if (!given(name)) return fallback;
-    return readPositive(entry(entries_, name), key(name), "a positive number", source_);
+    const double value =
+        readPositive(entry(entries_, name), key(name), "a positive number", source_);
+    checkLength(name, value);
+    return value;
   }
   double atLeast(const std::string& name, double minimum, double fallback) const {
     if (!given(name)) return fallback;
-    return readNumberAtLeast(entry(entries_, name), key(name), minimum,
-                             "a number >= " + formatNumber(minimum), source_);
+    const double value = readNumberAtLeast(entry(entries_, name), key(name), minimum,
+                                           "a number >= " + formatNumber(minimum), source_);
+    checkLength(name, value);
+    return value;
   }
   double number(const std::string& name, double fallback) const {
     if (!given(name)) return fallback;
-    return readNumber(entry(entries_, name), key(name), "a number", source_);
+    return readLength(entry(entries_, name), key(name), "a number", source_);
   }
   int integer(const std::string& name, int minimum, int fallback) const {
     if (!given(name)) return fallback;
@@ -46,7 +52,7 @@ class Parameters {
                                         const Eigen::Matrix<double, Size, 1>& fallback,
                                         const std::string& expected, bool strict) const {
     if (!given(name)) return fallback;
-    const auto value = readVector<Size>(entry(entries_, name), key(name), expected, source_);
+    const auto value = readLengthVector<Size>(entry(entries_, name), key(name), expected, source_);
     for (int i = 0; i + 1 < Size; i += 2) {
       if (strict ? !(value[i] < value[i + 1]) : !(value[i] <= value[i + 1])) {
         source_.failWith(key(name), "expected " + expected + (strict ? " with each low < high"
@@ -58,6 +64,11 @@ class Parameters {
   [[noreturn]] void fail(const std::string& message) const { source_.failWith(key_, message); }
 
  private:
+  // Every real parameter of a generator is a length or a position [m] (input_limits.hpp).
+  void checkLength(const std::string& name, double value) const {
+    checkMagnitude(value, kMaxLength, "m", entry(entries_, name), key(name), "a length", source_);
+  }
+
   Entries entries_;
   std::string key_;
   const Source& source_;
@@ -95,6 +106,11 @@ YAML::Node circle(double x, double y, double radius, double margin) {
 // valid goal scenario (the planner's footprint disc fits at both ends).
 GeneratedWorld randomField(const Parameters& p, int run_seed) {
   const int count = p.integer("count", 1, 10);
+  // Each circle takes up to 1000 draws, and every run of the study holds them all.
+  if (count > kMaxGeneratedObstacles) {
+    p.fail("expected count at most " + std::to_string(kMaxGeneratedObstacles) +
+           " (SCENARIOS.md, \"Limits\"), got " + std::to_string(count));
+  }
   const int seed = p.integer("seed", 0, 0);
   const Eigen::Vector4d area = p.ranges<4>("area", Eigen::Vector4d(1.0, 5.0, -1.5, 1.5),
                                             "[x_min, x_max, y_min, y_max]", true);

@@ -4,6 +4,10 @@
 // batch).
 #include "yaml_input.hpp"
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <array>
 #include <cerrno>
 #include <charconv>
@@ -14,6 +18,10 @@
 #include <set>
 #include <sstream>
 #include <utility>
+
+#include <yaml-cpp/depthguard.h>
+
+#include "wpg/datasets/input_limits.hpp"
 
 namespace wpg::datasets::detail {
 namespace {
@@ -47,12 +55,7 @@ bool isNonFiniteSpelling(const std::string& text) {
 // Text
 // ------------------------------------------------------------------------------------------
 
-std::string oneLine(std::string text) {
-  for (char& c : text) {
-    if (c == '\n' || c == '\r' || c == '\t') c = ' ';
-  }
-  return text;
-}
+std::string oneLine(std::string text) { return escapeControlCharacters(text); }
 
 std::string joinNames(const std::vector<std::string>& names) {
   std::string joined;
@@ -195,11 +198,31 @@ bool readBoolean(const YAML::Node& node, const std::string& key, const std::stri
   source.fail(key, expected, node);
 }
 
+void checkMagnitude(double value, double limit, const char* unit, const YAML::Node& got,
+                    const std::string& key, const std::string& expected, const Source& source) {
+  if (std::abs(value) <= limit) return;
+  source.failWith(key, "expected " + expected + " of magnitude at most " + formatNumber(limit) +
+                           " " + unit + " (SCENARIOS.md, \"Limits\"), got " + describe(got));
+}
+
+double readLength(const YAML::Node& node, const std::string& key, const std::string& expected,
+                  const Source& source) {
+  const double value = readNumber(node, key, expected, source);
+  checkMagnitude(value, kMaxLength, "m", node, key, expected, source);
+  return value;
+}
+
+void checkLengthEntry(double value, const YAML::Node& got, const std::string& key,
+                      const Source& source) {
+  checkMagnitude(value, kMaxLength, "m", got, key, "a length or coordinate", source);
+}
+
 std::string readName(const YAML::Node& node, const std::string& key, const std::string& expected,
-                     const Source& source) {
+                     const Source& source, std::size_t max_length) {
   if (!node.IsDefined() || !node.IsScalar()) source.fail(key, expected, node);
   const std::string& text = node.Scalar();
-  const bool plain = !text.empty() && text != "." && text != ".." &&
+  const bool plain = !text.empty() && text.size() <= max_length && text != "." &&
+                     text != ".." &&
                      text.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
                                             "0123456789_-.") == std::string::npos;
   if (!plain) source.fail(key, expected, node);
@@ -255,6 +278,10 @@ YAML::Node parseYamlText(const std::string& text, const std::string& origin) {
   std::vector<YAML::Node> documents;
   try {
     documents = YAML::LoadAll(text);
+  } catch (const YAML::DeepRecursion& error) {
+    throw InputError(oneLine(origin + ": line " + std::to_string(error.mark.line + 1) +
+                             ": expected lists and maps nested less deeply (the YAML reader "
+                             "stops past a few hundred levels; SCENARIOS.md, \"Limits\")"));
   } catch (const YAML::Exception& error) {
     std::string where;
     if (!error.mark.is_null()) {
@@ -264,7 +291,7 @@ YAML::Node parseYamlText(const std::string& text, const std::string& origin) {
     throw InputError(oneLine(origin + ": " + where + "YAML syntax error: " + error.msg));
   }
   if (documents.size() > 1) {
-    throw InputError(origin + ": expected one YAML document, got " +
+    throw InputError(oneLine(origin) + ": expected one YAML document, got " +
                      std::to_string(documents.size()) + " (separated by '---')");
   }
   if (documents.empty()) return YAML::Node(YAML::NodeType::Null);
@@ -272,21 +299,44 @@ YAML::Node parseYamlText(const std::string& text, const std::string& origin) {
 }
 
 std::string readTextFile(const std::string& path, const std::string& what) {
-  std::error_code ec;
-  if (fs::is_directory(path, ec)) {
-    throw InputError(path + ": cannot read the " + what + ": it is a directory");
+  const std::string shown = oneLine(path);
+  const auto cannot = [&](const std::string& why) {
+    return InputError(shown + ": cannot read the " + what + ": " + why);
+  };
+  // Opened without blocking (a FIFO without a writer would wait forever), then checked on
+  // the open descriptor: only a regular file of bounded size is read, and never past the cap
+  // (a file that grows while read, or /proc files that report size 0).
+  const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+  if (fd < 0) throw cannot(std::strerror(errno));
+  struct Closer {
+    int fd;
+    ~Closer() { ::close(fd); }
+  } closer{fd};
+  struct stat info {};
+  if (::fstat(fd, &info) != 0) throw cannot(std::strerror(errno));
+  if (S_ISDIR(info.st_mode)) throw cannot("it is a directory");
+  const std::string too_large = "expected a file of at most " +
+                                std::to_string(kMaxInputFileBytes >> 20) +
+                                " MiB (SCENARIOS.md, \"Limits\")";
+  if (!S_ISREG(info.st_mode)) {
+    throw cannot("expected a regular file, got a device, FIFO or socket");
   }
-  errno = 0;
-  std::ifstream stream(path, std::ios::binary);
-  if (!stream) {
-    const int error = errno;
-    throw InputError(path + ": cannot read the " + what + ": " +
-                     (error != 0 ? std::strerror(error) : "cannot open the file"));
+  if (static_cast<unsigned long long>(info.st_size) > kMaxInputFileBytes) {
+    throw cannot(too_large + ", got " + std::to_string(info.st_size) + " bytes");
   }
-  std::ostringstream text;
-  text << stream.rdbuf();
-  if (stream.bad()) throw InputError(path + ": cannot read the " + what + ": read error");
-  return text.str();
+  std::string text;
+  std::array<char, 65536> buffer{};
+  while (true) {
+    const ssize_t count = ::read(fd, buffer.data(), buffer.size());
+    if (count < 0) {
+      if (errno == EINTR) continue;
+      throw cannot(std::strerror(errno));
+    }
+    if (count == 0) break;
+    text.append(buffer.data(), static_cast<std::size_t>(count));
+    if (text.size() > kMaxInputFileBytes) throw cannot(too_large);
+  }
+  return text;
 }
 
 YAML::Node readYamlFile(const std::string& path, const std::string& what) {

@@ -12,6 +12,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "wpg/datasets/input_error.hpp"
+#include "wpg/datasets/input_limits.hpp"
 
 namespace wpg::datasets::detail {
 
@@ -74,9 +75,21 @@ int readInteger(const YAML::Node& node, const std::string& key, int minimum,
 // accepted: they read as strings in other YAML readers.
 bool readBoolean(const YAML::Node& node, const std::string& key, const std::string& expected,
                  const Source& source);
-// Names become folder names (robot) and HDF5 group names (scenario): kept plain.
+// A length or a position [m]: a finite number of magnitude at most kMaxLength
+// (input_limits.hpp), so that squares and sums of coordinates stay finite.
+double readLength(const YAML::Node& node, const std::string& key, const std::string& expected,
+                  const Source& source);
+// Fails on `key` unless |value| <= limit; `unit` says in what (e.g. "m"). `got` is the node read.
+void checkMagnitude(double value, double limit, const char* unit, const YAML::Node& got,
+                    const std::string& key, const std::string& expected, const Source& source);
+// Names become folder names (robot) and HDF5 group names (scenario): kept plain, and at most
+// kMaxNameLength characters.
 std::string readName(const YAML::Node& node, const std::string& key, const std::string& expected,
-                     const Source& source);
+                     const Source& source, std::size_t max_length = kMaxNameLength);
+
+// Fails on `key` unless |value| <= kMaxLength (an entry of a vector of lengths).
+void checkLengthEntry(double value, const YAML::Node& got, const std::string& key,
+                      const Source& source);
 
 template <int Size>
 Eigen::Matrix<double, Size, 1> readVector(const YAML::Node& node, const std::string& key,
@@ -87,6 +100,19 @@ Eigen::Matrix<double, Size, 1> readVector(const YAML::Node& node, const std::str
   Eigen::Matrix<double, Size, 1> vector;
   for (int i = 0; i < Size; ++i) {
     vector[i] = readNumber(node[static_cast<std::size_t>(i)], indexKey(key, i), "a number", source);
+  }
+  return vector;
+}
+
+// A vector of lengths or positions [m], each checked as readLength.
+template <int Size>
+Eigen::Matrix<double, Size, 1> readLengthVector(const YAML::Node& node, const std::string& key,
+                                                const std::string& expected,
+                                                const Source& source) {
+  const Eigen::Matrix<double, Size, 1> vector = readVector<Size>(node, key, expected, source);
+  for (int i = 0; i < Size; ++i) {
+    const std::size_t index = static_cast<std::size_t>(i);
+    checkLengthEntry(vector[i], node[index], indexKey(key, index), source);
   }
   return vector;
 }

@@ -35,6 +35,14 @@ void requireFeetClear(const OnlineWalkingGenerator& generator, const WalkRequest
 void checkWalkSize(const WalkingParameters& parameters, const WalkRequest& request) {
   // Both validated: duration <= kMaxWalkDuration, control_period >= 1e-6 s; the quotient is
   // compared as a double, before any conversion to an integer.
+  // The walk has lround(duration / T) NMPC iterations: none below half a sampling period, and
+  // a walk of one sample is no walk (nothing to replay, plot or check).
+  if (!(request.duration >= 0.5 * parameters.sampling_period)) {
+    throw std::invalid_argument(
+        "'duration': expected at least half a sampling period (" +
+        std::to_string(0.5 * parameters.sampling_period) +
+        " s: one NMPC iteration), got " + std::to_string(request.duration));
+  }
   const double periods = request.duration / parameters.control_period;
   if (!(periods <= kMaxControlPeriods)) {
     throw std::invalid_argument(

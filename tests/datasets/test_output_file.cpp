@@ -50,6 +50,16 @@ TEST_F(OutputFile, RefusesWhatIsNotARegularFileOfItsKind) {
   EXPECT_THROW(checkOutputPath(folder_, OutputKind::kHdf5), InputError);
   EXPECT_THROW(checkOutputPath(folder_ + "/sub/", OutputKind::kHdf5), InputError);
   EXPECT_THROW(checkOutputPath("/dev/null", OutputKind::kHdf5), InputError);
+  // A name whose temporary file (".<name>.XXXXXX") would not fit in 255 bytes: refused before
+  // the work, not when the output is written (issue 13, item 9).
+  EXPECT_NO_THROW(checkOutputPath(folder_ + "/" + std::string(244, 'n') + ".h5", OutputKind::kHdf5));
+  try {
+    checkOutputPath(folder_ + "/" + std::string(245, 'n') + ".h5", OutputKind::kHdf5);
+    ADD_FAILURE() << "a 248-byte file name was accepted";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("a file name of 248 bytes"), std::string::npos)
+        << error.what();
+  }
   const std::string hdf5 = file("a.h5", std::string("\x89HDF\r\n\x1a\n", 8) + "rest");
   const std::string png = file("a.png", std::string("\x89PNG\r\n\x1a\n", 8) + "rest");
   const std::string json = file("a.json", "  \n{\"x\": 1}");

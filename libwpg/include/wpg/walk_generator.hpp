@@ -49,7 +49,8 @@ WalkResult generateWalk(const WalkingParameters& parameters, const WalkRequest& 
 // At most this many control periods in one walk: ~0.3 kB each in memory, 3600 s at 5 ms.
 constexpr double kMaxControlPeriods = 720000.0;
 // Throws std::invalid_argument naming 'duration' when the walk would record more control
-// periods than kMaxControlPeriods (generateWalk calls it; so may other loops, before any work).
+// periods than kMaxControlPeriods, or no NMPC iteration (duration below half a sampling
+// period) (generateWalk calls it; so may other loops, before any work).
 void checkWalkSize(const WalkingParameters& parameters, const WalkRequest& request);
 
 // The pieces of generateWalk that other loops over OnlineWalkingGenerator share (the walk to a

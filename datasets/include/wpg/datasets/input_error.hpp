@@ -14,4 +14,10 @@ class InputError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// `text` with each control character (bytes below 0x20, and 0x7f) written as a C escape
+// (\n, \t, \x1b): user text echoed in a message (keys, values, file names) can then neither
+// split the message's line nor drive the terminal. Backslashes are kept, so escaping twice
+// changes nothing. Used wherever an InputError or a CLI usage error quotes user text.
+std::string escapeControlCharacters(const std::string& text);
+
 }  // namespace wpg::datasets
