@@ -108,6 +108,26 @@ int main(int argc, char** argv) {
                       "started)");
   bool batch_no_plot = false;
   batch_app->add_flag("--no-plot", batch_no_plot, "Do not draw the summary figure");
+  batch_app->add_option("--shard", batch.shard,
+                        "Run only slice K of N (runs i with i mod N = K, 0 <= K < N) into OUT.h5, "
+                        "a shard file; join the shards with `wpg merge` (README, \"Running on a "
+                        "cluster\")")
+      ->type_name("K/N");
+
+  MergeOptions merge;
+  CLI::App* merge_app = app.add_subcommand(
+      "merge",
+      "Join the shard files of a study (`wpg batch --shard K/N`, or the OUT.shards/ folder of an "
+      "MPI batch) into OUT.h5, a batch file whose runs link into the shards (relative HDF5 "
+      "external links), with OUT.summary.csv/.md/.png. Exit 0, 1 some walk failed, 2 bad input "
+      "(a run in no shard, shards of another study: nothing written).");
+  merge_app->add_option("output", merge.output, "Index file to write")->required()->type_name("OUT.h5");
+  merge_app->add_option("shards", merge.shards, "Shard files, or a folder of them")
+      ->required()
+      ->type_name("SHARD...");
+  merge_app->add_flag("--copy", merge.copy, "Copy the runs into OUT.h5 (one self-contained file) instead of linking them");
+  bool merge_no_plot = false;
+  merge_app->add_flag("--no-plot", merge_no_plot, "Do not draw the summary figure");
 
   CompareOptions compare;
   compare.threads = std::max(1u, std::thread::hardware_concurrency());
@@ -226,11 +246,17 @@ int main(int argc, char** argv) {
     if (bench_app->parsed()) return benchCommand(bench);
     if (compare_app->parsed()) {
       compare.plot = !compare_no_plot;
+      compare.threads_given = compare_app->count("--jobs") > 0;
       return compareCommand(compare);
     }
     if (batch_app->parsed()) {
       batch.plot = !batch_no_plot;
+      batch.threads_given = batch_app->count("--jobs") > 0;
       return batchCommand(batch);
+    }
+    if (merge_app->parsed()) {
+      merge.plot = !merge_no_plot;
+      return mergeCommand(merge);
     }
     if (analyze_app->parsed()) return analyzeCommand(analyze);
     if (diff_app->parsed()) return diffCommand(diff);

@@ -116,11 +116,13 @@ std::vector<Eigen::Matrix<double, Size, 1>> rowsOf(const std::vector<double>& va
   return rows;
 }
 
-// The groups under /runs.
+// The groups under /runs, external links to them included (the index of a sharded batch,
+// batch_index.hpp: childObjType follows the link, getObjTypeByIdx does not).
 std::vector<std::string> runGroupNames(const H5::Group& runs) {
   std::vector<std::string> names;
   for (hsize_t i = 0; i < runs.getNumObjs(); ++i) {
-    if (runs.getObjTypeByIdx(i) == H5G_GROUP) names.push_back(runs.getObjnameByIdx(i));
+    const std::string name = runs.getObjnameByIdx(i);
+    if (runs.childObjType(name) == H5O_TYPE_GROUP) names.push_back(name);
   }
   return names;
 }
