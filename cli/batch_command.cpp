@@ -6,6 +6,7 @@
 // launcher the ranks share the study (distributed_study.hpp) and OUT.h5 is the index.
 #include <filesystem>
 #include <iostream>
+#include <optional>
 #include <set>
 #include <system_error>
 #include <thread>
@@ -109,8 +110,7 @@ int batchCommand(const BatchOptions& options) {
   if (options.output.empty()) throw UsageError("-o: expected the batch file to write (OUT.h5)");
   const bool sharded = !options.shard.empty();
   const std::pair<int, int> slice = sharded ? parseShard(options.shard) : std::pair<int, int>{0, 1};
-  const bool distributed = mpi::launched();
-  if (sharded && distributed) {
+  if (sharded && mpi::launched()) {
     throw UsageError("--shard: a slice runs without MPI (one task of a job array); under an MPI "
                      "launcher the ranks share the study among themselves");
   }
@@ -119,22 +119,24 @@ int batchCommand(const BatchOptions& options) {
     throw UsageError(options.study + ": cannot read the study file: no such file");
   }
   // Everything about the input is checked before anything is written.
-  const datasets::Study study = datasets::loadStudy(
-      options.study, [](const std::string& base) { return resolveScenarioPath(base); },
-      robotsDirectory(), options.threads);
-  checkOutputFolder(output, options.study);
-  std::set<std::string> replayed_robots;
-  for (const datasets::StudyRun& run : study.runs) {
-    if (run.scenario.replay) replayed_robots.insert(run.scenario.robot);
-  }
-  for (const std::string& robot : replayed_robots) (void)loadRobotModel(robot);
+  datasets::Study study;
+  const std::optional<mpi::World> world = checkInputWhileMpiStarts([&] {
+    study = datasets::loadStudy(
+        options.study, [](const std::string& base) { return resolveScenarioPath(base); },
+        robotsDirectory(), options.threads);
+    checkOutputFolder(output, options.study);
+    std::set<std::string> replayed_robots;
+    for (const datasets::StudyRun& run : study.runs) {
+      if (run.scenario.replay) replayed_robots.insert(run.scenario.robot);
+    }
+    for (const std::string& robot : replayed_robots) (void)loadRobotModel(robot);
+  });
 
   const std::vector<datasets::SummaryColumn> columns = runSummaryColumns();
-  if (distributed) {
+  if (world) {
     // One worker per rank unless -j says otherwise: a rank per core is the usual launch.
-    const mpi::World world = mpi::start();
     const bool root = runStudyOnRanks(
-        world, study, columns, {options.output, options.resume, options.threads_given ? options.threads : 1},
+        *world, study, columns, {options.output, options.resume, options.threads_given ? options.threads : 1},
         [](const datasets::StudyRun&, const ScenarioOutcome& outcome) {
           return runSummaryValues(outcome);
         },

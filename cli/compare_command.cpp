@@ -177,28 +177,32 @@ int compareCommand(const CompareOptions& options) {
     throw UsageError(options.study + ": cannot read the study file: no such file");
   }
   // Everything about the input is checked before anything is written.
-  const datasets::ComparisonStudy comparison = datasets::loadComparisonStudy(
-      options.study, [](const std::string& base) { return resolveScenarioPath(base); },
-      robotsDirectory(), options.threads);
-  const datasets::Study& study = comparison.study;
-  for (const datasets::StudyRun& run : study.runs) {
-    if (!run.scenario.goal.enabled) {
-      throw datasets::InputError(options.study + ": world '" +
-                                 comparison.worlds[comparison.runs[run.index].world] +
-                                 "': expected a walk to a goal (a scenario with `goal:`)");
-    }
-  }
   const fs::path folder(options.output);
-  if (fs::exists(folder, ec) && !fs::is_directory(folder, ec)) {
-    throw UsageError("output '" + folder.string() + "' is not a directory");
-  }
   const fs::path batch_file = folder / "study.h5";
-  checkWritableParent(batch_file);
-  std::set<std::string> replayed_robots;
-  for (const datasets::StudyRun& run : study.runs) {
-    if (run.scenario.replay) replayed_robots.insert(run.scenario.robot);
-  }
-  for (const std::string& robot : replayed_robots) (void)loadRobotModel(robot);
+  datasets::ComparisonStudy comparison;
+  const std::optional<mpi::World> world = checkInputWhileMpiStarts([&] {
+    comparison = datasets::loadComparisonStudy(
+        options.study, [](const std::string& base) { return resolveScenarioPath(base); },
+        robotsDirectory(), options.threads);
+    for (const datasets::StudyRun& run : comparison.study.runs) {
+      if (!run.scenario.goal.enabled) {
+        throw datasets::InputError(options.study + ": world '" +
+                                   comparison.worlds[comparison.runs[run.index].world] +
+                                   "': expected a walk to a goal (a scenario with `goal:`)");
+      }
+    }
+    std::error_code error;
+    if (fs::exists(folder, error) && !fs::is_directory(folder, error)) {
+      throw UsageError("output '" + folder.string() + "' is not a directory");
+    }
+    checkWritableParent(batch_file);
+    std::set<std::string> replayed_robots;
+    for (const datasets::StudyRun& run : comparison.study.runs) {
+      if (run.scenario.replay) replayed_robots.insert(run.scenario.robot);
+    }
+    for (const std::string& robot : replayed_robots) (void)loadRobotModel(robot);
+  });
+  const datasets::Study& study = comparison.study;
 
   fs::create_directories(folder, ec);
   std::vector<datasets::SummaryColumn> columns = runSummaryColumns();
@@ -213,11 +217,9 @@ int compareCommand(const CompareOptions& options) {
   const std::size_t variants = comparison.variants.size();
   std::vector<std::vector<analysis::ComparisonRunSample>> samples(comparison.worlds.size() *
                                                                   variants);
-  std::optional<mpi::World> world;
-  if (mpi::launched()) {
+  if (world) {
     // The ranks share the runs (distributed_study.hpp); each run's sample comes to rank 0 and
     // goes to its cell in run order, as the thread runner delivers them (same sums, same bits).
-    world = mpi::start();
     std::vector<analysis::ComparisonRunSample> by_run(study.runs.size());
     const bool root = runStudyOnRanks(
         *world, study, columns, {batch_file.string(), false, options.threads_given ? options.threads : 1},

@@ -10,6 +10,7 @@
 #include <iostream>
 #include <memory>
 #include <optional>
+#include <thread>
 
 #include "batch_progress.hpp"
 #include "cli_common.hpp"
@@ -84,6 +85,36 @@ std::vector<bool> prepareShardFolder(const datasets::Study& study,
 }
 
 }  // namespace
+
+std::optional<mpi::World> checkInputWhileMpiStarts(const std::function<void()>& check) {
+  if (!mpi::launched()) {
+    check();
+    return std::nullopt;
+  }
+  std::exception_ptr error;
+  std::thread checking([&] {
+    try {
+      check();
+    } catch (...) {
+      error = std::current_exception();
+    }
+  });
+  mpi::World world;
+  try {
+    world = mpi::start();  // only this thread calls MPI
+  } catch (...) {
+    checking.join();
+    throw;
+  }
+  checking.join();
+  if (mpi::largestStatus(error ? kExitBadInput : 0) != 0) {
+    mpi::finish();
+    if (world.rank != 0) std::exit(kExitBadInput);  // rank 0 says why
+    if (error) std::rethrow_exception(error);
+    throw std::runtime_error("another rank could not read the input (its message is above)");
+  }
+  return world;
+}
 
 std::string shardFolderOf(const std::string& index) {
   fs::path folder(index);

@@ -55,6 +55,12 @@ int broadcastStatus(int status) {
   return status;
 }
 
+int largestStatus(int status) {
+  int largest = status;
+  MPI_Allreduce(&status, &largest, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+  return largest;
+}
+
 void barrier() { MPI_Barrier(MPI_COMM_WORLD); }
 
 struct RunDispenser::State {
@@ -160,6 +166,7 @@ World start() { throw std::logic_error("wpg was built without MPI (WPG_WITH_MPI)
 void finish() {}
 void abortAll(int code) { std::_Exit(code); }
 int broadcastStatus(int status) { return status; }
+int largestStatus(int status) { return status; }
 void barrier() {}
 struct RunDispenser::State {};
 RunDispenser::RunDispenser(const World&, std::vector<std::size_t>, int,

@@ -23,6 +23,8 @@ void finish();                         // MPI_Finalize
 [[noreturn]] void abortAll(int code);  // MPI_Abort: every rank exits with `code`
 // Rank 0's `status` on every rank (0: go on).
 int broadcastStatus(int status);
+// The largest `status` of all ranks, on every rank.
+int largestStatus(int status);
 void barrier();
 
 // What rank 0 measures while it hands out runs.

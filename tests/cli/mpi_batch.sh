@@ -5,7 +5,9 @@
 #    index) and OUT.shards/rank-{0,1,2}.h5, every rank having run some of them;
 #  - one rank killed (SIGKILL) mid-study: mpirun aborts the job; `--resume` (on 2 ranks) runs the
 #    runs done in no shard (a shard HDF5 cannot open is moved to .damaged and redone), and the
-#    index holds the same runs as the uninterrupted batch; a complete study resumed runs nothing.
+#    index holds the same runs as the uninterrupted batch; a complete study resumed runs nothing;
+#  - bad input under mpirun: exit 2, one `wpg: error:` line (rank 0's), nothing written: a bad
+#    study, and --resume with a shard of another study in OUT.shards/ (left as it is).
 set -euo pipefail
 # shellcheck source=common.sh
 source "$(dirname "$0")/common.sh"
@@ -38,7 +40,7 @@ PY
 
 # One rank killed mid-study. The delay after the ranks have opened their shards is adjusted until
 # the kill lands with some, not all, runs done.
-delay=0.15
+delay=0.05
 partial=""
 for attempt in 1 2 3 4 5 6 7 8; do
   rm -rf killed
@@ -71,8 +73,9 @@ print(len(done))
 PY
 )"
   echo "attempt $attempt: rank killed after ${delay}s, $done_runs of $total runs done"
+  # At least a few runs left, so that the resume has real work (the killed rank's run among it).
   if (( done_runs == 0 )); then delay="$(echo "$delay * 1.6" | bc -l)"
-  elif (( done_runs == total )); then delay="$(echo "$delay * 0.5" | bc -l)"
+  elif (( done_runs > total - 4 )); then delay="$(echo "$delay * 0.5" | bc -l)"
   else partial=yes; break; fi
 done
 [[ -n "$partial" ]] || fail "could not kill a rank mid-study"
@@ -88,4 +91,20 @@ fi
   fail "--resume of a complete study: exit $?"
 grep -q "resuming, $total of $total" resume.err || fail "--resume of a complete study: $(cat resume.err)"
 "$PYTHON" "$HERE/compare_batch_files.py" one.h5 killed/out.h5 || fail "complete study changed by --resume"
+
+refused() {  # refused EXPECTED ARGS...: exit 2, one error line naming EXPECTED
+  local expected="$1"; shift
+  status=0
+  "${mpi[@]}" -np 2 "$wpg" batch "$@" --no-plot >stdout 2>stderr || status=$?
+  [[ $status == 2 ]] || fail "batch $*: exit $status, expected 2 ($(cat stderr))"
+  [[ "$(grep -c '^wpg: error:' stderr)" == 1 ]] || fail "batch $*: not one error line: $(cat stderr)"
+  grep '^wpg: error:' stderr | grep -qF -- "$expected" || fail "batch $*: does not name '$expected'"
+}
+refused "empty sweep" "$HERE/bad_studies/empty_sweep.yaml" -o bad/out.h5
+[[ ! -e bad ]] || fail "a bad study under mpirun wrote something"
+"$wpg" batch "$HERE/studies/other_study.yaml" -o killed/out.shards/stray.h5 --shard 0/1 >/dev/null 2>&1 ||
+  fail "other study: exit $?"
+sums="$(md5sum killed/out.shards/* killed/out.h5)"
+refused "other_study" "$study" -o killed/out.h5 --resume
+[[ "$(md5sum killed/out.shards/* killed/out.h5)" == "$sums" ]] || fail "a refused --resume changed files"
 echo "ok"
