@@ -3,7 +3,8 @@
 // threads through the batch machinery (study_execution.hpp), written to DIR/study.h5 (a group
 // per run and /batch/summary, as `wpg batch`, plus /compare/summary: one row per world x
 // variant; datasets/SCHEMA.md), DIR/summary.csv, DIR/summary.md and the figures of
-// analysis/plot_compare.py.
+// analysis/plot_compare.py. Under an MPI launcher the ranks share the runs
+// (distributed_study.hpp): DIR/study.h5 is then the index of DIR/study.shards/.
 #include <algorithm>
 #include <cmath>
 #include <limits>

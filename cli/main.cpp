@@ -99,8 +99,8 @@ int main(int argc, char** argv) {
   batch_app->add_option("-o,--output", batch.output, "Batch file to write (or to finish with --resume)")
       ->required()
       ->type_name("OUT.h5");
-  batch_app->add_option("-j,--jobs", batch.threads, "Worker threads")
-      ->default_str("the number of cores")
+  batch_app->add_option("-j,--jobs", batch.threads, "Worker threads (per rank under MPI)")
+      ->default_str("the number of cores; 1 per rank under MPI")
       ->type_name("N");
   batch_app->add_flag("--resume", batch.resume,
                       "Finish OUT.h5 of the same study: run only the runs it does not hold yet "
@@ -143,8 +143,8 @@ int main(int argc, char** argv) {
   compare_app->add_option("-o,--output", compare.output, "Folder to write")
       ->required()
       ->type_name("DIR");
-  compare_app->add_option("-j,--jobs", compare.threads, "Worker threads")
-      ->default_str("the number of cores")
+  compare_app->add_option("-j,--jobs", compare.threads, "Worker threads (per rank under MPI)")
+      ->default_str("the number of cores; 1 per rank under MPI")
       ->type_name("N");
   bool compare_no_plot = false;
   compare_app->add_flag("--no-plot", compare_no_plot, "Do not draw the figures");

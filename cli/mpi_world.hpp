@@ -39,7 +39,8 @@ struct DispenserStats {
 // one worker, not a rank's share of the study (dynamic scheduling, no static split). Rank 0
 // runs workers too: its workers take from the list directly, and a dispatcher thread answers
 // the other ranks' requests (polling MPI_Iprobe every 200 us: a blocking receive would keep a
-// core busy, which the workers of rank 0 need). Only the dispatcher calls MPI on rank 0 while
+// core busy, which the workers of rank 0 need; for the same reason every wait of this file
+// sleeps between MPI_Test calls instead of spinning). Only the dispatcher calls MPI on rank 0 while
 // runs are handed out; on the other ranks a mutex makes each request and its reply one round
 // trip: MPI_THREAD_SERIALIZED is enough.
 class RunDispenser {
@@ -57,7 +58,8 @@ class RunDispenser {
   // run to do, or nothing when there is none left.
   std::optional<std::size_t> next(std::optional<std::size_t> finished, std::vector<double>&& report);
 
-  // Rank 0, after the destructor's wait (call finishDispatch() first).
+  // Rank 0: waits until every worker of the other ranks has been told "no more" (the
+  // destructor does it too); stats() is complete after it.
   void finishDispatch();
   DispenserStats stats() const;
 
