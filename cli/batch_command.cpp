@@ -120,7 +120,7 @@ int batchCommand(const BatchOptions& options) {
   }
   // Everything about the input is checked before anything is written.
   datasets::Study study;
-  const std::optional<mpi::World> world = checkInputWhileMpiStarts([&] {
+  const auto check_input = [&] {
     study = datasets::loadStudy(
         options.study, [](const std::string& base) { return resolveScenarioPath(base); },
         robotsDirectory(), options.threads);
@@ -130,7 +130,13 @@ int batchCommand(const BatchOptions& options) {
       if (run.scenario.replay) replayed_robots.insert(run.scenario.robot);
     }
     for (const std::string& robot : replayed_robots) (void)loadRobotModel(robot);
-  });
+  };
+  std::optional<mpi::World> world;
+  if (sharded) {
+    check_input();  // a slice is one process, whatever launched it
+  } else {
+    world = checkInputWhileMpiStarts(check_input);
+  }
 
   const std::vector<datasets::SummaryColumn> columns = runSummaryColumns();
   if (world) {

@@ -87,6 +87,13 @@ std::vector<bool> prepareShardFolder(const datasets::Study& study,
 }  // namespace
 
 std::optional<mpi::World> checkInputWhileMpiStarts(const std::function<void()>& check) {
+  if (!mpi::launched() && mpi::launcherProcesses() > 1) {
+    throw UsageError("this wpg was built without MPI (WPG_WITH_MPI) but runs as one of " +
+                     std::to_string(mpi::launcherProcesses()) +
+                     " processes of an MPI launcher: each would run the whole study into the "
+                     "same file (rebuild with scripts/setup.sh --with-mpi, or give each process "
+                     "its --shard K/N)");
+  }
   if (!mpi::launched()) {
     check();
     return std::nullopt;

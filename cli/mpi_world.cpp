@@ -2,6 +2,7 @@
 // includes <mpi.h>; without WPG_WITH_MPI it compiles to launched() == false.
 #include "mpi_world.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
 #include <mutex>
@@ -13,6 +14,13 @@
 #endif
 
 namespace wpg::cli::mpi {
+
+int launcherProcesses() {
+  for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE"}) {
+    if (const char* value = std::getenv(name)) return std::max(1, std::atoi(value));
+  }
+  return 1;
+}
 
 #if WPG_WITH_MPI
 

@@ -12,6 +12,10 @@ namespace wpg::cli::mpi {
 
 // Built with MPI and started by an MPI launcher (mpirun, srun, ...: its environment says so).
 bool launched();
+// How many processes the launcher started, from its environment (1 without a launcher), built
+// with MPI or not: a build without MPI under `mpirun -np 4` would run the whole study 4 times
+// into one file, and refuses to.
+int launcherProcesses();
 
 struct World {
   int rank = 0;
