@@ -16,6 +16,16 @@ make_workdir
 cd "$WORKDIR"
 mpi=("$mpirun" --oversubscribe)
 
+# The processes whose parent is $1 (mpirun's ranks), from /proc (no procps needed).
+children() {
+  local stat pid comm state ppid
+  for stat in /proc/[0-9]*/stat; do
+    read -r pid comm state ppid _ <"$stat" 2>/dev/null || continue
+    [[ "$ppid" == "$1" ]] && echo "$pid"
+  done
+  return 0
+}
+
 "$wpg" batch "$study" -o one.h5 -j 1 --no-plot >/dev/null 2>&1 || fail "batch -j 1: exit $?"
 total="$("$PYTHON" -c "import h5py,sys; print(h5py.File(sys.argv[1])['batch/summary/done'].size)" one.h5)"
 
@@ -40,7 +50,7 @@ PY
 
 # One rank killed mid-study. The delay after the ranks have opened their shards is adjusted until
 # the kill lands with some, not all, runs done.
-delay=0.05
+delay=0.3
 partial=""
 for attempt in 1 2 3 4 5 6 7 8; do
   rm -rf killed
@@ -48,7 +58,7 @@ for attempt in 1 2 3 4 5 6 7 8; do
   pid=$!
   for _ in $(seq 200); do [[ -f killed/out.shards/rank-2.h5 ]] && break; sleep 0.05; done
   sleep "$delay"
-  victim="$(pgrep -P "$pid" | tail -1 || true)"
+  victim="$(children "$pid" | tail -1)"
   [[ -n "$victim" ]] && kill -KILL "$victim" 2>/dev/null || true
   status=0
   wait "$pid" 2>/dev/null || status=$?
