@@ -6,6 +6,7 @@
 #  - one rank killed (SIGKILL) mid-study: mpirun aborts the job; `--resume` (on 2 ranks) runs the
 #    runs done in no shard (a shard HDF5 cannot open is moved to .damaged and redone), and the
 #    index holds the same runs as the uninterrupted batch; a complete study resumed runs nothing;
+#    a shard truncated by hand is moved aside and its runs redone;
 #  - bad input under mpirun: exit 2, one `wpg: error:` line (rank 0's), nothing written: a bad
 #    study, and --resume with a shard of another study in OUT.shards/ (left as it is).
 set -euo pipefail
@@ -101,6 +102,17 @@ fi
   fail "--resume of a complete study: exit $?"
 grep -q "resuming, $total of $total" resume.err || fail "--resume of a complete study: $(cat resume.err)"
 "$PYTHON" "$HERE/compare_batch_files.py" one.h5 killed/out.h5 || fail "complete study changed by --resume"
+
+# A shard HDF5 cannot open (what a kill inside a write may leave: truncated here) is moved
+# aside and its runs are run again.
+head -c 4096 killed/out.shards/rank-1.h5 >truncated.h5
+mv truncated.h5 killed/out.shards/rank-1.h5
+"${mpi[@]}" -np 3 "$wpg" batch "$study" -o killed/out.h5 --resume --no-plot >/dev/null 2>resume.err ||
+  fail "--resume with a damaged shard: exit $? ($(cat resume.err))"
+grep -q "rank-1.h5 cannot be read by HDF5.*moved to killed/out.shards/rank-1.h5.damaged" resume.err ||
+  fail "the damaged shard was not moved aside: $(cat resume.err)"
+[[ -f killed/out.shards/rank-1.h5.damaged ]] || fail "no rank-1.h5.damaged"
+"$PYTHON" "$HERE/compare_batch_files.py" one.h5 killed/out.h5 || fail "resumed without the damaged shard differs"
 
 refused() {  # refused EXPECTED ARGS...: exit 2, one error line naming EXPECTED
   local expected="$1"; shift
