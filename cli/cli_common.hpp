@@ -78,14 +78,30 @@ struct BatchOptions {
   int threads = 1;     // -j
   bool resume = false;
   bool plot = true;
+  std::string shard;           // --shard K/N, empty: the whole study
+  bool threads_given = false;  // -j on the command line (under MPI the default is 1 per rank)
 };
 int batchCommand(const BatchOptions& options);
+// OUT.summary.csv/.md (and .png with `plot`) beside a batch file or index; prints "wrote ...";
+// kExitRunFailed when a run failed.
+int finishBatchFile(const std::string& batch_file, bool plot);
+
+// `wpg merge OUT.h5 SHARD...` (batch_index.hpp): the index of shard files, or of every *.h5 of
+// a folder given alone.
+struct MergeOptions {
+  std::string output;
+  std::vector<std::string> shards;
+  bool copy = false;  // one self-contained file instead of links
+  bool plot = true;
+};
+int mergeCommand(const MergeOptions& options);
 
 struct CompareOptions {
   std::string study;
   std::string output;  // the folder: study.h5, summary.csv, summary.md, figures
   int threads = 1;
   bool plot = true;
+  bool threads_given = false;  // -j on the command line (under MPI the default is 1 per rank)
 };
 int compareCommand(const CompareOptions& options);
 

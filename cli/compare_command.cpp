@@ -3,10 +3,12 @@
 // threads through the batch machinery (study_execution.hpp), written to DIR/study.h5 (a group
 // per run and /batch/summary, as `wpg batch`, plus /compare/summary: one row per world x
 // variant; datasets/SCHEMA.md), DIR/summary.csv, DIR/summary.md and the figures of
-// analysis/plot_compare.py.
+// analysis/plot_compare.py. Under an MPI launcher the ranks share the runs
+// (distributed_study.hpp): DIR/study.h5 is then the index of DIR/study.shards/.
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -15,6 +17,8 @@
 
 #include "batch_progress.hpp"
 #include "cli_common.hpp"
+#include "distributed_study.hpp"
+#include "mpi_world.hpp"
 #include "study_execution.hpp"
 #include "wpg/analysis/comparison_summary.hpp"
 #include "wpg/datasets/comparison_study.hpp"
@@ -135,6 +139,35 @@ std::vector<datasets::TableColumn> h5Table(const std::vector<analysis::Compariso
   return columns;
 }
 
+// A sample as the doubles an MPI rank sends to rank 0 (distributed_study.hpp), and back:
+// [reached, time_to_goal, walked, route, steps, clearance, replans, n planning times, the
+// planning times, the NMPC solve times].
+std::vector<double> serializeSample(const analysis::ComparisonRunSample& sample) {
+  std::vector<double> values = {sample.goal_reached ? 1.0 : 0.0, sample.time_to_goal,
+                                sample.walked_length, sample.route_length, sample.steps,
+                                sample.clearance_min, static_cast<double>(sample.replans),
+                                static_cast<double>(sample.planning_times.size())};
+  values.insert(values.end(), sample.planning_times.begin(), sample.planning_times.end());
+  values.insert(values.end(), sample.nmpc_solve_times.begin(), sample.nmpc_solve_times.end());
+  return values;
+}
+
+analysis::ComparisonRunSample deserializeSample(const std::vector<double>& values) {
+  analysis::ComparisonRunSample sample;
+  if (values.size() < 8) throw std::runtime_error("MPI: a comparison sample of " + std::to_string(values.size()) + " values");
+  sample.goal_reached = values[0] != 0.0;
+  sample.time_to_goal = values[1];
+  sample.walked_length = values[2];
+  sample.route_length = values[3];
+  sample.steps = values[4];
+  sample.clearance_min = values[5];
+  sample.replans = static_cast<int>(values[6]);
+  const auto plans = static_cast<std::size_t>(values[7]);
+  sample.planning_times.assign(values.begin() + 8, values.begin() + 8 + static_cast<long>(plans));
+  sample.nmpc_solve_times.assign(values.begin() + 8 + static_cast<long>(plans), values.end());
+  return sample;
+}
+
 }  // namespace
 
 int compareCommand(const CompareOptions& options) {
@@ -145,57 +178,81 @@ int compareCommand(const CompareOptions& options) {
     throw UsageError(options.study + ": cannot read the study file: no such file");
   }
   // Everything about the input is checked before anything is written.
-  const datasets::ComparisonStudy comparison = datasets::loadComparisonStudy(
-      options.study, [](const std::string& base) { return resolveScenarioPath(base); },
-      robotsDirectory(), options.threads);
-  const datasets::Study& study = comparison.study;
-  for (const datasets::StudyRun& run : study.runs) {
-    if (!run.scenario.goal.enabled) {
-      throw datasets::InputError(options.study + ": world '" +
-                                 comparison.worlds[comparison.runs[run.index].world] +
-                                 "': expected a walk to a goal (a scenario with `goal:`)");
-    }
-  }
   const fs::path folder(options.output);
-  if (fs::exists(folder, ec) && !fs::is_directory(folder, ec)) {
-    throw UsageError("output '" + folder.string() + "' is not a directory");
-  }
   const fs::path batch_file = folder / "study.h5";
-  checkWritableParent(batch_file);
-  std::set<std::string> replayed_robots;
-  for (const datasets::StudyRun& run : study.runs) {
-    if (run.scenario.replay) replayed_robots.insert(run.scenario.robot);
-  }
-  for (const std::string& robot : replayed_robots) (void)loadRobotModel(robot);
+  datasets::ComparisonStudy comparison;
+  const std::optional<mpi::World> world = checkInputWhileMpiStarts([&] {
+    comparison = datasets::loadComparisonStudy(
+        options.study, [](const std::string& base) { return resolveScenarioPath(base); },
+        robotsDirectory(), options.threads);
+    for (const datasets::StudyRun& run : comparison.study.runs) {
+      if (!run.scenario.goal.enabled) {
+        throw datasets::InputError(options.study + ": world '" +
+                                   comparison.worlds[comparison.runs[run.index].world] +
+                                   "': expected a walk to a goal (a scenario with `goal:`)");
+      }
+    }
+    std::error_code error;
+    if (fs::exists(folder, error) && !fs::is_directory(folder, error)) {
+      throw UsageError("output '" + folder.string() + "' is not a directory");
+    }
+    checkWritableParent(batch_file);
+    std::set<std::string> replayed_robots;
+    for (const datasets::StudyRun& run : comparison.study.runs) {
+      if (run.scenario.replay) replayed_robots.insert(run.scenario.robot);
+    }
+    for (const std::string& robot : replayed_robots) (void)loadRobotModel(robot);
+  });
+  const datasets::Study& study = comparison.study;
 
   fs::create_directories(folder, ec);
   std::vector<datasets::SummaryColumn> columns = runSummaryColumns();
   for (const datasets::SummaryColumn& column : goalSummaryColumns()) columns.push_back(column);
-  std::unique_ptr<datasets::BatchDatasetWriter> writer =
-      datasets::BatchDatasetWriter::create(batch_file.string(), study, columns);
-
-  std::vector<const datasets::StudyRun*> runs;
-  for (const datasets::StudyRun& run : study.runs) runs.push_back(&run);
+  const auto summary_values = [](const datasets::StudyRun& run, const ScenarioOutcome& outcome) {
+    std::vector<double> values = runSummaryValues(outcome);
+    for (const double value : goalSummaryValues(sampleOf(run.scenario, outcome))) {
+      values.push_back(value);
+    }
+    return values;
+  };
   const std::size_t variants = comparison.variants.size();
   std::vector<std::vector<analysis::ComparisonRunSample>> samples(comparison.worlds.size() *
                                                                   variants);
-  BatchProgress progress(study.name, runs.size(), stderr);
-  // The sample is made twice per run (summary row, then its cell): cheap next to the walk.
-  runStudyInto(
-      runs, options.threads, &progress, writer.get(),
-      [](const datasets::StudyRun& run, const ScenarioOutcome& outcome) {
-        std::vector<double> values = runSummaryValues(outcome);
-        for (const double value : goalSummaryValues(sampleOf(run.scenario, outcome))) {
-          values.push_back(value);
-        }
-        return values;
-      },
-      [&](const datasets::StudyRun& run, const ScenarioOutcome& outcome) {
-        const datasets::ComparisonRun& cell = comparison.runs[run.index];
-        samples[cell.world * variants + cell.variant].push_back(sampleOf(run.scenario, outcome));
-      });
-  progress.finish();
-  writer->close();
+  if (world) {
+    // The ranks share the runs (distributed_study.hpp); each run's sample comes to rank 0 and
+    // goes to its cell in run order, as the thread runner delivers them (same sums, same bits).
+    std::vector<analysis::ComparisonRunSample> by_run(study.runs.size());
+    const bool root = runStudyOnRanks(
+        *world, study, columns, {batch_file.string(), false, options.threads_given ? options.threads : 1},
+        summary_values,
+        [](const datasets::StudyRun& run, const ScenarioOutcome& outcome) {
+          return serializeSample(sampleOf(run.scenario, outcome));
+        },
+        [&](std::size_t run, std::vector<double>&& values) { by_run[run] = deserializeSample(values); });
+    if (!root) {
+      mpi::finish();
+      return kExitSuccess;
+    }
+    for (const datasets::StudyRun& run : study.runs) {
+      const datasets::ComparisonRun& cell = comparison.runs[run.index];
+      samples[cell.world * variants + cell.variant].push_back(std::move(by_run[run.index]));
+    }
+  } else {
+    std::unique_ptr<datasets::BatchDatasetWriter> writer =
+        datasets::BatchDatasetWriter::create(batch_file.string(), study, columns);
+    std::vector<const datasets::StudyRun*> runs;
+    for (const datasets::StudyRun& run : study.runs) runs.push_back(&run);
+    BatchProgress progress(study.name, runs.size(), stderr);
+    // The sample is made twice per run (summary row, then its cell): cheap next to the walk.
+    runStudyInto(runs, options.threads, &progress, writer.get(), summary_values,
+                 [&](const datasets::StudyRun& run, const ScenarioOutcome& outcome) {
+                   const datasets::ComparisonRun& cell = comparison.runs[run.index];
+                   samples[cell.world * variants + cell.variant].push_back(
+                       sampleOf(run.scenario, outcome));
+                 });
+    progress.finish();
+    writer->close();
+  }
 
   std::vector<analysis::ComparisonCell> cells;
   for (std::size_t w = 0; w < comparison.worlds.size(); ++w) {
@@ -250,6 +307,7 @@ int compareCommand(const CompareOptions& options) {
     }
   }
   std::cout << "\n";
+  if (world) mpi::finish();
   // Runs that miss the goal are results of the comparison, not errors of the command.
   return kExitSuccess;
 }

@@ -116,8 +116,8 @@ int main(int argc, char** argv) {
   batch_app->add_option("-o,--output", batch.output, "Batch file to write (or to finish with --resume)")
       ->required()
       ->type_name("OUT.h5");
-  batch_app->add_option("-j,--jobs", batch.threads, "Worker threads")
-      ->default_str("the number of cores")
+  batch_app->add_option("-j,--jobs", batch.threads, "Worker threads (per rank under MPI)")
+      ->default_str("the number of cores; 1 per rank under MPI")
       ->type_name("N");
   batch_app->add_flag("--resume", batch.resume,
                       "Finish OUT.h5 of the same study: run only the runs it does not hold yet "
@@ -125,6 +125,26 @@ int main(int argc, char** argv) {
                       "started)");
   bool batch_no_plot = false;
   batch_app->add_flag("--no-plot", batch_no_plot, "Do not draw the summary figure");
+  batch_app->add_option("--shard", batch.shard,
+                        "Run only slice K of N (runs i with i mod N = K, 0 <= K < N) into OUT.h5, "
+                        "a shard file; join the shards with `wpg merge` (README, \"Running on a "
+                        "cluster\")")
+      ->type_name("K/N");
+
+  MergeOptions merge;
+  CLI::App* merge_app = app.add_subcommand(
+      "merge",
+      "Join the shard files of a study (`wpg batch --shard K/N`, or the OUT.shards/ folder of an "
+      "MPI batch) into OUT.h5, a batch file whose runs link into the shards (relative HDF5 "
+      "external links), with OUT.summary.csv/.md/.png. Exit 0, 1 some walk failed, 2 bad input "
+      "(a run in no shard, shards of another study: nothing written).");
+  merge_app->add_option("output", merge.output, "Index file to write")->required()->type_name("OUT.h5");
+  merge_app->add_option("shards", merge.shards, "Shard files, or a folder of them")
+      ->required()
+      ->type_name("SHARD...");
+  merge_app->add_flag("--copy", merge.copy, "Copy the runs into OUT.h5 (one self-contained file) instead of linking them");
+  bool merge_no_plot = false;
+  merge_app->add_flag("--no-plot", merge_no_plot, "Do not draw the summary figure");
 
   CompareOptions compare;
   compare.threads = std::max(1u, std::thread::hardware_concurrency());
@@ -140,8 +160,8 @@ int main(int argc, char** argv) {
   compare_app->add_option("-o,--output", compare.output, "Folder to write")
       ->required()
       ->type_name("DIR");
-  compare_app->add_option("-j,--jobs", compare.threads, "Worker threads")
-      ->default_str("the number of cores")
+  compare_app->add_option("-j,--jobs", compare.threads, "Worker threads (per rank under MPI)")
+      ->default_str("the number of cores; 1 per rank under MPI")
       ->type_name("N");
   bool compare_no_plot = false;
   compare_app->add_flag("--no-plot", compare_no_plot, "Do not draw the figures");
@@ -243,11 +263,17 @@ int main(int argc, char** argv) {
     if (bench_app->parsed()) return benchCommand(bench);
     if (compare_app->parsed()) {
       compare.plot = !compare_no_plot;
+      compare.threads_given = compare_app->count("--jobs") > 0;
       return compareCommand(compare);
     }
     if (batch_app->parsed()) {
       batch.plot = !batch_no_plot;
+      batch.threads_given = batch_app->count("--jobs") > 0;
       return batchCommand(batch);
+    }
+    if (merge_app->parsed()) {
+      merge.plot = !merge_no_plot;
+      return mergeCommand(merge);
     }
     if (analyze_app->parsed()) return analyzeCommand(analyze);
     if (diff_app->parsed()) return diffCommand(diff);

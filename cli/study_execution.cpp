@@ -3,7 +3,10 @@
 
 #include <unistd.h>
 
+#include <exception>
 #include <fstream>
+#include <mutex>
+#include <thread>
 #include <system_error>
 
 #include "batch_progress.hpp"
@@ -87,6 +90,46 @@ void runStudyInto(const std::vector<const datasets::StudyRun*>& runs, int thread
         prepared[position] = datasets::PreparedRun{};  // free the chunks
         if (delivered) delivered(*runs[position], outcome);
       });
+}
+
+void runStudyPulled(const RunSource& next, int threads, datasets::BatchDatasetWriter* writer,
+                    const std::function<std::vector<double>(const datasets::StudyRun&,
+                                                            const ScenarioOutcome&)>& values,
+                    const std::function<std::vector<double>(const datasets::StudyRun&,
+                                                            const ScenarioOutcome&)>& report) {
+  std::mutex mutex;  // the writer and the first error
+  std::exception_ptr error;
+  const auto worker = [&]() {
+    RobotModelCache models;
+    const datasets::StudyRun* finished = nullptr;
+    std::vector<double> finished_report;
+    try {
+      while (const datasets::StudyRun* run = next(finished, std::move(finished_report))) {
+        {
+          std::lock_guard<std::mutex> lock(mutex);
+          if (error) return;
+        }
+        const ScenarioOutcome outcome = runScenarioPipeline(run->scenario, &models);
+        datasets::BatchRunRecord record = recordOf(run, outcome);
+        const datasets::PreparedRun prepared = datasets::BatchDatasetWriter::prepare(record);
+        record.values = values(*run, outcome);
+        {
+          std::lock_guard<std::mutex> lock(mutex);
+          writer->write(record, &prepared);
+        }
+        finished = run;
+        finished_report = report(*run, outcome);
+      }
+    } catch (...) {
+      std::lock_guard<std::mutex> lock(mutex);
+      if (!error) error = std::current_exception();
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
+  worker();
+  for (std::thread& thread : pool) thread.join();
+  if (error) std::rethrow_exception(error);
 }
 
 void checkWritableParent(const fs::path& output) {

@@ -31,6 +31,21 @@ void runStudyInto(const std::vector<const datasets::StudyRun*>& runs, int thread
                   const std::function<void(const datasets::StudyRun&, const ScenarioOutcome&)>&
                       delivered);
 
+// The runs of one rank of a distributed study (distributed_study.hpp), pulled one at a time:
+// `next(finished, report)` gets the run the calling worker just finished (null at its first
+// call) with `report(*finished, outcome)`, and returns the worker's next run (null: no more).
+// Each run goes through the same pipeline as runStudyInto's (runScenarioPipeline, prepare on the
+// worker, write with `values`), on `threads` workers, written into `writer` as it finishes: the
+// order of the groups in the file differs, not their contents. Exceptions stop the workers and
+// the first is rethrown.
+using RunSource = std::function<const datasets::StudyRun*(const datasets::StudyRun* finished,
+                                                          std::vector<double>&& report)>;
+void runStudyPulled(const RunSource& next, int threads, datasets::BatchDatasetWriter* writer,
+                    const std::function<std::vector<double>(const datasets::StudyRun&,
+                                                            const ScenarioOutcome&)>& values,
+                    const std::function<std::vector<double>(const datasets::StudyRun&,
+                                                            const ScenarioOutcome&)>& report);
+
 // Throws UsageError unless the nearest existing folder above `output` is a writable directory.
 void checkWritableParent(const std::filesystem::path& output);
 

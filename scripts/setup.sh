@@ -2,7 +2,20 @@
 # Installs the missing Debian packages, then configures (Release) and builds wpg in build/
 # (or in $WPG_BUILD_DIR). Idempotent: quiet when everything is already installed and built.
 # Works from any folder.
+#
+#   scripts/setup.sh              the default: everything but MPI
+#   scripts/setup.sh --with-mpi   also Open MPI (openmpi-bin, libopenmpi-dev) and a build with
+#                                 WPG_WITH_MPI=ON: `mpirun -np R wpg batch ...` (README, "Running
+#                                 on a cluster")
 set -euo pipefail
+
+with_mpi=""
+for argument in "$@"; do
+  case "$argument" in
+    --with-mpi) with_mpi=yes ;;
+    *) echo "setup: error: unknown option '$argument' (expected --with-mpi)" >&2; exit 2 ;;
+  esac
+done
 
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="$(realpath -m -- "${WPG_BUILD_DIR:-$repo/build}")"
@@ -15,6 +28,7 @@ packages=(build-essential cmake libeigen3-dev libhdf5-dev libcli11-dev libgtest-
           libbenchmark-dev libyaml-cpp-dev libfcl-dev libsimbody-dev liburdfdom-dev
           libompl-dev libboost-serialization-dev libboost-filesystem-dev libboost-system-dev
           python3-h5py python3-matplotlib python3-yaml)
+if [[ -n "$with_mpi" ]]; then packages+=(openmpi-bin libopenmpi-dev); fi
 
 missing=()
 for package in "${packages[@]}"; do
@@ -43,9 +57,22 @@ jobs="$(nproc)"
 log="$build/setup-build.log"
 mkdir -p "$build"
 : >"$log"
+mpi_option=()
+if [[ -n "$with_mpi" ]]; then
+  mpi_option=(-DWPG_WITH_MPI=ON)
+  # A build tree configured before MPI was installed has WPG_WITH_MPI=OFF in its cache.
+  if [[ -f "$build/CMakeCache.txt" ]] && ! grep -q '^WPG_WITH_MPI:BOOL=ON' "$build/CMakeCache.txt"; then
+    echo "setup: configuring $build with MPI (WPG_WITH_MPI=ON)"
+    if ! cmake -S "$repo" -B "$build" "${mpi_option[@]}" >>"$log" 2>&1; then
+      cat "$log" >&2
+      echo "setup: error: cmake configure with MPI failed (output above)" >&2
+      exit 1
+    fi
+  fi
+fi
 if [[ ! -f "$build/CMakeCache.txt" ]]; then
   echo "setup: configuring and building wpg in $build (Release, -j$jobs; log: $log)"
-  if ! cmake -S "$repo" -B "$build" -DCMAKE_BUILD_TYPE=Release >>"$log" 2>&1; then
+  if ! cmake -S "$repo" -B "$build" -DCMAKE_BUILD_TYPE=Release "${mpi_option[@]}" >>"$log" 2>&1; then
     cat "$log" >&2
     echo "setup: error: cmake configure failed (output above)" >&2
     exit 1

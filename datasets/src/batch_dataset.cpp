@@ -144,7 +144,8 @@ void BatchDatasetWriter::close() {
 }
 
 std::unique_ptr<BatchDatasetWriter> BatchDatasetWriter::create(
-    const std::string& path, const Study& study, const std::vector<SummaryColumn>& columns) {
+    const std::string& path, const Study& study, const std::vector<SummaryColumn>& columns,
+    const std::string& shard_label) {
   std::unique_ptr<BatchDatasetWriter> writer(new BatchDatasetWriter(path, columns));
   writer->done_.assign(study.runs.size(), false);
   std::lock_guard<std::mutex> lock(hdf5Mutex());
@@ -161,6 +162,7 @@ std::unique_ptr<BatchDatasetWriter> BatchDatasetWriter::create(
     writeStringAttribute(h.file, "study_fingerprint", study.fingerprint);
     writeIntAttribute(h.file, "run_count", static_cast<int>(study.runs.size()));
     writeStringListAttribute(h.file, "swept_keys", study.keys);
+    if (!shard_label.empty()) writeStringAttribute(h.file, "shard", shard_label);
     h.runs = h.file.createGroup("runs");
     H5::Group batch = h.file.createGroup("batch");
     H5::Group table = batch.createGroup("summary");

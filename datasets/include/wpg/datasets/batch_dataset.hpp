@@ -54,9 +54,11 @@ class BatchDatasetWriter {
 
   // Creates `path` (replacing a file there) with the study's layout: root attributes, /batch,
   // the summary table with its index, name and swept columns filled and its result columns
-  // at their fill values, and an empty /runs. Throws std::runtime_error on I/O errors.
+  // at their fill values, and an empty /runs. A non-empty `shard_label` makes it a shard file
+  // (batch_index.hpp): root attribute `shard`. Throws std::runtime_error on I/O errors.
   static std::unique_ptr<BatchDatasetWriter> create(const std::string& path, const Study& study,
-                                                    const std::vector<SummaryColumn>& columns);
+                                                    const std::vector<SummaryColumn>& columns,
+                                                    const std::string& shard_label = "");
   // Opens an existing batch file of the same study to finish it. Throws InputError, leaving the
   // file untouched, when it is not a batch file, holds another study (name or fingerprint
   // differ) or has other summary columns. Runs found half-written (a group without its `done`
