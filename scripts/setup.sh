@@ -2,7 +2,21 @@
 # Installs the missing Debian packages, then configures (Release) and builds wpg in build/
 # (or in $WPG_BUILD_DIR). Idempotent: quiet when everything is already installed and built.
 # Works from any folder.
+#   --with-clang     also clang 14 and its sanitizer/libFuzzer runtimes (scripts/test-sanitizers.sh,
+#                    scripts/fuzz.sh); the quick start does not need them.
+#   --packages-only  install the packages, do not build build/.
 set -euo pipefail
+
+with_clang=0
+packages_only=0
+for argument in "$@"; do
+  case "$argument" in
+    --with-clang) with_clang=1 ;;
+    --packages-only) packages_only=1 ;;
+    *) echo "setup: error: unknown option '$argument' (expected --with-clang, --packages-only)" >&2
+       exit 2 ;;
+  esac
+done
 
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="$(realpath -m -- "${WPG_BUILD_DIR:-$repo/build}")"
@@ -15,6 +29,9 @@ packages=(build-essential cmake libeigen3-dev libhdf5-dev libcli11-dev libgtest-
           libbenchmark-dev libyaml-cpp-dev libfcl-dev libsimbody-dev liburdfdom-dev
           libompl-dev libboost-serialization-dev libboost-filesystem-dev libboost-system-dev
           python3-h5py python3-matplotlib python3-yaml)
+if ((with_clang)); then
+  packages+=(clang-14 libclang-rt-14-dev)
+fi
 
 missing=()
 for package in "${packages[@]}"; do
@@ -38,6 +55,7 @@ if ((${#missing[@]})); then
   fi
   rm -f "$log"
 fi
+((packages_only)) && exit 0
 
 jobs="$(nproc)"
 log="$build/setup-build.log"
