@@ -15,6 +15,8 @@
 #include <sstream>
 #include <utility>
 
+#include <yaml-cpp/eventhandler.h>
+
 namespace wpg::datasets::detail {
 namespace {
 
