@@ -29,6 +29,10 @@
 namespace {
 
 std::string g_path;  // the temporary HDF5 file, rewritten for every input
+// WPG_FUZZ_MAX_ROWS (environment): the largest number of rows a dataset may declare, 2^40 by
+// default. A smaller value explores past a known crash on huge declared sizes (until the
+// reader refuses them) instead of finding it again at every run.
+std::uint64_t g_max_rows = std::uint64_t{1} << 40;
 
 void removeTemporaryFile() {
   std::error_code ignored;
@@ -93,12 +97,15 @@ extern "C" int LLVMFuzzerInitialize(int*, char***) {
           : std::filesystem::temp_directory_path();
   g_path = (folder / ("wpg-fuzz-dataset-" + std::to_string(getpid()) + ".h5")).string();
   std::atexit(removeTemporaryFile);
+  if (const char* max_rows = std::getenv("WPG_FUZZ_MAX_ROWS")) {
+    g_max_rows = std::strtoull(max_rows, nullptr, 10);
+  }
   return 0;
 }
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   static const std::string robots = std::string(WPG_SOURCE_DIR) + "/robots";
-  const wpg_fuzz::FileImage image = wpg_fuzz::decode(data, size);
+  const wpg_fuzz::FileImage image = wpg_fuzz::decode(data, size, g_max_rows);
   if (!wpg_fuzz::writeHdf5(image, g_path)) propertyViolated("cannot create " + g_path);
   readLikeReplay(robots);
   readLikeAnalyze();

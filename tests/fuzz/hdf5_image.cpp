@@ -298,7 +298,8 @@ herr_t visitObject(hid_t, const char* name, const H5O_info_t* info, void* data) 
 
 }  // namespace
 
-FileImage decode(const std::uint8_t* data, std::size_t size) {
+FileImage decode(const std::uint8_t* data, std::size_t size, std::uint64_t max_rows) {
+  max_rows = std::min(max_rows, kMaxRows);
   ByteReader in(data, size);
   FileImage image;
   while (!in.empty() && image.entries.size() < kMaxEntries) {
@@ -310,7 +311,7 @@ FileImage decode(const std::uint8_t* data, std::size_t size) {
       const std::uint64_t flags = in.unsignedValue(1);
       array.integer = (flags & 1) != 0;
       array.rank = (flags & 2) != 0 ? 2 : 1;
-      array.rows = in.unsignedValue(8) % (kMaxRows + 1);
+      array.rows = in.unsignedValue(8) % (max_rows + 1);
       array.columns = static_cast<std::uint32_t>(in.unsignedValue(1) % (kMaxColumns + 1));
       if (array.rank == 1) array.columns = 1;
       array.step = in.number();

@@ -54,8 +54,10 @@ constexpr std::size_t kMaxStringBytes = 1 << 16;
 constexpr std::uint64_t kMaxWrittenValues = 1 << 16;
 constexpr std::uint32_t kMaxColumns = 64;
 
-// Never fails: a truncated input ends the image, out-of-range fields are reduced into range.
-FileImage decode(const std::uint8_t* data, std::size_t size);
+// Never fails: a truncated input ends the image, out-of-range fields are reduced into range
+// (declared rows into [0, max_rows]).
+FileImage decode(const std::uint8_t* data, std::size_t size,
+                 std::uint64_t max_rows = std::uint64_t{1} << 40);
 // decode(encode(image)) == image for an image within the limits above.
 std::vector<std::uint8_t> encode(const FileImage& image);
 // Writes the image as a new HDF5 file at `path` (replaced). Entries HDF5 refuses (a name
