@@ -23,7 +23,7 @@ for target in "${targets[@]}"; do
 done
 
 wpg_sanitizer_tree "$build"
-wpg_sanitizer_build "$build" "${targets[@]}" make_dataset_seeds
+wpg_sanitizer_build "$build" "$build/build-fuzz.log" "${targets[@]}" make_dataset_seeds
 wpg_sanitizer_env
 
 # Seeds of the dataset reader: real run datasets (the regression references), every dataset cut

@@ -17,14 +17,14 @@ wpg_sanitizer_tree() {
   fi
 }
 
-# wpg_sanitizer_build BUILD [TARGET...]: builds (everything without targets), log in BUILD.
+# wpg_sanitizer_build BUILD LOG [TARGET...]: builds (everything without targets), log in LOG.
 wpg_sanitizer_build() {
-  local build="$1"; shift
+  local build="$1" log="$2"; shift 2
   local targets=()
   (($#)) && targets=(--target "$@")
-  echo "sanitizers: building ${*:-everything} (-j$(nproc); log: $build/build.log)"
-  cmake --build "$build" -j"$(nproc)" "${targets[@]}" >"$build/build.log" 2>&1 \
-    || { tail -n 60 "$build/build.log" >&2; echo "sanitizers: error: build failed" >&2; return 1; }
+  echo "sanitizers: building ${*:-everything} (-j$(nproc); log: $log)"
+  cmake --build "$build" -j"$(nproc)" "${targets[@]}" >"$log" 2>&1 \
+    || { tail -n 60 "$log" >&2; echo "sanitizers: error: build failed" >&2; return 1; }
 }
 
 # wpg_sanitizer_env [REPORT_DIR]: the runtime options: halt at the first report, leaks checked,

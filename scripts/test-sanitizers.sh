@@ -11,7 +11,7 @@ build="$(realpath -m -- "${WPG_SANITIZE_BUILD_DIR:-$repo/build-sanitize}")"
 source "$repo/scripts/sanitizer-env.sh"
 
 wpg_sanitizer_tree "$build"
-wpg_sanitizer_build "$build"
+wpg_sanitizer_build "$build" "$build/build.log"
 wpg_sanitizer_env "$build/sanitizer-reports"
 status=0
 ctest --test-dir "$build" --output-on-failure -j"$(nproc)" || status=$?
