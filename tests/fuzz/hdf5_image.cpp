@@ -191,7 +191,8 @@ bool readAttribute(hid_t object, hsize_t index, Entry* entry) {
       H5Aopen_by_idx(object, ".", H5_INDEX_NAME, H5_ITER_INC, index, H5P_DEFAULT, H5P_DEFAULT);
   if (attribute < 0) return false;
   AttributeEntry& result = entry->attribute;
-  std::vector<char> name(static_cast<std::size_t>(std::max<ssize_t>(H5Aget_name(attribute, 0, nullptr), 0)) + 1);
+  const ssize_t name_length = H5Aget_name(attribute, 0, nullptr);
+  std::vector<char> name(static_cast<std::size_t>(std::max<ssize_t>(name_length, 0)) + 1);
   H5Aget_name(attribute, name.size(), name.data());
   result.name = name.data();
   const hid_t type = H5Aget_type(attribute);
@@ -316,8 +317,8 @@ FileImage decode(const std::uint8_t* data, std::size_t size, std::uint64_t max_r
       if (array.rank == 1) array.columns = 1;
       array.step = in.number();
       const std::uint64_t wanted = in.unsignedValue(4);
-      const std::uint64_t count =
-          std::min({wanted, valueCount(array), kMaxWrittenValues, std::uint64_t{in.remaining() / 8}});
+      const std::uint64_t available = in.remaining() / 8;
+      const std::uint64_t count = std::min({wanted, valueCount(array), kMaxWrittenValues, available});
       array.values.resize(count);
       for (double& value : array.values) value = in.number();
     } else if (entry.kind == Entry::Kind::kAttribute) {

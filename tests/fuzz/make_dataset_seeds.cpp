@@ -53,7 +53,8 @@ int main(int argc, char** argv) {
     }
     const std::filesystem::path out = out_dir / std::filesystem::path(argv[i]).stem();
     std::ofstream(out, std::ios::binary)
-        .write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+        .write(reinterpret_cast<const char*>(bytes.data()),
+               static_cast<std::streamsize>(bytes.size()));
     std::printf("%s: %zu objects, %zu bytes\n", out.c_str(), image.entries.size(), bytes.size());
   }
   return 0;
