@@ -13,6 +13,11 @@ source "$repo/scripts/sanitizer-env.sh"
 wpg_sanitizer_tree "$build"
 wpg_sanitizer_build "$build" "$build/build.log"
 wpg_sanitizer_env "$build/sanitizer-reports"
+# The tests' temporary folders in the tree (kept there when a test fails), out of reach of
+# whatever cleans /tmp meanwhile.
+export TMPDIR="$build/tmp"
+rm -rf "$TMPDIR"
+mkdir -p "$TMPDIR"
 status=0
 ctest --test-dir "$build" --output-on-failure -j"$(nproc)" || status=$?
 wpg_sanitizer_reports "$build/sanitizer-reports" || status=1
