@@ -9,7 +9,7 @@
 set -euo pipefail
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="$(realpath -m -- "${WPG_SANITIZE_BUILD_DIR:-$repo/build-sanitize}")"
-# shellcheck source=sanitizer-env.sh
+# shellcheck source=scripts/sanitizer-env.sh
 source "$repo/scripts/sanitizer-env.sh"
 
 seconds="${1:-60}"
@@ -24,7 +24,7 @@ done
 
 wpg_sanitizer_tree "$build"
 wpg_sanitizer_build "$build" "$build/build-fuzz.log" "${targets[@]}" make_dataset_seeds
-wpg_sanitizer_env
+wpg_sanitizer_env ""  # reports on stderr, in the fuzzer's log with the input that caused them
 
 # Seeds of the dataset reader: real run datasets (the regression references), every dataset cut
 # to 40 stored rows (make_dataset_seeds.cpp): small inputs, the real shapes and attributes.

@@ -1,3 +1,4 @@
+# shellcheck shell=bash
 # Sourced by scripts/test-sanitizers.sh and scripts/fuzz.sh: the instrumented build tree and the
 # sanitizer runtime options. Expects $repo (the source tree).
 repo="${repo:?}"

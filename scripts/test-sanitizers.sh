@@ -7,7 +7,7 @@
 set -euo pipefail
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="$(realpath -m -- "${WPG_SANITIZE_BUILD_DIR:-$repo/build-sanitize}")"
-# shellcheck source=sanitizer-env.sh
+# shellcheck source=scripts/sanitizer-env.sh
 source "$repo/scripts/sanitizer-env.sh"
 
 wpg_sanitizer_tree "$build"
