@@ -3,17 +3,25 @@
 # (or in $WPG_BUILD_DIR). Idempotent: quiet when everything is already installed and built.
 # Works from any folder.
 #
-#   scripts/setup.sh              the default: everything but MPI
-#   scripts/setup.sh --with-mpi   also Open MPI (openmpi-bin, libopenmpi-dev) and a build with
-#                                 WPG_WITH_MPI=ON: `mpirun -np R wpg batch ...` (README, "Running
-#                                 on a cluster")
+#   scripts/setup.sh                 the default: everything but MPI and clang
+#   scripts/setup.sh --with-mpi      also Open MPI (openmpi-bin, libopenmpi-dev) and a build with
+#                                    WPG_WITH_MPI=ON: `mpirun -np R wpg batch ...` (README,
+#                                    "Running on a cluster")
+#   scripts/setup.sh --with-clang    also clang 14 and its sanitizer/libFuzzer runtimes
+#                                    (scripts/test-sanitizers.sh, scripts/fuzz.sh)
+#   scripts/setup.sh --packages-only install the packages, do not build build/
 set -euo pipefail
 
 with_mpi=""
+with_clang=0
+packages_only=0
 for argument in "$@"; do
   case "$argument" in
     --with-mpi) with_mpi=yes ;;
-    *) echo "setup: error: unknown option '$argument' (expected --with-mpi)" >&2; exit 2 ;;
+    --with-clang) with_clang=1 ;;
+    --packages-only) packages_only=1 ;;
+    *) echo "setup: error: unknown option '$argument' (expected --with-mpi, --with-clang, --packages-only)" >&2
+       exit 2 ;;
   esac
 done
 
@@ -29,6 +37,7 @@ packages=(build-essential cmake libeigen3-dev libhdf5-dev libcli11-dev libgtest-
           libompl-dev libboost-serialization-dev libboost-filesystem-dev libboost-system-dev
           python3-h5py python3-matplotlib python3-yaml)
 if [[ -n "$with_mpi" ]]; then packages+=(openmpi-bin libopenmpi-dev); fi
+if ((with_clang)); then packages+=(clang-14 libclang-rt-14-dev); fi
 
 missing=()
 for package in "${packages[@]}"; do
@@ -52,6 +61,7 @@ if ((${#missing[@]})); then
   fi
   rm -f "$log"
 fi
+((packages_only)) && exit 0
 
 jobs="$(nproc)"
 log="$build/setup-build.log"

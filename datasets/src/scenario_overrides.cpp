@@ -124,9 +124,16 @@ ParsedOverride parseOverride(const std::string& text, Source* source) {
   ParsedOverride parsed;
   parsed.text = text;
   parsed.path = parseOverrideKey(key, text, *source);
-  std::vector<YAML::Node> documents;
   try {
-    documents = YAML::LoadAll(value_text);
+    // A second document ('1\n---\n2') would otherwise be dropped without a word.
+    if (countYamlDocuments(value_text, 2) > 1) {
+      source->failFile("--set '" + text + "': key '" + key +
+                       (value_text.find("---") != std::string::npos
+                            ? "': expected one YAML value, got 2 documents (separated by '---')"
+                            : "': expected a YAML value, got a text yaml-cpp reads as endless "
+                              "empty documents (a lone ',' does that)"));
+    }
+    parsed.value = YAML::Load(value_text);  // null when the text has no document
   } catch (const YAML::DeepRecursion&) {
     source->failFile("--set '" + text + "': key '" + key +
                      "': expected a YAML value with lists and maps nested less deeply (the YAML "
@@ -135,13 +142,6 @@ ParsedOverride parseOverride(const std::string& text, Source* source) {
     source->failFile("--set '" + text + "': key '" + key +
                      "': expected a YAML value, got a syntax error: " + error.msg);
   }
-  // A second document ('1\n---\n2') would otherwise be dropped without a word.
-  if (documents.size() > 1) {
-    source->failFile("--set '" + text + "': key '" + key +
-                     "': expected one YAML value, got " + std::to_string(documents.size()) +
-                     " documents (separated by '---')");
-  }
-  parsed.value = documents.empty() ? YAML::Node(YAML::NodeType::Null) : documents.front();
   // From now on, messages about this key say that the value came from --set.
   source->addOverride({pathText(parsed.path, parsed.path.size()), text});
   return parsed;

@@ -20,6 +20,7 @@
 #include <utility>
 
 #include <yaml-cpp/depthguard.h>
+#include <yaml-cpp/eventhandler.h>
 
 #include "wpg/datasets/input_limits.hpp"
 
@@ -274,10 +275,43 @@ bool present(const Entries& entries, const std::string& name) {
 // Documents
 // ------------------------------------------------------------------------------------------
 
+namespace {
+
+// Ignores every event: only the number of documents is wanted.
+class DocumentCounter : public YAML::EventHandler {
+ public:
+  void OnDocumentStart(const YAML::Mark&) override {}
+  void OnDocumentEnd() override {}
+  void OnNull(const YAML::Mark&, YAML::anchor_t) override {}
+  void OnAlias(const YAML::Mark&, YAML::anchor_t) override {}
+  void OnScalar(const YAML::Mark&, const std::string&, YAML::anchor_t,
+                const std::string&) override {}
+  void OnSequenceStart(const YAML::Mark&, const std::string&, YAML::anchor_t,
+                       YAML::EmitterStyle::value) override {}
+  void OnSequenceEnd() override {}
+  void OnMapStart(const YAML::Mark&, const std::string&, YAML::anchor_t,
+                  YAML::EmitterStyle::value) override {}
+  void OnMapEnd() override {}
+};
+
+}  // namespace
+
+int countYamlDocuments(const std::string& text, int limit) {
+  std::istringstream stream(text);
+  YAML::Parser parser(stream);
+  DocumentCounter ignore;
+  int count = 0;
+  while (count < limit && parser.HandleNextDocument(ignore)) ++count;
+  return count;
+}
+
 YAML::Node parseYamlText(const std::string& text, const std::string& origin) {
-  std::vector<YAML::Node> documents;
   try {
-    documents = YAML::LoadAll(text);
+    if (countYamlDocuments(text, 2) > 1) {
+      throw InputError(oneLine(origin) +
+                       ": expected one YAML document, got several (separated by '---')");
+    }
+    return YAML::Load(text);  // the only document (null when the text has none)
   } catch (const YAML::DeepRecursion& error) {
     throw InputError(oneLine(origin + ": line " + std::to_string(error.mark.line + 1) +
                              ": expected lists and maps nested less deeply (the YAML reader "
@@ -290,12 +324,6 @@ YAML::Node parseYamlText(const std::string& text, const std::string& origin) {
     }
     throw InputError(oneLine(origin + ": " + where + "YAML syntax error: " + error.msg));
   }
-  if (documents.size() > 1) {
-    throw InputError(oneLine(origin) + ": expected one YAML document, got " +
-                     std::to_string(documents.size()) + " (separated by '---')");
-  }
-  if (documents.empty()) return YAML::Node(YAML::NodeType::Null);
-  return documents.front();
 }
 
 std::string readTextFile(const std::string& path, const std::string& what) {

@@ -134,6 +134,12 @@ bool present(const Entries& entries, const std::string& name);
 
 // `text` parsed as one YAML document; `origin` names it in messages.
 YAML::Node parseYamlText(const std::string& text, const std::string& origin);
+
+// The number of YAML documents in `text`, counting no further than `limit` (throws
+// YAML::Exception on a syntax error). Use it, not YAML::LoadAll: on some malformed texts (a
+// lone ',') yaml-cpp 0.7 returns empty documents forever, and LoadAll grows its list until
+// memory runs out (found by tests/fuzz/fuzz_scenario_loader).
+int countYamlDocuments(const std::string& text, int limit);
 // The text of the file at `path`; `what` says what it is in messages ("scenario file").
 // Throws InputError naming the file (missing, a folder, unreadable).
 std::string readTextFile(const std::string& path, const std::string& what);

@@ -33,7 +33,9 @@ every = row["tick_time"]
 assert every["count"] == 2000, every
 assert every["average"] < tick["average"], (every, tick)  # the NMPC ticks are the heavy ones
 assert set(row["nmpc_tick_stage_mean"]) == {"wpg", "ik", "multibody_zmp", "filter"}, row
-assert row["real_time_factor"] > 1, row
+# Faster than real time, but under the sanitizers (WPG_SANITIZED, tests/cli/CMakeLists.txt).
+import os
+assert row["real_time_factor"] > 1 or os.environ.get("WPG_SANITIZED") == "1", row
 assert [p["name"] for p in data["paper"]] == ["paper A", "paper B"], data["paper"]
 assert data["cpu"] and data["os"], data
 assert row["zmp_error"]["rms_after"] * 3 < row["zmp_error"]["rms_before"], row

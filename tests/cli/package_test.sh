@@ -1,11 +1,14 @@
 #!/usr/bin/env bash
-# package_test.sh CMAKE BUILD_DIR DOWNSTREAM_SOURCE: installs the existing build tree into a
-# temporary prefix (no rebuild), then configures, builds and runs a downstream project that
-# uses find_package(wpg); finally checks that the installed wpg finds its installed data.
+# package_test.sh CMAKE BUILD_DIR DOWNSTREAM_SOURCE [CMAKE_ARG...]: installs the existing build
+# tree into a temporary prefix (no rebuild), then configures, builds and runs a downstream
+# project that uses find_package(wpg); finally checks that the installed wpg finds its installed
+# data. The CMAKE_ARGs go to the downstream configure (an instrumented build passes its compiler
+# and sanitizer flags: its libraries need the same runtime in the downstream executable).
 set -euo pipefail
 # shellcheck source=common.sh
 source "$(dirname "$0")/common.sh"
 cmake="$1"; build_dir="$2"; downstream="$3"
+shift 3
 make_workdir
 prefix="$WORKDIR/prefix"
 "$cmake" --install "$build_dir" --prefix "$prefix" >"$WORKDIR/install.log" 2>&1 \
@@ -13,7 +16,7 @@ prefix="$WORKDIR/prefix"
 [[ -f "$prefix/lib/cmake/wpg/wpgConfig.cmake" || -n "$(find "$prefix" -name wpgConfig.cmake)" ]] \
   || fail "no wpgConfig.cmake installed"
 "$cmake" -S "$downstream" -B "$WORKDIR/build" -DCMAKE_BUILD_TYPE=Release \
-  -DCMAKE_PREFIX_PATH="$prefix" >"$WORKDIR/configure.log" 2>&1 \
+  -DCMAKE_PREFIX_PATH="$prefix" "$@" >"$WORKDIR/configure.log" 2>&1 \
   || { cat "$WORKDIR/configure.log"; fail "configuring the downstream project"; }
 "$cmake" --build "$WORKDIR/build" -j2 >"$WORKDIR/build.log" 2>&1 \
   || { cat "$WORKDIR/build.log"; fail "building the downstream project"; }

@@ -138,6 +138,15 @@ TEST(OverrideLimits, ASecondYamlDocumentIsRefused) {
   EXPECT_EQ(overrideError("walk_forward", {"walking.weight_cop=2"}), "");
 }
 
+// yaml-cpp 0.7's LoadAll returns empty documents forever on a lone ',' (memory grows until it
+// runs out): the value's documents are counted with the parser, stopping at 2.
+TEST(OverrideLimits, AValueOfALoneCommaIsASyntaxErrorNotAnEndlessList) {
+  for (const char* value : {",", "1\n,", ",\n---\n,"}) {
+    const std::string message = overrideError("walk_forward", {std::string("duration=") + value});
+    EXPECT_NE(message.find("key 'duration'"), std::string::npos) << message;
+  }
+}
+
 TEST(OverrideLimits, ControlCharactersOfKeysAndValuesAreEscaped) {
   const std::string key_message = overrideError("walk_forward", {"a\x1b[2Jb\nc=1"});
   EXPECT_NE(key_message.find("a\\x1b[2Jb\\nc"), std::string::npos) << key_message;

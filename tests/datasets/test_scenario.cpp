@@ -488,6 +488,16 @@ TEST_F(ScenarioFiles, YamlSyntaxErrorGivesTheLine) {
   expectError("syntax2.yaml", "name: a\n  robot: hrp2\n", {"syntax error", "line 2"});
 }
 
+// Texts on which yaml-cpp 0.7's LoadAll never returns (empty documents forever, memory growing
+// until bad_alloc; found by tests/fuzz/fuzz_scenario_loader): one error, at once.
+TEST_F(ScenarioFiles, EndlessDocumentsAreAnError) {
+  expectError("comma.yaml", ",\n", {"comma.yaml", "one YAML document"});
+  expectError("comma_after_comment.yaml", "# a scenario\n, size: [0.6, 0.4]\n",
+              {"one YAML document"});
+  expectError("two.yaml", replaced(kValidScenario, "duration: 5.0", "duration: 5.0\n---\na: 1"),
+              {"two.yaml", "one YAML document"});
+}
+
 TEST_F(ScenarioFiles, UnknownKeysAreErrors) {
   expectError("typo.yaml", replaced(kValidScenario, "duration: 5.0", "duration: 5.0\ndurration: 6"),
               {"key 'durration'", "unknown key", "known keys", "duration"});

@@ -20,8 +20,9 @@
 // ---- heap allocation counter (glibc: every malloc of the process, whatever the TU) ----------
 // Eigen allocates with std::malloc (operator new does too), so replacing malloc sees every
 // heap allocation, also in the library's translation units and in Release builds, where
-// Eigen's own EIGEN_RUNTIME_NO_MALLOC check (an eigen_assert) is compiled out. Not with
-// sanitizers, which replace malloc themselves.
+// Eigen's own EIGEN_RUNTIME_NO_MALLOC check (an eigen_assert) is compiled out. Sanitizers
+// replace malloc themselves: there (scripts/test-sanitizers.sh) the count comes from their
+// allocation hook, which their allocator calls for every allocation.
 #if defined(__has_feature)
 #if __has_feature(address_sanitizer) || __has_feature(memory_sanitizer)
 #define WPG_TEST_SANITIZED 1
@@ -41,6 +42,22 @@ extern "C" void* malloc(std::size_t size) {
   if (g_count_mallocs) ++g_malloc_count;
   return __libc_malloc(size);
 }
+#elif defined(WPG_TEST_SANITIZED)
+#define WPG_TEST_COUNT_MALLOC 1
+// Declared in <sanitizer/allocator_interface.h> (compiler-rt and GCC's libsanitizer alike).
+extern "C" int __sanitizer_install_malloc_and_free_hooks(
+    void (*malloc_hook)(const volatile void*, std::size_t),
+    void (*free_hook)(const volatile void*));
+namespace {
+bool g_count_mallocs = false;
+long g_malloc_count = 0;
+void countMalloc(const volatile void*, std::size_t) {
+  if (g_count_mallocs) ++g_malloc_count;
+}
+void ignoreFree(const volatile void*) {}
+[[maybe_unused]] const int g_hook_installed =
+    __sanitizer_install_malloc_and_free_hooks(countMalloc, ignoreFree);
+}  // namespace
 #endif
 
 namespace {

@@ -1,0 +1,62 @@
+#!/usr/bin/env bash
+# scripts/fuzz.sh [SECONDS] [TARGET...]: runs each libFuzzer target (tests/fuzz/README.md) for
+# SECONDS (default 60, the CI smoke run) in the sanitizer tree build-sanitize/ (or
+# $WPG_SANITIZE_BUILD_DIR; built when needed). Targets: fuzz_scenario_loader,
+# fuzz_run_dataset_reader (default: both). The corpus grows in BUILD/fuzz/<target>/corpus and is
+# kept between runs; the seeds and tests/fuzz/regressions/<target>/ are run first. Fails on a
+# crash, hang (> 10 s for one input), leak, sanitizer report or allocation over 1 GB; the
+# input that did it is BUILD/fuzz/<target>/crash-* (or timeout-*, leak-*, oom-*).
+set -euo pipefail
+repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+build="$(realpath -m -- "${WPG_SANITIZE_BUILD_DIR:-$repo/build-sanitize}")"
+# shellcheck source=scripts/sanitizer-env.sh
+source "$repo/scripts/sanitizer-env.sh"
+
+seconds="${1:-60}"
+[[ "$seconds" =~ ^[1-9][0-9]*$ ]] || { echo "fuzz: error: SECONDS must be a positive integer, got '$seconds'" >&2; exit 2; }
+shift $(($# > 0 ? 1 : 0))
+targets=("$@")
+((${#targets[@]})) || targets=(fuzz_scenario_loader fuzz_run_dataset_reader)
+for target in "${targets[@]}"; do
+  [[ "$target" == fuzz_scenario_loader || "$target" == fuzz_run_dataset_reader ]] \
+    || { echo "fuzz: error: unknown target '$target' (fuzz_scenario_loader, fuzz_run_dataset_reader)" >&2; exit 2; }
+done
+
+wpg_sanitizer_tree "$build"
+wpg_sanitizer_build "$build" "$build/build-fuzz.log" "${targets[@]}" make_dataset_seeds
+wpg_sanitizer_env ""  # reports on stderr, in the fuzzer's log with the input that caused them
+
+# Seeds of the dataset reader: real run datasets (the regression references), every dataset cut
+# to 40 stored rows (make_dataset_seeds.cpp): small inputs, the real shapes and attributes.
+dataset_seeds="$build/fuzz/seeds/fuzz_run_dataset_reader"
+"$build/tests/fuzz/make_dataset_seeds" "$dataset_seeds" 40 \
+  "$repo"/datasets/references/{walk_forward,push,goal_with_yaw,obstacle_cluttered}.h5 >/dev/null
+
+status=0
+for target in "${targets[@]}"; do
+  work="$build/fuzz/$target"
+  mkdir -p "$work/corpus"
+  seeds=()
+  extra=()
+  case "$target" in
+    fuzz_scenario_loader)
+      seeds=("$repo/datasets/scenarios" "$repo/tests/fuzz/seeds/scenario_loader")
+      extra=(-dict="$repo/tests/fuzz/scenario_loader.dict") ;;
+    fuzz_run_dataset_reader)
+      seeds=("$dataset_seeds") ;;
+  esac
+  [[ -d "$repo/tests/fuzz/regressions/$target" ]] && seeds+=("$repo/tests/fuzz/regressions/$target")
+  echo "fuzz: $target for ${seconds} s (log: $work/fuzz.log)"
+  # -malloc_limit_mb: a dataset declaring more rows than memory must be refused, not allocated.
+  if "$build/tests/fuzz/$target" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
+       -malloc_limit_mb=1024 -print_final_stats=1 -artifact_prefix="$work/" "${extra[@]}" \
+       "$work/corpus" "${seeds[@]}" >"$work/fuzz.log" 2>&1; then
+    echo "fuzz: $target: ok, $(grep -m1 -o 'number_of_executed_units: [0-9]*' "$work/fuzz.log" \
+      | grep -o '[0-9]*$') executions, corpus $(find "$work/corpus" -type f | wc -l) inputs"
+  else
+    status=1
+    tail -n 80 "$work/fuzz.log" >&2
+    echo "fuzz: error: $target failed (log: $work/fuzz.log; inputs: $work/crash-*, timeout-*, leak-*, oom-*)" >&2
+  fi
+done
+exit "$status"

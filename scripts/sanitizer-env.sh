@@ -1,0 +1,61 @@
+# shellcheck shell=bash
+# Sourced by scripts/test-sanitizers.sh and scripts/fuzz.sh: the instrumented build tree and the
+# sanitizer runtime options. Expects $repo (the source tree).
+repo="${repo:?}"
+
+# wpg_sanitizer_tree BUILD: installs clang 14 when missing (setup.sh --with-clang), configures
+# BUILD once (clang 14, Release, -DWPG_SANITIZE=ON -DWPG_FUZZ=ON: one tree serves the test suite
+# and the fuzz targets; cmake/wpg_sanitizers.cmake).
+wpg_sanitizer_tree() {
+  local build="$1"
+  "$repo/scripts/setup.sh" --with-clang --packages-only
+  mkdir -p "$build"
+  if [[ ! -f "$build/CMakeCache.txt" ]]; then
+    echo "sanitizers: configuring $build (clang 14, ASan + UBSan, fuzz targets)"
+    CC=clang-14 CXX=clang++-14 cmake -S "$repo" -B "$build" -DCMAKE_BUILD_TYPE=Release \
+      -DWPG_SANITIZE=ON -DWPG_FUZZ=ON -DWPG_WITH_MPI=OFF >"$build/configure.log" 2>&1 \
+      || { cat "$build/configure.log" >&2; echo "sanitizers: error: configure failed" >&2; return 1; }
+  fi
+}
+
+# wpg_sanitizer_build BUILD LOG [TARGET...]: builds (everything without targets), log in LOG.
+wpg_sanitizer_build() {
+  local build="$1" log="$2"; shift 2
+  local targets=()
+  (($#)) && targets=(--target "$@")
+  echo "sanitizers: building ${*:-everything} (-j$(nproc); log: $log)"
+  cmake --build "$build" -j"$(nproc)" "${targets[@]}" >"$log" 2>&1 \
+    || { tail -n 60 "$log" >&2; echo "sanitizers: error: build failed" >&2; return 1; }
+}
+
+# wpg_sanitizer_env [REPORT_DIR]: the runtime options: halt at the first report, leaks checked,
+# suppressions (third-party code only) from tests/sanitizers/. With REPORT_DIR, every
+# instrumented process writes its reports to REPORT_DIR/<sanitizer>.<pid> instead of stderr:
+# also the processes run by test scripts, whose exit status a test may not look at.
+wpg_sanitizer_env() {
+  local reports="${1:-}" log_asan="" log_ubsan=""
+  if [[ -n "$reports" ]]; then
+    rm -rf "$reports"
+    mkdir -p "$reports"
+    log_asan="log_path=$reports/asan:"
+    log_ubsan="log_path=$reports/ubsan:"
+  fi
+  export ASAN_OPTIONS="${log_asan}detect_leaks=1:halt_on_error=1:strict_string_checks=1:check_initialization_order=1"
+  export UBSAN_OPTIONS="${log_ubsan}print_stacktrace=1:halt_on_error=1:suppressions=$repo/tests/sanitizers/ubsan.supp"
+  export LSAN_OPTIONS="suppressions=$repo/tests/sanitizers/lsan.supp:print_suppressions=0"
+}
+
+# wpg_sanitizer_reports REPORT_DIR: prints every report written there; fails if there is one.
+wpg_sanitizer_reports() {
+  local reports="$1" found=0 file
+  for file in "$reports"/*; do
+    [[ -f "$file" ]] || continue
+    found=1
+    echo "==== sanitizer report $file" >&2
+    cat "$file" >&2
+  done
+  if ((found)); then
+    echo "sanitizers: error: the reports above (in $reports)" >&2
+    return 1
+  fi
+}
