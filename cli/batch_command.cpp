@@ -167,10 +167,7 @@ int batchCommand(const BatchOptions& options) {
   if (options.resume && fs::exists(output, ec) && datasets::isDamagedHdf5File(output.string())) {
     // Killed inside HDF5's write of a run: nothing of it can be trusted. Kept aside, not
     // removed, and the study starts again (the same runs give the same file).
-    std::string aside = output.string() + ".damaged";
-    for (int n = 2; fs::exists(aside, ec); ++n) aside = output.string() + ".damaged-" + std::to_string(n);
-    fs::rename(output, aside, ec);
-    if (ec) throw std::runtime_error("cannot move the damaged " + output.string() + " aside: " + ec.message());
+    const std::string aside = datasets::moveDamagedFileAside(output.string());
     std::cerr << study.name << ": " << output.string()
               << " cannot be read by HDF5 (killed inside a write); moved to " << aside
               << ", starting again\n";

@@ -69,10 +69,7 @@ std::vector<bool> prepareShardFolder(const datasets::Study& study,
     }
   }
   for (const std::string& file : damaged) {
-    std::string aside = file + ".damaged";
-    for (int n = 2; fs::exists(aside, ec); ++n) aside = file + ".damaged-" + std::to_string(n);
-    fs::rename(file, aside, ec);
-    if (ec) throw std::runtime_error("cannot move the damaged " + file + " aside: " + ec.message());
+    const std::string aside = datasets::moveDamagedFileAside(file);
     std::cerr << study.name << ": " << file << " cannot be read by HDF5 (a rank killed inside a "
               << "write); moved to " << aside << ", its runs are run again\n";
   }

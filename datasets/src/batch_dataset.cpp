@@ -6,6 +6,7 @@
 #include "wpg/datasets/batch_dataset.hpp"
 
 #include <cmath>
+#include <filesystem>
 #include <limits>
 #include <mutex>
 #include <stdexcept>
@@ -384,6 +385,17 @@ bool isBatchFile(const std::string& path) {
 namespace {
 herr_t visitNothing(hid_t, const char*, const H5O_info_t*, void*) { return 0; }
 }  // namespace
+
+std::string moveDamagedFileAside(const std::string& path) {
+  std::error_code ec;
+  std::string aside = path + ".damaged";
+  for (int n = 2; std::filesystem::exists(aside, ec); ++n) {
+    aside = path + ".damaged-" + std::to_string(n);
+  }
+  std::filesystem::rename(path, aside, ec);
+  if (ec) throw std::runtime_error("cannot move the damaged " + path + " aside: " + ec.message());
+  return aside;
+}
 
 bool isDamagedHdf5File(const std::string& path) {
   std::lock_guard<std::mutex> lock(hdf5Mutex());

@@ -109,6 +109,9 @@ bool isBatchFile(const std::string& path);
 // again. Also true for a batch file killed before its summary table was complete. False for a
 // readable file and for a file that is not HDF5 at all.
 bool isDamagedHdf5File(const std::string& path);
+// Renames such a file to PATH.damaged (PATH.damaged-2, -3, ... when taken) and returns the new
+// name: kept for a post-mortem, never removed. Throws std::runtime_error when the rename fails.
+std::string moveDamagedFileAside(const std::string& path);
 BatchSummaryTable readBatchSummary(const std::string& path);
 
 }  // namespace wpg::datasets
