@@ -18,7 +18,7 @@ namespace wpg::datasets::detail {
 
 // --- text ------------------------------------------------------------------------------------
 
-std::string oneLine(std::string text);  // newlines and tabs as spaces: messages are one line
+std::string oneLine(std::string text);  // control characters escaped (\n, \x1b): messages are one line
 std::string joinNames(const std::vector<std::string>& names);  // "a, b, c"
 std::string childKey(const std::string& parent, const std::string& name);  // parent.name
 std::string indexKey(const std::string& parent, std::size_t index);        // parent[index]
