@@ -1,9 +1,10 @@
+// generateWalk: the walk loop with the request's velocity schedule (walk_generator.hpp).
 #include "wpg/walk_generator.hpp"
 
-#include <cmath>
 #include <stdexcept>
 #include <string>
 
+#include "wpg/obstacles.hpp"
 #include "wpg/online_walking_generator.hpp"
 
 namespace wpg {
@@ -32,60 +33,6 @@ void requireFeetClear(const OnlineWalkingGenerator& generator, const WalkRequest
 
 }  // namespace
 
-void checkWalkSize(const WalkingParameters& parameters, const WalkRequest& request) {
-  // Both validated: duration <= kMaxWalkDuration, control_period >= 1e-6 s; the quotient is
-  // compared as a double, before any conversion to an integer.
-  // The walk has lround(duration / T) NMPC iterations: none below half a sampling period, and
-  // a walk of one sample is no walk (nothing to replay, plot or check).
-  if (!(request.duration >= 0.5 * parameters.sampling_period)) {
-    throw std::invalid_argument(
-        "'duration': expected at least half a sampling period (" +
-        std::to_string(0.5 * parameters.sampling_period) +
-        " s: one NMPC iteration), got " + std::to_string(request.duration));
-  }
-  const double periods = request.duration / parameters.control_period;
-  if (!(periods <= kMaxControlPeriods)) {
-    throw std::invalid_argument(
-        "'duration': expected at most " + std::to_string(static_cast<long long>(kMaxControlPeriods)) +
-        " control periods of " + std::to_string(parameters.control_period) +
-        " s (the walk is kept in memory, ~0.3 kB a period), got " + std::to_string(periods));
-  }
-}
-
-void appendControlSample(const ControlSample& s, WalkTrajectory& out) {
-  out.time.push_back(s.time);
-  out.com.push_back(s.com_position);
-  out.com_vel.push_back(s.com_velocity);
-  out.com_acc.push_back(s.com_acceleration);
-  out.cop.push_back(s.cop);
-  out.left_foot.push_back(s.left_foot);
-  out.right_foot.push_back(s.right_foot);
-  out.free_flyer_yaw.push_back(s.free_flyer_yaw);
-  out.support.push_back(s.support);
-}
-
-
-// Relaxed obstacle rows (a robot enclosed or pushed into an obstacle) may let a step land in
-// a margin: the walk is then recorded as failed.
-void checkLandingsClear(const WalkingParameters& parameters, const WalkRequest& request,
-                        const ObstacleDistanceOracle& distance, WalkResult& result) {
-  for (const Footstep& step : result.trajectory.footsteps) {
-    if (step.landing_time <= 0.0) continue;
-    for (int o = 0; o < static_cast<int>(request.obstacles.size()); ++o) {
-      const double clearance = stepCentreClearance(distance, o, request.obstacles[o],
-                                                   parameters, step.pose.head<2>());
-      if (clearance < -1e-6 && result.success) {
-        result.success = false;
-        result.message = "the step landing at t = " + std::to_string(step.landing_time) +
-                         " s is " + std::to_string(-clearance) + " m inside obstacle " +
-                         std::to_string(o) + "'s margin (" + stepCentreBoundName(parameters) +
-                         "; its constraint had to be relaxed)";
-      }
-    }
-  }
-}
-
-
 WalkResult generateWalk(const WalkingParameters& parameters, const WalkRequest& request,
                         const ConstraintFamilies& extra_families,
                         ControlLoopObserver* observer) {
@@ -98,58 +45,8 @@ WalkResult generateWalk(const WalkingParameters& parameters, const WalkRequest& 
     generator.setObstacles(request.obstacles);
     requireFeetClear(generator, request, *generator.obstacleDistance());
   }
-  const double T = parameters.sampling_period;
-  const int sub_samples = static_cast<int>(std::lround(T / parameters.control_period));
-  const int iterations = static_cast<int>(std::lround(request.duration / T));
-
-  WalkResult result;
-  WalkTrajectory& out = result.trajectory;
-  out.reserve(static_cast<std::size_t>(iterations) * sub_samples + 1, iterations);
-  out.constraint_families = generator.patternGenerator().model().familyInfo();
-  for (FootSide side : {FootSide::kLeft, FootSide::kRight})
-    out.footsteps.push_back({0.0, generator.patternGenerator().footPose(side), side});
-
-  bool fallen = false;
-  for (int k = 0; k < iterations && !fallen; ++k) {
-    generator.setCommand(request.commandAt(k * T));
-    for (int i = 0; i < sub_samples; ++i) {
-      generator.setPushAcceleration(request.pushAccelerationAt(generator.time()));
-      if (observer) observer->beforeStep(generator);
-      const ControlSample& sample = generator.step();
-      if (generator.fallen()) {
-        out.mpc.push_back(generator.lastIteration());
-        result.success = false;
-        result.message = "the robot fell at t = " + std::to_string(sample.time) +
-                         " s: capture point " + std::to_string(generator.captureDistance()) +
-                         " m from the nearest foot (limit " +
-                         std::to_string(request.generator.fall_capture_distance) + " m)";
-        appendControlSample(sample, out);  // the closing sample
-        fallen = true;
-        break;
-      }
-      if (sample.nmpc_sample) {
-        const MpcIterationLog& log = generator.lastIteration();
-        out.mpc.push_back(log);
-        if (result.success && iterationStatusFailsWalk(log.status)) {
-          result.success = false;
-          result.message = std::string("NMPC iteration at t = ") + std::to_string(sample.time) +
-                           " s ended with status '" + iterationStatusName(log.status) + "'";
-        }
-      }
-      if (observer) observer->afterStep(generator, sample);
-      appendControlSample(sample, out);
-      if (generator.landed()) out.footsteps.push_back(generator.lastLanding());
-    }
-  }
-  if (result.success && generator.obstacleDistance())
-    checkLandingsClear(parameters, request, *generator.obstacleDistance(), result);
-  if (!fallen) {
-    // The sample at the end belongs to the last period: a swing foot still in the air is
-    // where its polynomial puts it (not back at its lift-off pose).
-    generator.setPushAcceleration(request.pushAccelerationAt(generator.time()));
-    appendControlSample(generator.currentSample(), out);
-  }
-  return result;
+  ScheduledCommands commands(request);
+  return runWalkLoop(generator, request, commands, observer);
 }
 
 }  // namespace wpg

@@ -7,7 +7,7 @@
 #include <stdexcept>
 
 #include "wpg/online_walking_generator.hpp"
-#include "wpg/walk_generator.hpp"
+#include "wpg/walk_loop.hpp"
 
 namespace wpg::planning {
 namespace {
@@ -159,77 +159,130 @@ void checkGoalRequest(const wpg::WalkingParameters& parameters, const wpg::WalkR
   }
 }
 
-GoalWalkResult walkToGoal(const wpg::WalkingParameters& parameters, const wpg::WalkRequest& request,
-                          const wpg::GoalRequest& goal,
-                          const PathFollowerSettings& follower_settings) {
-  parameters.validate();
-  request.validate();
-  checkWalkSize(parameters, request);
-  if (!goal.enabled) throw std::invalid_argument("walkToGoal: the goal request is not enabled");
-  checkGoalRequest(parameters, request, goal);
+namespace {
 
-  OnlineWalkingGenerator generator(parameters, request.generator);
-  if (!request.obstacles.empty()) generator.setObstacles(request.obstacles);
-  const double radius = plannerRobotRadius(parameters, goal.planner);
-  const PlanningBounds bounds =
-      planningBounds(request.obstacles, Eigen::Vector2d::Zero(), goal.goal.position, goal.planner);
-  std::vector<bool> known(request.obstacles.size());
-  for (std::size_t i = 0; i < known.size(); ++i) known[i] = goal.knownToPlanner(i);
-  // Each unknown obstacle alone, to test whether it blocks the route once sensed.
-  std::vector<World> single_worlds;
-  for (const wpg::Obstacle& obstacle : request.obstacles)
-    single_worlds.emplace_back(std::vector<wpg::Obstacle>{obstacle});
+// The commands of a walk to a goal: the path follower along the planned route, with the
+// planning, sensing and replanning of goal_walk.hpp between NMPC iterations. Ends the walk when
+// the robot stands within the goal's tolerance, or stands still with no route left.
+class GoalCommands final : public CommandSource {
+ public:
+  GoalCommands(const wpg::WalkingParameters& parameters, const wpg::WalkRequest& request,
+               const wpg::GoalRequest& goal, const PathFollowerSettings& follower_settings,
+               GoalWalkResult& result)
+      : parameters_(parameters),
+        request_(request),
+        goal_(goal),
+        radius_(plannerRobotRadius(parameters, goal.planner)),
+        bounds_(planningBounds(request.obstacles, Eigen::Vector2d::Zero(), goal.goal.position,
+                               goal.planner)),
+        follower_(parameters, goal.goal, withLookahead(follower_settings, goal)),
+        no_planner_(goal.planner.algorithm == kNoPlanner),
+        result_(result) {
+    known_.resize(request.obstacles.size());
+    for (std::size_t i = 0; i < known_.size(); ++i) known_[i] = goal.knownToPlanner(i);
+    // Each unknown obstacle alone, to test whether it blocks the route once sensed.
+    for (const wpg::Obstacle& obstacle : request.obstacles)
+      single_worlds_.emplace_back(std::vector<wpg::Obstacle>{obstacle});
+  }
 
-  PathFollowerSettings settings = follower_settings;
-  settings.lookahead = goal.planner.lookahead;
-  PathFollower follower(parameters, goal.goal, settings);
+  bool nextCommand(int k, double t, OnlineWalkingGenerator& generator,
+                   Eigen::Vector3d& command) override {
+    const ControlSample& now = generator.currentSample();
+    const Eigen::Vector2d position = now.com_position.head<2>();
+    const double yaw = now.free_flyer_yaw;
+    const double frame_yaw = parameters_.heading_reference == HeadingReference::kCommand
+                                 ? generator.patternGenerator().commandedHeading()
+                                 : yaw;
+    if (!no_route_) {
+      if (k == 0) {
+        no_route_ = !plan(t, PlanTrigger::kStart, Eigen::Vector3d(position.x(), position.y(), yaw));
+      } else if (follower_.phase() == FollowerPhase::kFollow && !no_planner_) {
+        replanIfNeeded(t, position, yaw);
+      }
+      if (!no_route_ && follower_.phase() == FollowerPhase::kStop &&
+          generator.patternGenerator().standing()) {
+        // Standing after the final side-by-side step: the pose between the ankles.
+        const Eigen::Vector2d stand = 0.5 * (now.left_foot.head<2>() + now.right_foot.head<2>());
+        if (follower_.atGoal(stand, yaw)) {
+          result_.goal_reached = true;
+          result_.time_to_goal = t;
+          return false;
+        }
+        if (++stop_retries_ > kMaxStopRetries) {
+          result_.outcome =
+              "stopped outside the tolerance " + std::to_string(stop_retries_) + " times";
+          no_route_ = true;
+        } else {
+          no_route_ = !plan(t, PlanTrigger::kRetry, Eigen::Vector3d(stand.x(), stand.y(), yaw));
+        }
+      }
+      if (!no_route_) command = follower_.command(position, yaw, frame_yaw);
+    }
+    // Nothing more will happen: the robot stands where the route ended.
+    return !(no_route_ && generator.patternGenerator().standing() && k > 0);
+  }
 
-  GoalWalkResult result;
-  result.time_to_goal = kNaN;
-  WalkResult& walk = result.walk;
-  WalkTrajectory& out = walk.trajectory;
-  const double T = parameters.sampling_period;
-  const int sub_samples = static_cast<int>(std::lround(T / parameters.control_period));
-  const int iterations = static_cast<int>(std::lround(request.duration / T));
-  out.reserve(static_cast<std::size_t>(iterations) * sub_samples + 1, iterations);
-  out.constraint_families = generator.patternGenerator().model().familyInfo();
-  for (FootSide side : {FootSide::kLeft, FootSide::kRight})
-    out.footsteps.push_back({0.0, generator.patternGenerator().footPose(side), side});
+ private:
+  static PathFollowerSettings withLookahead(PathFollowerSettings settings,
+                                            const wpg::GoalRequest& goal) {
+    settings.lookahead = goal.planner.lookahead;
+    return settings;
+  }
 
-  const bool no_planner = goal.planner.algorithm == kNoPlanner;
+  // Sensing: unknown obstacles within range become known; replans if one blocks the route, or
+  // if the robot strayed from it (at most once per kStrayedReplanInterval).
+  void replanIfNeeded(double t, const Eigen::Vector2d& position, double yaw) {
+    bool blocked = false;
+    for (std::size_t i = 0; i < known_.size(); ++i) {
+      if (known_[i]) continue;
+      const World& single = single_worlds_[i];
+      if (single.clearance(position) > goal_.planner.sensing_range) continue;
+      known_[i] = true;
+      blocked = blocked || routeBlocked(follower_.route(), follower_.progress(), single, radius_);
+    }
+    const Eigen::Vector3d pose(position.x(), position.y(), yaw);
+    if (blocked) {
+      no_route_ = !plan(t, PlanTrigger::kBlocked, pose);
+    } else if (follower_.distanceToRoute(position) > goal_.planner.replan_distance &&
+               t - last_strayed_replan_ >= kStrayedReplanInterval) {
+      last_strayed_replan_ = t;
+      no_route_ = !plan(t, PlanTrigger::kStrayed, pose);
+    }
+  }
+
   // Plans a route from the robot's pose; false (and the outcome set) when there is none.
-  const auto plan = [&](double time, PlanTrigger trigger, const Eigen::Vector3d& pose) {
+  bool plan(double time, PlanTrigger trigger, const Eigen::Vector3d& pose) {
     PlanRecord record;
     record.time = time;
     record.trigger = trigger;
     record.start = pose;
-    if (no_planner) {  // the straight line, whatever is on it
-      const Eigen::Vector2d to = goal.goal.position;
+    const Eigen::Vector2d to = goal_.goal.position;
+    if (no_planner_) {  // the straight line, whatever is on it
       const double heading = std::atan2(to.y() - pose.y(), to.x() - pose.x());
       record.plan.status = PlanStatus::kExactSolution;
       record.plan.waypoints = {Eigen::Vector3d(pose.x(), pose.y(), heading),
                                Eigen::Vector3d(to.x(), to.y(), heading)};
       record.plan.length = (to - pose.head<2>()).norm();
-      follower.setRoute({pose.head<2>(), to});
-      result.plans.push_back(std::move(record));
+      follower_.setRoute({pose.head<2>(), to});
+      result_.plans.push_back(std::move(record));
       return true;
     }
-    const RoutePlanner planner(World(knownObstacles(request, known)), goal.planner, radius, bounds);
-    for (const bool k : known) record.known_obstacles += k ? 1 : 0;
+    const RoutePlanner planner(World(knownObstacles(request_, known_)), goal_.planner, radius_,
+                               bounds_);
+    for (const bool k : known_) record.known_obstacles += k ? 1 : 0;
     Eigen::Vector2d from = pose.head<2>();
-    const bool escaped = escape(planner.world(), radius, &from);
-    const Eigen::Vector2d to = goal.goal.position;
+    const bool escaped = escape(planner.world(), radius_, &from);
     const double goal_yaw =
-        goal.goal.has_yaw ? goal.goal.yaw : std::atan2(to.y() - from.y(), to.x() - from.x());
+        goal_.goal.has_yaw ? goal_.goal.yaw : std::atan2(to.y() - from.y(), to.x() - from.x());
     if (escaped) {
       const std::uint32_t seed =
-          goal.planner.seed + static_cast<std::uint32_t>(result.plans.size());
+          goal_.planner.seed + static_cast<std::uint32_t>(result_.plans.size());
       record.plan = planner.plan(Eigen::Vector3d(from.x(), from.y(), pose.z()),
                                  Eigen::Vector3d(to.x(), to.y(), goal_yaw), seed);
     } else {
       record.plan.status = PlanStatus::kInvalidStart;
     }
-    result.planning_time += record.plan.statistics.time;
+    result_.planning_time += record.plan.statistics.time;
     const bool ok = record.plan.status == PlanStatus::kExactSolution;
     if (ok) {
       std::vector<Eigen::Vector2d> route;
@@ -244,108 +297,53 @@ GoalWalkResult walkToGoal(const wpg::WalkingParameters& parameters, const wpg::W
           route.push_back(w.head<2>());
       }
       if (route.size() < 2) route.push_back(to);
-      follower.setRoute(route);
+      follower_.setRoute(route);
     } else {
-      result.outcome = std::string("no route at t = ") + format(time) + " s from [" +
-                       format(pose.x()) + ", " + format(pose.y()) + "] (" +
-                       planTriggerName(trigger) + " plan: " + planStatusName(record.plan.status) +
-                       ")";
+      result_.outcome = std::string("no route at t = ") + format(time) + " s from [" +
+                        format(pose.x()) + ", " + format(pose.y()) + "] (" +
+                        planTriggerName(trigger) + " plan: " + planStatusName(record.plan.status) +
+                        ")";
     }
-    result.plans.push_back(std::move(record));
+    result_.plans.push_back(std::move(record));
     return ok;
-  };
-
-  bool fallen = false, finished = false, no_route = false;
-  double last_strayed_replan = -kStrayedReplanInterval;
-  int stop_retries = 0;
-  for (int k = 0; k < iterations && !fallen && !finished; ++k) {
-    const double t = k * T;
-    const ControlSample& now = generator.currentSample();
-    const Eigen::Vector2d position = now.com_position.head<2>();
-    const double yaw = now.free_flyer_yaw;
-    const double frame_yaw = parameters.heading_reference == HeadingReference::kCommand
-                                 ? generator.patternGenerator().commandedHeading()
-                                 : yaw;
-    Eigen::Vector3d command = Eigen::Vector3d::Zero();
-    if (!no_route) {
-      if (k == 0) {
-        no_route = !plan(t, PlanTrigger::kStart, Eigen::Vector3d(position.x(), position.y(), yaw));
-      } else if (follower.phase() == FollowerPhase::kFollow && !no_planner) {
-        // Sensing: unknown obstacles within range become known; replan if one blocks the route.
-        bool blocked = false;
-        for (std::size_t i = 0; i < known.size(); ++i) {
-          if (known[i]) continue;
-          const World& single = single_worlds[i];
-          if (single.clearance(position) > goal.planner.sensing_range) continue;
-          known[i] = true;
-          blocked = blocked || routeBlocked(follower.route(), follower.progress(), single, radius);
-        }
-        const Eigen::Vector3d pose(position.x(), position.y(), yaw);
-        if (blocked) {
-          no_route = !plan(t, PlanTrigger::kBlocked, pose);
-        } else if (follower.distanceToRoute(position) > goal.planner.replan_distance &&
-                   t - last_strayed_replan >= kStrayedReplanInterval) {
-          last_strayed_replan = t;
-          no_route = !plan(t, PlanTrigger::kStrayed, pose);
-        }
-      }
-      if (!no_route && follower.phase() == FollowerPhase::kStop &&
-          generator.patternGenerator().standing()) {
-        // Standing after the final side-by-side step: the pose between the ankles.
-        const Eigen::Vector2d stand = 0.5 * (now.left_foot.head<2>() + now.right_foot.head<2>());
-        if (follower.atGoal(stand, yaw)) {
-          result.goal_reached = true;
-          result.time_to_goal = t;
-          finished = true;
-          break;
-        }
-        if (++stop_retries > kMaxStopRetries) {
-          result.outcome =
-              "stopped outside the tolerance " + std::to_string(stop_retries) + " times";
-          no_route = true;
-        } else {
-          no_route = !plan(t, PlanTrigger::kRetry, Eigen::Vector3d(stand.x(), stand.y(), yaw));
-        }
-      }
-      if (!no_route) command = follower.command(position, yaw, frame_yaw);
-    }
-    if (no_route && generator.patternGenerator().standing() && k > 0) {
-      finished = true;  // nothing more will happen: the robot stands where the route ended
-      break;
-    }
-    generator.setCommand(command);
-    for (int i = 0; i < sub_samples; ++i) {
-      generator.setPushAcceleration(request.pushAccelerationAt(generator.time()));
-      const ControlSample& sample = generator.step();
-      if (generator.fallen()) {
-        out.mpc.push_back(generator.lastIteration());
-        walk.success = false;
-        walk.message = "the robot fell at t = " + std::to_string(sample.time) +
-                       " s: capture point " + std::to_string(generator.captureDistance()) +
-                       " m from the nearest foot (limit " +
-                       std::to_string(request.generator.fall_capture_distance) + " m)";
-        appendControlSample(sample, out);
-        fallen = true;
-        break;
-      }
-      if (sample.nmpc_sample) {
-        const MpcIterationLog& log = generator.lastIteration();
-        out.mpc.push_back(log);
-        if (walk.success && iterationStatusFailsWalk(log.status)) {
-          walk.success = false;
-          walk.message = std::string("NMPC iteration at t = ") + std::to_string(sample.time) +
-                         " s ended with status '" + iterationStatusName(log.status) + "'";
-        }
-      }
-      appendControlSample(sample, out);
-      if (generator.landed()) out.footsteps.push_back(generator.lastLanding());
-    }
   }
-  // Steps landed inside a margin (relaxed obstacle rows) fail the walk, as in generateWalk.
-  if (walk.success && generator.obstacleDistance())
-    checkLandingsClear(parameters, request, *generator.obstacleDistance(), walk);
+
+  const wpg::WalkingParameters& parameters_;
+  const wpg::WalkRequest& request_;
+  const wpg::GoalRequest& goal_;
+  const double radius_;
+  const PlanningBounds bounds_;
+  std::vector<bool> known_;
+  std::vector<World> single_worlds_;
+  PathFollower follower_;
+  const bool no_planner_;
+  GoalWalkResult& result_;  // plans, planning time, goal reached, outcome
+  bool no_route_ = false;
+  double last_strayed_replan_ = -kStrayedReplanInterval;
+  int stop_retries_ = 0;
+};
+
+}  // namespace
+
+GoalWalkResult walkToGoal(const wpg::WalkingParameters& parameters, const wpg::WalkRequest& request,
+                          const wpg::GoalRequest& goal,
+                          const PathFollowerSettings& follower_settings) {
+  parameters.validate();
+  request.validate();
+  checkWalkSize(parameters, request);
+  if (!goal.enabled) throw std::invalid_argument("walkToGoal: the goal request is not enabled");
+  checkGoalRequest(parameters, request, goal);
+
+  OnlineWalkingGenerator generator(parameters, request.generator);
+  if (!request.obstacles.empty()) generator.setObstacles(request.obstacles);
+  GoalWalkResult result;
+  result.time_to_goal = kNaN;
+  GoalCommands commands(parameters, request, goal, follower_settings, result);
+  result.walk = runWalkLoop(generator, request, commands);
+
+  WalkResult& walk = result.walk;
+  const bool fallen = generator.fallen();
   const ControlSample& last = generator.currentSample();
-  if (!fallen) appendControlSample(last, out);
   const Eigen::Vector2d stand = 0.5 * (last.left_foot.head<2>() + last.right_foot.head<2>());
   result.final_pose = Eigen::Vector3d(stand.x(), stand.y(), last.free_flyer_yaw);
   result.final_distance = (stand - goal.goal.position).norm();

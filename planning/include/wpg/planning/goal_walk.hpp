@@ -1,5 +1,5 @@
 #pragma once
-// A walk to a goal (issue 10): the global route planner (route_planner.hpp) chained with the
+// A walk to a goal: the global route planner (route_planner.hpp) chained with the
 // NMPC through the path follower (path_follower.hpp), sample by sample over libwpg's online
 // generator (online_walking_generator.hpp), with replanning:
 //  - at the start, a route over the obstacles known to the planner;
@@ -19,7 +19,7 @@
 
 #include "wpg/planning/path_follower.hpp"
 #include "wpg/planning/route_planner.hpp"
-#include "wpg/walk_generator.hpp"
+#include "wpg/walk_loop.hpp"
 #include "wpg/walk_goal.hpp"
 #include "wpg/walk_request.hpp"
 #include "wpg/walking_parameters.hpp"
@@ -45,7 +45,9 @@ struct PlanRecord {
 };
 
 struct GoalWalkResult {
-  wpg::WalkResult walk;  // as generateWalk's: success false when fallen or an NMPC failure
+  // The walk loop's result (walk_loop.hpp): success false when fallen, on an NMPC failure, or
+  // when the goal was not reached.
+  wpg::WalkResult walk;
   std::vector<PlanRecord> plans;
   bool goal_reached = false;
   double time_to_goal = 0.0;  // [s] when the robot stood within the tolerance (NaN if never)
