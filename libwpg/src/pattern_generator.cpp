@@ -178,8 +178,8 @@ void PatternGenerator::clearPlan() {
 
 void PatternGenerator::solve() {
   last_solve_ = settings_.algorithm == GeneratorAlgorithm::kLmpc
-                    ? solver_.solveLmpc(model_, problem_, settings_)
-                    : solver_.solve(model_, problem_, settings_);
+                    ? solver_.solveLmpc(problem_, settings_)
+                    : solver_.solve(problem_, settings_);
 }
 
 void PatternGenerator::readPlan(double time) {
@@ -214,7 +214,7 @@ void PatternGenerator::shiftPlan(bool step_completed) {
         L.steps >= 2 ? plannedStep(L.steps - 2) : gait_.footPose(gait_.supportSide());
     seedStep(L.steps - 1, nominalStep(model_.parameters(), previous, last_side, command_));
   }
-  solver_.shiftActiveSet(model_, step_completed);
+  solver_.shiftActiveSet(step_completed);
 }
 
 }  // namespace wpg

@@ -133,12 +133,12 @@ void solveSequence(benchmark::State& state, bool warm) {
     for (std::size_t i = 0; i < problems.size(); ++i) {
       solver.plan() = guesses[i];
       if (!warm) solver.clearActiveSet();
-      const wpg::NmpcSolveResult result = solver.solve(generator.model(), problems[i], settings);
+      const wpg::NmpcSolveResult result = solver.solve(problems[i], settings);
       if (result.status != wpg::IterationStatus::kSolved) state.SkipWithError("not solved");
       updates += result.qp_iterations;
       dual += result.qp_iterations - result.qp_warm_start_updates;
       ++solves;
-      if (warm) solver.shiftActiveSet(generator.model(), completes[i]);
+      if (warm) solver.shiftActiveSet(completes[i]);
     }
   }
   state.counters["solves"] = static_cast<double>(problems.size());  // per benchmark iteration

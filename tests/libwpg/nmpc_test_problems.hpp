@@ -1,6 +1,8 @@
 #pragma once
 // Random NMPC problems and plans for the tests of the cost and of the constraint families.
 #include <random>
+#include <stdexcept>
+#include <string>
 
 #include <Eigen/Core>
 
@@ -80,6 +82,29 @@ inline VectorXd randomU(const NmpcModel& model, const NmpcProblem& problem, Rng&
     U(L.stepYaw() + i) = rng.yaw();
   }
   return U;
+}
+
+// Rows of the built-in families in the model's stacked g(U): the family's own row (its
+// builtin_families.hpp indexing) from the first row the model assigned it.
+inline int familyRow(const NmpcModel& model, const char* family, int row) {
+  const int index = model.findFamily(family);
+  if (index < 0) throw std::invalid_argument(std::string("no family named ") + family);
+  return model.familyFirstRow(index) + row;
+}
+inline int copRow(const NmpcModel& model, int sample, int edge) {
+  return familyRow(model, "cop", wpg::CopRows::row(sample, edge));
+}
+inline int feasibilityRow(const NmpcModel& model, int step, int edge) {
+  return familyRow(model, "step_feasibility", wpg::StepFeasibilityRows::of(model).row(step, edge));
+}
+inline int feasibilityEdges(const NmpcModel& model) {
+  return wpg::StepFeasibilityRows::of(model).edges;
+}
+inline int yawRow(const NmpcModel& model, int step, bool upper) {
+  return familyRow(model, "yaw_bound", wpg::YawBoundRows::row(step, upper));
+}
+inline int obstacleRow(const NmpcModel& model, int step, int slot) {
+  return familyRow(model, "obstacle", wpg::ObstacleRows::of(model).row(step, slot));
 }
 
 }  // namespace wpg_test

@@ -35,32 +35,44 @@ using wpg::RelaxationGroup;
 using wpg::WalkingParameters;
 using namespace wpg_test;
 
-TEST(ConstraintFamilies, BuiltInFamiliesInTheLayoutsOrder) {
+// The model stacks the families in registration order, each from the row where the one before
+// it ends; each family's row count comes from the model (horizon, steps, polygon edges, slots,
+// landing rates).
+TEST(ConstraintFamilies, ModelAssignsEachFamilyItsRows) {
   const NmpcModel model(WalkingParameters(), 3);
   const NmpcLayout& L = model.layout();
   ASSERT_EQ(model.familyCount(), 6);
   const char* names[6] = {"cop",      "step_feasibility", "yaw_bound",
                           "obstacle", "landing_bound",    "landing_yaw_bound"};
-  const int first[6] = {L.copRow(0, 0),       L.feasibilityRow(0, 0), L.yawRow(0, true),
-                        L.firstObstacleRow(), L.landingRow(0, true),  L.landingRow(2, true)};
+  const int edges = model.feasibilityPolygon(wpg::FootSide::kLeft).edgeCount();
+  // The landing bounds are off by default: no rows.
+  const int rows[6] = {4 * L.horizon, edges * L.steps, 2 * L.steps, 3 * L.steps, 0, 0};
+  int first = 0;
   for (int k = 0; k < 6; ++k) {
     EXPECT_STREQ(model.family(k).name(), names[k]);
-    EXPECT_EQ(model.familyFirstRow(k), first[k]);
+    EXPECT_EQ(model.findFamily(names[k]), k);
+    EXPECT_EQ(model.familyFirstRow(k), first) << names[k];
+    EXPECT_EQ(model.familyRowCount(k), rows[k]) << names[k];
+    for (int r = 0; r < rows[k]; ++r) EXPECT_EQ(model.familyOfRow(first + r), k);
+    first += rows[k];
   }
-  // The landing bounds are off by default: no rows; each has its rows when its rate is on.
-  EXPECT_EQ(model.familyRowCount(4), 0);
-  EXPECT_EQ(model.familyRowCount(5), 0);
+  EXPECT_EQ(model.inequalityCount(), first);
+  EXPECT_EQ(model.familyOfRow(first), -1);
+  EXPECT_EQ(model.findFamily("no_such_family"), -1);
+  EXPECT_EQ(wpg::CopRows::count(model), rows[0]);
+  EXPECT_EQ(wpg::StepFeasibilityRows::of(model).count(model), rows[1]);
+  EXPECT_EQ(wpg::YawBoundRows::count(model), rows[2]);
+  EXPECT_EQ(wpg::ObstacleRows::of(model).count(model), rows[3]);
+  // Each landing bound has its rows when its rate is on.
   WalkingParameters bounded;
   bounded.max_landing_speed = 0.4;
-  EXPECT_EQ(NmpcModel(bounded, 3).familyRowCount(4), NmpcLayout::kLandingPositionRows);
+  EXPECT_EQ(NmpcModel(bounded, 3).familyRowCount(4), wpg::LandingBoundRows::kRows);
   EXPECT_EQ(NmpcModel(bounded, 3).familyRowCount(5), 0);
   bounded.max_landing_yaw_rate = 1.5;
   const NmpcModel both(bounded, 3);
-  EXPECT_EQ(both.familyRowCount(5), NmpcLayout::kLandingYawRows);
-  EXPECT_EQ(both.familyFirstRow(5), both.layout().landingRow(2, true));
-  EXPECT_EQ(both.familyFirstRow(5) + both.familyRowCount(5), both.layout().inequalityCount());
-  EXPECT_EQ(model.familyFirstRow(5) + model.familyRowCount(5), L.inequalityCount());
-  EXPECT_EQ(L.builtinRowCount(), L.inequalityCount());
+  EXPECT_EQ(both.familyRowCount(5), wpg::LandingYawBoundRows::kRows);
+  EXPECT_EQ(both.familyFirstRow(5), both.familyFirstRow(4) + wpg::LandingBoundRows::kRows);
+  EXPECT_EQ(both.familyFirstRow(5) + both.familyRowCount(5), both.inequalityCount());
   EXPECT_EQ(model.family(0).group(), RelaxationGroup::kBalance);
   EXPECT_EQ(model.family(1).group(), RelaxationGroup::kKinematics);
   EXPECT_EQ(model.family(2).group(), RelaxationGroup::kKinematics);
@@ -131,8 +143,8 @@ TEST(ConstraintFamilies, AddedFamilyIsEnforced) {
   const double reach = 0.3;
   model.addConstraintFamily(std::make_shared<StepReach>(reach));
   ASSERT_EQ(model.familyCount(), 7);
-  EXPECT_EQ(model.familyFirstRow(6), model.layout().builtinRowCount());
-  EXPECT_EQ(model.layout().inequalityCount(), model.layout().builtinRowCount() + w.previewed_steps);
+  EXPECT_EQ(model.familyFirstRow(6), model.familyFirstRow(5) + model.familyRowCount(5));
+  EXPECT_EQ(model.inequalityCount(), model.familyFirstRow(6) + w.previewed_steps);
   Rng rng(5);
   for (int trial = 0; trial < 10; ++trial) {
     const NmpcProblem problem = randomProblem(model, trial % 8, FootSide::kRight, FixedMode::kNone, rng);
@@ -145,14 +157,14 @@ TEST(ConstraintFamilies, AddedFamilyIsEnforced) {
   wpg::PatternGenerator generator(w, settings);
   settings.sqp_iterations = 8;  // Gauss-Newton iterations: the nonlinear rows themselves hold
   NmpcSolver solver(model);
-  VectorXd g(model.layout().inequalityCount());
+  VectorXd g(model.inequalityCount());
   int binding = 0;
   for (int k = 0; k < 40; ++k) {
     generator.update(k * w.sampling_period, Vector3d(0.3, 0.0, 0.0));
     if (!generator.standing() && !generator.starting()) {
       solver.plan() = generator.solver().plan();
       solver.clearActiveSet();
-      const wpg::NmpcSolveResult result = solver.solve(model, generator.problem(), settings);
+      const wpg::NmpcSolveResult result = solver.solve(generator.problem(), settings);
       ASSERT_EQ(result.status, IterationStatus::kSolved) << "sample " << k;
       wpg::evaluateConstraints(model, generator.problem(), solver.plan(), g, nullptr);
       const auto rows = g.segment(model.familyFirstRow(6), model.familyRowCount(6));
@@ -216,7 +228,7 @@ TEST(ConstraintFamilies, StagedRelaxationNamesTheGroupThatGaveWay) {
     for (std::size_t i = 0; i < samples.problems.size(); ++i) {
       solver.plan() = samples.guesses[i];
       const wpg::NmpcSolveResult result =
-          solver.solve(model, samples.problems[i], wpg::GeneratorSettings());
+          solver.solve(samples.problems[i], wpg::GeneratorSettings());
       SCOPED_TRACE(std::string(wpg::relaxationGroupName(c.group)) + " sample " + std::to_string(i));
       EXPECT_EQ(result.status, c.status);
       EXPECT_EQ(result.relaxed_families, 1u << never);
@@ -225,7 +237,7 @@ TEST(ConstraintFamilies, StagedRelaxationNamesTheGroupThatGaveWay) {
       // The paper's rows hold in the QP that was solved (their linearization at the sample,
       // eq. 21b): the relaxation gave up only the family that cannot hold.
       const wpg::NmpcWorkspace& ws = solver.workspace();
-      const int rows = model.layout().builtinRowCount();
+      const int rows = model.familyFirstRow(never);  // the paper's families' rows
       const VectorXd residual = ws.jacobian.topRows(rows) * solver.plan() - ws.upper.head(rows);
       EXPECT_LE(residual.maxCoeff(), 1e-9);
     }
@@ -244,7 +256,7 @@ TEST(ConstraintFamilies, ObstacleRowsRelaxFirst) {
   for (std::size_t i = 0; i < samples.problems.size(); ++i) {
     solver.plan() = samples.guesses[i];
     const wpg::NmpcSolveResult result =
-        solver.solve(model, samples.problems[i], wpg::GeneratorSettings());
+        solver.solve(samples.problems[i], wpg::GeneratorSettings());
     EXPECT_EQ(result.status, IterationStatus::kRelaxedObstacle) << i;
     const int never = model.familyCount() - 2, reach = model.familyCount() - 1;
     EXPECT_EQ(result.relaxed_families, 1u << never) << i;
@@ -267,7 +279,7 @@ TEST(ConstraintFamilies, CappedQpKeepsTheShiftedPlan) {
   for (std::size_t i = 0; i < samples.problems.size(); ++i) {
     solver.plan() = samples.guesses[i];
     solver.clearActiveSet();  // cold: the QP needs more than two working-set updates
-    const wpg::NmpcSolveResult result = solver.solve(model, samples.problems[i], settings);
+    const wpg::NmpcSolveResult result = solver.solve(samples.problems[i], settings);
     if (result.status != IterationStatus::kIterationLimit) {
       EXPECT_EQ(result.status, IterationStatus::kSolved) << i;
       continue;
@@ -295,18 +307,18 @@ TEST(ConstraintFamilies, EntryPointsCheckSizes) {
   };
   NmpcProblem problem = model.makeProblem();
   problem.velocity_x.resize(3);
-  EXPECT_NE(message([&] { solver.solve(model, problem, settings); }).find("'velocity_x'"),
+  EXPECT_NE(message([&] { solver.solve(problem, settings); }).find("'velocity_x'"),
             std::string::npos);
   problem = model.makeProblem();
   problem.obstacle_slot(1) = 0;  // no obstacles given
-  EXPECT_NE(message([&] { solver.solve(model, problem, settings); }).find("obstacle_slot[1]"),
+  EXPECT_NE(message([&] { solver.solve(problem, settings); }).find("obstacle_slot[1]"),
             std::string::npos);
   problem = model.makeProblem();
   problem.phase.pattern = model.patternCount();
-  EXPECT_NE(message([&] { solver.solveLmpc(model, problem, settings); }).find("phase.pattern"),
+  EXPECT_NE(message([&] { solver.solveLmpc(problem, settings); }).find("phase.pattern"),
             std::string::npos);
-  const NmpcModel other(WalkingParameters(), 3);  // more rows than the solver was built for
-  EXPECT_NE(message([&] { solver.solve(other, other.makeProblem(), settings); }).find("NmpcSolver"),
+  const NmpcModel other(WalkingParameters(), 3);  // a problem of another model: 3 slots
+  EXPECT_NE(message([&] { solver.solve(other.makeProblem(), settings); }).find("'obstacle_slot'"),
             std::string::npos);
   VectorXd g(5);
   const VectorXd U = VectorXd::Zero(model.layout().variableCount());
@@ -320,7 +332,7 @@ TEST(ConstraintFamilies, EntryPointsCheckSizes) {
   // the right sizes go through (standing problem: every step fixed)
   problem = model.makeProblem();
   problem.phase.pattern = model.standingPattern();
-  EXPECT_EQ(message([&] { solver.solve(model, problem, settings); }), "no exception");
+  EXPECT_EQ(message([&] { solver.solve(problem, settings); }), "no exception");
 }
 
 TEST(ConstraintFamilies, RegistrationIsChecked) {

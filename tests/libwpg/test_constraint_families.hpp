@@ -24,7 +24,7 @@ class StepReach final : public ConstraintFamily {
   const char* name() const override { return "step_reach"; }
   const char* unit() const override { return "m"; }
   RelaxationGroup group() const override { return RelaxationGroup::kKinematics; }
-  int rowCount(const NmpcLayout& L) const override { return L.steps; }
+  int rowCount(const NmpcModel& model) const override { return model.layout().steps; }
   void evaluate(const NmpcModel& model, const NmpcProblem& problem,
                 const Eigen::Ref<const VectorXd>& U, Eigen::Ref<VectorXd> g,
                 JacobianRows* jacobian) const override {
@@ -42,8 +42,8 @@ class StepReach final : public ConstraintFamily {
       (*jacobian)(i, L.stepY() + i) = d.y() / radius_;
     }
   }
-  int shiftedRow(const NmpcLayout&, int row, bool step_completed) const override {
-    return step_completed ? row - 1 : row;
+  int shiftedRow(const NmpcModel&, int row, bool step_completed) const override {
+    return step_completed ? row - 1 : row;  // step i becomes step i - 1; -1 for step 0
   }
 
  private:
@@ -58,12 +58,12 @@ class NeverHolds final : public ConstraintFamily {
   const char* name() const override { return "never_holds"; }
   const char* unit() const override { return "m"; }
   RelaxationGroup group() const override { return group_; }
-  int rowCount(const NmpcLayout&) const override { return 1; }
+  int rowCount(const NmpcModel&) const override { return 1; }
   void evaluate(const NmpcModel&, const NmpcProblem&, const Eigen::Ref<const VectorXd>&,
                 Eigen::Ref<VectorXd> g, JacobianRows*) const override {
     g(0) = 1.0;
   }
-  int shiftedRow(const NmpcLayout&, int row, bool) const override { return row; }
+  int shiftedRow(const NmpcModel&, int row, bool) const override { return row; }
 
  private:
   RelaxationGroup group_;

@@ -54,7 +54,7 @@ TEST(LandingBound, RowsBoundTheLandingAroundThePreviousOne) {
   U(L.stepY()) = -0.3;
   U(L.stepYaw()) = 0.2 - 0.5;
   const int first = model.familyFirstRow(kLandingFamily);
-  VectorXd g(L.inequalityCount());
+  VectorXd g(model.inequalityCount());
   wpg::evaluateConstraints(model, problem, U, g, nullptr);
   const VectorXd rows = g.segment(first, 6);
   const double expected[6] = {0.05 - 0.12, -0.05 - 0.12, -0.2 - 0.12,
@@ -80,7 +80,7 @@ TEST(LandingBound, RowsBoundTheLandingAroundThePreviousOne) {
   const NmpcModel model_off(off, 0);
   EXPECT_EQ(model_off.familyRowCount(kLandingFamily), 0);
   ASSERT_EQ(model_off.familyRowCount(kLandingYawFamily), 2);
-  VectorXd g_off(model_off.layout().inequalityCount());
+  VectorXd g_off(model_off.inequalityCount());
   wpg::evaluateConstraints(model_off, problem, U, g_off, nullptr);
   const int yaw_first = model_off.familyFirstRow(kLandingYawFamily);
   EXPECT_NEAR(g_off(yaw_first), -0.5 - 0.45, 1e-12);

@@ -34,24 +34,19 @@ using wpg::JacobianCheck;
 JacobianCheck compareWithFiniteDifferences(const NmpcModel& model, const NmpcProblem& problem,
                                            const VectorXd& U) {
   const NmpcLayout& L = model.layout();
-  VectorXd g(L.inequalityCount());
-  MatrixXd J = MatrixXd::Constant(L.inequalityCount(), L.variableCount(), 12345.0);
+  VectorXd g(model.inequalityCount());
+  MatrixXd J = MatrixXd::Constant(model.inequalityCount(), L.variableCount(), 12345.0);
   wpg::evaluateConstraints(model, problem, U, g, &J);
   EXPECT_LT(J.cwiseAbs().maxCoeff(), 12345.0) << "an entry of the Jacobian was not written";
   return wpg::checkConstraintJacobian(model, problem, U);
 }
 
-std::string describeRow(const NmpcLayout& L, int row) {
-  const int cop = NmpcLayout::kCopEdges * L.horizon;
-  const int feas = L.feasibility_edges * L.steps;
-  if (row < 0) return "none";
-  if (row < cop) return "CoP sample " + std::to_string(row / 4) + " edge " + std::to_string(row % 4);
-  if (row < cop + feas)
-    return "feasibility step " + std::to_string((row - cop) / L.feasibility_edges) + " edge " +
-           std::to_string((row - cop) % L.feasibility_edges);
-  if (row < L.firstObstacleRow()) return "yaw step " + std::to_string((row - cop - feas) / 2);
-  return "obstacle step " + std::to_string((row - L.firstObstacleRow()) / std::max(1, L.obstacle_slots)) +
-         " slot " + std::to_string((row - L.firstObstacleRow()) % std::max(1, L.obstacle_slots));
+// "<family> row <r>": the family owning a row of the stacked g, and its own row number.
+std::string describeRow(const NmpcModel& model, int row) {
+  const int family = model.familyOfRow(row);
+  if (row < 0 || family < 0) return "none";
+  return std::string(model.family(family).name()) + " row " +
+         std::to_string(row - model.familyFirstRow(family));
 }
 
 
@@ -95,7 +90,7 @@ TEST(NmpcJacobian, MatchesCentralFiniteDifferencesEverywhere) {
           EXPECT_LE(check.worst, 1e-6)
               << "pattern " << pattern << " side " << static_cast<int>(side) << " mode "
               << static_cast<int>(mode) << " trial " << trial << ": row " << check.worst_row
-              << " (" << describeRow(L, check.worst_row) << "), column " << check.worst_column;
+              << " (" << describeRow(model, check.worst_row) << "), column " << check.worst_column;
         }
       }
     }
@@ -119,10 +114,10 @@ TEST_P(ObstacleRows, MatchFiniteDifferencesAndTheirForm) {
   const int slots = 4;
   const NmpcModel model(w, slots);
   const NmpcLayout& L = model.layout();
-  ASSERT_EQ(L.obstacle_slots, slots);
-  ASSERT_EQ(L.inequalityCount(), 4 * L.horizon + L.feasibility_edges * L.steps + 2 * L.steps +
-                                     slots * L.steps + L.landing_position_rows +
-                                     L.landing_yaw_rows);
+  ASSERT_EQ(model.obstacleSlots(), slots);
+  // The landing bounds are off by default: no rows.
+  ASSERT_EQ(model.inequalityCount(), 4 * L.horizon + feasibilityEdges(model) * L.steps +
+                                         2 * L.steps + slots * L.steps);
   const std::vector<wpg::Obstacle> obstacles = wpg_test::threeObstacles();
   const wpg::AnalyticObstacleDistance distance(obstacles);
   Rng rng(31);
@@ -141,18 +136,18 @@ TEST_P(ObstacleRows, MatchFiniteDifferencesAndTheirForm) {
       const JacobianCheck check = compareWithFiniteDifferences(model, problem, U);
       ++points;
       EXPECT_LE(check.worst, 1e-6) << "pattern " << pattern << " trial " << trial << ": row "
-                                   << check.worst_row << " (" << describeRow(L, check.worst_row)
+                                   << check.worst_row << " (" << describeRow(model, check.worst_row)
                                    << "), column " << check.worst_column;
       // The obstacle family alone (family 3), as every family's own check does.
       EXPECT_LE(wpg::checkConstraintJacobian(model, problem, U, 3).worst, 1e-6);
       // Values: the circle's squared form, the others' margin - distance; -1 for the empty
       // slot and for fixed steps.
-      VectorXd g(L.inequalityCount());
+      VectorXd g(model.inequalityCount());
       wpg::evaluateConstraints(model, problem, U, g, nullptr);
       for (int i = 0; i < L.steps; ++i) {
         const Vector2d F(U(L.stepX() + i), U(L.stepY() + i));
         if (problem.phase.step_fixed(i)) {
-          for (int k = 0; k < slots; ++k) EXPECT_EQ(g(L.obstacleRow(i, k)), -1.0);
+          for (int k = 0; k < slots; ++k) EXPECT_EQ(g(obstacleRow(model, i, k)), -1.0);
           continue;
         }
         // sole_clearance: margins grown by the sole radius (obstacle_foot_radius); the
@@ -162,11 +157,11 @@ TEST_P(ObstacleRows, MatchFiniteDifferencesAndTheirForm) {
         const double bound = paper ? R * R + m * m : (R + m + foot) * (R + m + foot);
         // bound - |F - c|^2 (eq. 18: the paper's R^2 + m^2, or (R + m + r_sole)^2), scaled by
         // 1 / (2 sqrt(bound)) to metres
-        const double row = g(L.obstacleRow(i, 0)) * 2.0 * std::sqrt(bound);
+        const double row = g(obstacleRow(model, i, 0)) * 2.0 * std::sqrt(bound);
         EXPECT_NEAR(row, bound - (F - obstacles[0].center).squaredNorm(), 1e-12);
-        EXPECT_NEAR(g(L.obstacleRow(i, 1)), 0.05 + foot - distance.signedDistance(1, F, nullptr), 1e-12);
-        EXPECT_EQ(g(L.obstacleRow(i, 2)), -1.0);
-        EXPECT_NEAR(g(L.obstacleRow(i, 3)), 0.02 + foot - distance.signedDistance(2, F, nullptr), 1e-12);
+        EXPECT_NEAR(g(obstacleRow(model, i, 1)), 0.05 + foot - distance.signedDistance(1, F, nullptr), 1e-12);
+        EXPECT_EQ(g(obstacleRow(model, i, 2)), -1.0);
+        EXPECT_NEAR(g(obstacleRow(model, i, 3)), 0.02 + foot - distance.signedDistance(2, F, nullptr), 1e-12);
       }
     }
   }
@@ -237,22 +232,22 @@ TEST(NmpcJacobian, CommandTangentObstacleRowsMatchFiniteDifferences) {
       const JacobianCheck check = compareWithFiniteDifferences(model, problem, U);
       ++points;
       EXPECT_LE(check.worst, 1e-6) << "pattern " << pattern << " trial " << trial << ": row "
-                                   << check.worst_row << " (" << describeRow(L, check.worst_row)
+                                   << check.worst_row << " (" << describeRow(model, check.worst_row)
                                    << "), column " << check.worst_column;
-      VectorXd g(L.inequalityCount());
-      MatrixXd J(L.inequalityCount(), L.variableCount());
+      VectorXd g(model.inequalityCount());
+      MatrixXd J(model.inequalityCount(), L.variableCount());
       wpg::evaluateConstraints(model, problem, U, g, &J);
       const double r = obstacles[0].radius + obstacles[0].margin + w.obstacle_foot_radius;
       for (int i = 0; i < L.steps; ++i) {
         if (problem.phase.step_fixed(i)) continue;
         const Vector2d F(U(L.stepX() + i), U(L.stepY() + i));
         const Vector2d n = problem.obstacle_normal.col(0);
-        EXPECT_NEAR(g(L.obstacleRow(i, 0)), r - n.dot(F - obstacles[0].center), 1e-12);
-        EXPECT_EQ(J(L.obstacleRow(i, 0), L.stepX() + i), -n.x());
-        EXPECT_EQ(J(L.obstacleRow(i, 0), L.stepY() + i), -n.y());
+        EXPECT_NEAR(g(obstacleRow(model, i, 0)), r - n.dot(F - obstacles[0].center), 1e-12);
+        EXPECT_EQ(J(obstacleRow(model, i, 0), L.stepX() + i), -n.x());
+        EXPECT_EQ(J(obstacleRow(model, i, 0), L.stepY() + i), -n.y());
         // inside eq. (18)'s feasible set: a satisfied row keeps the step out of the circle
-        if (g(L.obstacleRow(i, 0)) <= 0.0) EXPECT_GE((F - obstacles[0].center).norm(), r - 1e-12);
-        EXPECT_NEAR(g(L.obstacleRow(i, 1)), 0.05 + w.obstacle_foot_radius -
+        if (g(obstacleRow(model, i, 0)) <= 0.0) EXPECT_GE((F - obstacles[0].center).norm(), r - 1e-12);
+        EXPECT_NEAR(g(obstacleRow(model, i, 1)), 0.05 + w.obstacle_foot_radius -
                                                 distance.signedDistance(1, F, nullptr), 1e-12);
       }
     }
@@ -268,21 +263,21 @@ TEST(NmpcJacobian, FixedStepRowsAreInactive) {
   for (int pattern = 0; pattern < model.patternCount(); ++pattern) {
     const NmpcProblem problem = randomProblem(model, pattern, FootSide::kRight, FixedMode::kFirst, rng);
     const VectorXd U = randomU(model, problem, rng);
-    VectorXd g(L.inequalityCount());
-    MatrixXd J(L.inequalityCount(), L.variableCount());
+    VectorXd g(model.inequalityCount());
+    MatrixXd J(model.inequalityCount(), L.variableCount());
     J.setConstant(7.0);
     wpg::evaluateConstraints(model, problem, U, g, &J);
-    for (int e = 0; e < L.feasibility_edges; ++e) {
-      EXPECT_EQ(g(L.feasibilityRow(0, e)), -1.0);
-      EXPECT_EQ(J.row(L.feasibilityRow(0, e)).cwiseAbs().maxCoeff(), 0.0);
+    for (int e = 0; e < feasibilityEdges(model); ++e) {
+      EXPECT_EQ(g(feasibilityRow(model, 0, e)), -1.0);
+      EXPECT_EQ(J.row(feasibilityRow(model, 0, e)).cwiseAbs().maxCoeff(), 0.0);
     }
     for (bool upper : {true, false}) {
-      EXPECT_EQ(g(L.yawRow(0, upper)), -1.0);
-      EXPECT_EQ(J.row(L.yawRow(0, upper)).cwiseAbs().maxCoeff(), 0.0);
+      EXPECT_EQ(g(yawRow(model, 0, upper)), -1.0);
+      EXPECT_EQ(J.row(yawRow(model, 0, upper)).cwiseAbs().maxCoeff(), 0.0);
     }
     // Step 2 stays free: its rows are active and depend on step 1's pose (its predecessor).
-    EXPECT_NE(J(L.yawRow(1, true), L.stepYaw() + 0), 0.0);
-    EXPECT_NE(J(L.yawRow(1, true), L.stepYaw() + 1), 0.0);
+    EXPECT_NE(J(yawRow(model, 1, true), L.stepYaw() + 0), 0.0);
+    EXPECT_NE(J(yawRow(model, 1, true), L.stepYaw() + 1), 0.0);
   }
 }
 
@@ -299,7 +294,7 @@ TEST(NmpcJacobian, CopYawDerivativeIncludesTheComStateTerm) {
   const double yaw = 0.7;
   U(L.stepYaw() + 0) = yaw;  // pattern 0: sample 1 is on step 1
   ASSERT_EQ(problem.phase.row_step(0), 1);
-  const int m = L.inequalityCount(), n = L.variableCount();
+  const int m = model.inequalityCount(), n = L.variableCount();
   VectorXd g(m);
   MatrixXd J0(m, n), J1(m, n), J2(m, n);
   wpg::evaluateConstraints(model, problem, U, g, &J0);
@@ -312,14 +307,14 @@ TEST(NmpcJacobian, CopYawDerivativeIncludesTheComStateTerm) {
   NmpcProblem moved_x = problem;
   moved_x.com_x(0) += delta;  // z_j moves by Pzs(j, 0) delta = delta along x
   wpg::evaluateConstraints(model, moved_x, U, g, &J1);
-  const double change_x = J1(L.copRow(j, 0), col) - J0(L.copRow(j, 0), col);
+  const double change_x = J1(copRow(model, j, 0), col) - J0(copRow(model, j, 0), col);
   EXPECT_GT(std::abs(change_x), 0.05) << "the yaw column ignores the CoM position";
   EXPECT_NEAR(change_x, -s * P.cop_state(j, 0) * delta, 1e-12);
 
   NmpcProblem moved_y = problem;
   moved_y.com_y(1) += delta;  // a CoM velocity change moves z_j by Pzs(j, 1) delta along y
   wpg::evaluateConstraints(model, moved_y, U, g, &J2);
-  const double change_y = J2(L.copRow(j, 0), col) - J0(L.copRow(j, 0), col);
+  const double change_y = J2(copRow(model, j, 0), col) - J0(copRow(model, j, 0), col);
   EXPECT_GT(std::abs(change_y), 1e-3) << "the yaw column ignores the CoM velocity";
   EXPECT_NEAR(change_y, c * P.cop_state(j, 1) * delta, 1e-12);
 
@@ -336,12 +331,12 @@ TEST(NmpcJacobian, CopYawDerivativeIncludesTheComStateTerm) {
     const double dlx = -s * dx + c * dy, dly = -c * dx - s * dy;
     const double expected[4] = {dlx, -dlx, dly, -dly};
     for (int e = 0; e < 4; ++e)
-      EXPECT_NEAR(J0(L.copRow(jj, e), col), expected[e], 1e-12) << "sample " << jj << " edge " << e;
+      EXPECT_NEAR(J0(copRow(model, jj, e), col), expected[e], 1e-12) << "sample " << jj << " edge " << e;
     // Without the state term the value would differ (the state term is not small here).
     const double zx_jerk_only = P.cop_jerk.row(jj).dot(U.segment(L.jerkX(), L.horizon));
     const double zy_jerk_only = P.cop_jerk.row(jj).dot(U.segment(L.jerkY(), L.horizon));
     const double wrong = -s * (zx_jerk_only - U(L.stepX())) + c * (zy_jerk_only - U(L.stepY()));
-    EXPECT_GT(std::abs(J0(L.copRow(jj, 0), col) - wrong), 1e-3);
+    EXPECT_GT(std::abs(J0(copRow(model, jj, 0), col) - wrong), 1e-3);
   }
 }
 
@@ -362,7 +357,7 @@ TEST(NmpcConstraints, ValuesMatchDirectGeometry) {
     for (FootSide side : {FootSide::kLeft, FootSide::kRight}) {
       const NmpcProblem problem = randomProblem(model, pattern, side, FixedMode::kNone, rng);
       const VectorXd U = randomU(model, problem, rng);
-      VectorXd g(L.inequalityCount());
+      VectorXd g(model.inequalityCount());
       wpg::evaluateConstraints(model, problem, U, g, nullptr);
       const auto& phase = problem.phase;
       const VectorXd zx = P.cop_state * problem.com_x + P.cop_jerk * U.segment(L.jerkX(), L.horizon);
@@ -378,11 +373,11 @@ TEST(NmpcConstraints, ValuesMatchDirectGeometry) {
         const Vector2d local = R.inverse() * (Vector2d(zx(j), zy(j)) - foot.head<2>());
         const double expected[4] = {local.x() - hl, -local.x() - hl, local.y() - hw, -local.y() - hw};
         for (int e = 0; e < 4; ++e)
-          EXPECT_NEAR(g(L.copRow(j, e)), expected[e], 1e-12)
+          EXPECT_NEAR(g(copRow(model, j, e)), expected[e], 1e-12)
               << "pattern " << pattern << " sample " << j << " edge " << e;
         // Inside the rectangle iff every row is <= 0.
         const bool inside = std::abs(local.x()) <= hl && std::abs(local.y()) <= hw;
-        const double worst = g.segment(L.copRow(j, 0), 4).maxCoeff();
+        const double worst = g.segment(copRow(model, j, 0), 4).maxCoeff();
         EXPECT_EQ(inside, worst <= 0.0);
       }
       for (int i = 0; i < L.steps; ++i) {
@@ -393,13 +388,13 @@ TEST(NmpcConstraints, ValuesMatchDirectGeometry) {
         const Eigen::Rotation2Dd R(prev.z());
         const Vector2d local = R.inverse() * (step.head<2>() - prev.head<2>());
         const auto& polygon = feasibility[phase.stepSide(i) == FootSide::kLeft ? 0 : 1];
-        ASSERT_EQ(polygon.edgeCount(), L.feasibility_edges);
+        ASSERT_EQ(polygon.edgeCount(), feasibilityEdges(model));
         double worst = -1e300;
-        for (int e = 0; e < L.feasibility_edges; ++e) worst = std::max(worst, g(L.feasibilityRow(i, e)));
+        for (int e = 0; e < feasibilityEdges(model); ++e) worst = std::max(worst, g(feasibilityRow(model, i, e)));
         EXPECT_NEAR(worst, polygon.violation(local), 1e-12) << "pattern " << pattern << " step " << i;
         const double change = step.z() - prev.z();
-        EXPECT_NEAR(g(L.yawRow(i, true)), change - w.max_step_yaw_change, 1e-12);
-        EXPECT_NEAR(g(L.yawRow(i, false)), -change - w.max_step_yaw_change, 1e-12);
+        EXPECT_NEAR(g(yawRow(model, i, true)), change - w.max_step_yaw_change, 1e-12);
+        EXPECT_NEAR(g(yawRow(model, i, false)), -change - w.max_step_yaw_change, 1e-12);
       }
     }
   }
@@ -430,31 +425,31 @@ TEST(NmpcConstraints, RotationDirectionOnKnownGeometry) {
   U(L.stepX() + 1) = 1.0 - 0.3 + 0.01;  // right step from the left one, back next to the first foot
   U(L.stepY() + 1) = 2.0 + 0.15;
   U(L.stepYaw() + 1) = M_PI / 2 + 0.06;
-  VectorXd g(L.inequalityCount());
+  VectorXd g(model.inequalityCount());
   wpg::evaluateConstraints(model, problem, U, g, nullptr);
   const double hl = w.copHalfLength(), hw = w.copHalfWidth();
   for (int j = 0; j < 3; ++j) {
-    EXPECT_NEAR(g(L.copRow(j, 0)), offset - hl, 1e-12);
-    EXPECT_NEAR(g(L.copRow(j, 1)), -offset - hl, 1e-12);
-    EXPECT_NEAR(g(L.copRow(j, 2)), -hw, 1e-12);
-    EXPECT_NEAR(g(L.copRow(j, 3)), -hw, 1e-12);
+    EXPECT_NEAR(g(copRow(model, j, 0)), offset - hl, 1e-12);
+    EXPECT_NEAR(g(copRow(model, j, 1)), -offset - hl, 1e-12);
+    EXPECT_NEAR(g(copRow(model, j, 2)), -hw, 1e-12);
+    EXPECT_NEAR(g(copRow(model, j, 3)), -hw, 1e-12);
   }
-  for (int e = 0; e < L.feasibility_edges; ++e) EXPECT_LE(g(L.feasibilityRow(0, e)), 0.0) << e;
+  for (int e = 0; e < feasibilityEdges(model); ++e) EXPECT_LE(g(feasibilityRow(model, 0, e)), 0.0) << e;
   // The right step, 0.15 m along world +y (the left foot's forward direction) and 0.01 m
   // along world +x, is almost straight ahead of the left foot: outside the right-step polygon.
   double worst1 = -1.0;
-  for (int e = 0; e < L.feasibility_edges; ++e) worst1 = std::max(worst1, g(L.feasibilityRow(1, e)));
+  for (int e = 0; e < feasibilityEdges(model); ++e) worst1 = std::max(worst1, g(feasibilityRow(model, 1, e)));
   // local = R(-theta0)(dx, dy) with theta0 = pi/2 + 0.03: about (0.15, -0.01): outside the
   // right-step polygon (y must be <= -0.2).
   EXPECT_GT(worst1, 0.15);
-  EXPECT_NEAR(g(L.yawRow(0, true)), 0.03 - w.max_step_yaw_change, 1e-12);
-  EXPECT_NEAR(g(L.yawRow(1, false)), -0.03 - w.max_step_yaw_change, 1e-12);
+  EXPECT_NEAR(g(yawRow(model, 0, true)), 0.03 - w.max_step_yaw_change, 1e-12);
+  EXPECT_NEAR(g(yawRow(model, 1, false)), -0.03 - w.max_step_yaw_change, 1e-12);
 
   // The same left step on the wrong side (world +x = the foot's -y) is infeasible.
   U(L.stepX() + 0) = 1.0 + 0.3;
   wpg::evaluateConstraints(model, problem, U, g, nullptr);
   double worst0 = -1.0;
-  for (int e = 0; e < L.feasibility_edges; ++e) worst0 = std::max(worst0, g(L.feasibilityRow(0, e)));
+  for (int e = 0; e < feasibilityEdges(model); ++e) worst0 = std::max(worst0, g(feasibilityRow(model, 0, e)));
   EXPECT_GT(worst0, 0.4);
 }
 

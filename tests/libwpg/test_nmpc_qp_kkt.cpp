@@ -162,7 +162,7 @@ TEST(NmpcQpKkt, EveryLmpcPositionQpIsSolvedToKkt) {
 VectorXd solveLinearizedAt(const NmpcModel& model, const NmpcProblem& problem, const VectorXd& U,
                            wpg::qp::QpStatus* status) {
   const NmpcLayout& L = model.layout();
-  const int n = L.variableCount(), mi = L.inequalityCount(), me_max = L.maxEqualityCount();
+  const int n = L.variableCount(), mi = model.inequalityCount(), me_max = L.maxEqualityCount();
   VectorXd g(mi), gradient(n), d(mi), e(me_max), x(n);
   MatrixXd C(mi, n), E(me_max, n);
   wpg::evaluateConstraints(model, problem, U, g, &C);
@@ -193,7 +193,7 @@ TEST(NmpcQpKkt, ConvergedSqpIsAKktPointOfTheNonlinearProblem) {
       max_sqp = std::max(max_sqp, result.sqp_iterations);
       const VectorXd& U = generator.solver().plan();
       // Feasible for the nonlinear constraints ...
-      VectorXd g(generator.model().layout().inequalityCount());
+      VectorXd g(generator.model().inequalityCount());
       wpg::evaluateConstraints(generator.model(), generator.problem(), U, g, nullptr);
       worst_violation = std::max(worst_violation, g.maxCoeff());
       EXPECT_LE(g.maxCoeff(), 1e-8) << "sample " << k;
@@ -260,7 +260,7 @@ TEST(NmpcQpKkt, RealTimeIterationSuboptimality) {
       const double rti_cost = generator.lastSolve().cost;
       ws.plan() = generator.solver().plan();
       ws.clearActiveSet();
-      const wpg::NmpcSolveResult full = ws.solve(generator.model(), generator.problem(), converge);
+      const wpg::NmpcSolveResult full = ws.solve(generator.problem(), converge);
       ASSERT_TRUE(std::isfinite(rti_cost)) << "sample " << k;
       ASSERT_TRUE(std::isfinite(full.cost)) << "sample " << k;
       ASSERT_EQ(full.status, IterationStatus::kSolved) << "sample " << k;
@@ -321,10 +321,10 @@ TEST(NmpcQpKkt, WarmStartSavesActiveSetIterations) {
     double worst_difference = 0.0;
     for (std::size_t i = 0; i < problems.size(); ++i) {
       warm.plan() = guesses[i];
-      const wpg::NmpcSolveResult a = warm.solve(model, problems[i], settings);
+      const wpg::NmpcSolveResult a = warm.solve(problems[i], settings);
       cold.plan() = guesses[i];
       cold.clearActiveSet();
-      const wpg::NmpcSolveResult b = cold.solve(model, problems[i], settings);
+      const wpg::NmpcSolveResult b = cold.solve(problems[i], settings);
       ASSERT_EQ(a.status, IterationStatus::kSolved) << i;
       ASSERT_EQ(b.status, IterationStatus::kSolved) << i;
       warm_iterations += a.qp_iterations;
@@ -335,7 +335,7 @@ TEST(NmpcQpKkt, WarmStartSavesActiveSetIterations) {
       worst_difference = std::max(worst_difference, (warm.plan() - cold.plan()).cwiseAbs().maxCoeff());
       EXPECT_LE((warm.plan() - cold.plan()).cwiseAbs().maxCoeff(), 1e-8) << "problem " << i;
       EXPECT_LE((warm.plan() - solutions[i]).cwiseAbs().maxCoeff(), 1e-8) << "problem " << i;
-      warm.shiftActiveSet(model, step_completed[i]);
+      warm.shiftActiveSet(step_completed[i]);
     }
     // The shifted active set saves dual iterations (each a scan of every row for the most
     // violated one); loading it costs working-set updates too, counted in qp_iterations (the

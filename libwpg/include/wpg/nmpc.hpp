@@ -1,15 +1,18 @@
 #pragma once
 // The nonlinear MPC of Naveau et al. 2017 (Sec. III), as functions over a constant model, a
-// per-sample problem and a solver that owns its plan and warm start (../shared/STYLE.md,
-// items 1-3). One header per piece:
+// per-sample problem and a solver bound to the model that owns its plan, warm start and
+// scratch (no allocation per sample). One header per piece:
 //
 //   wpg/nmpc/layout.hpp             U = [jerk_x (N), F_x (nf), jerk_y (N), F_y (nf), F_theta (nf)]
-//                                   (eq. 6) and the rows of the constraint families
+//                                   (eq. 6)
 //   wpg/nmpc/problem.hpp            what changes every sample: phase, CoM state, references
-//   wpg/nmpc/model.hpp              constants: prediction (eq. 1-3), Hessians, families
+//   wpg/nmpc/model.hpp              constants: prediction (eq. 1-3), Hessians, families and the
+//                                   rows it assigns them
 //   wpg/nmpc/cost.hpp               cost (5)-(8)
 //   wpg/nmpc/constraint_family.hpp  the interface of the nonlinear rows g(U) <= 0, linearized at
-//                                   the previous iterate as in (21b):
+//                                   the previous iterate as in (21b); each family numbers its
+//                                   own rows
+//   wpg/nmpc/builtin_families.hpp   the paper's families and their rows:
 //       CoP in the rotated support polygon       (9)-(13)   4 rows per sample
 //       step inside the previous step's polygon  (14)-(15)  5 rows per step
 //       yaw change between consecutive steps     (16)-(17)  2 rows per step
@@ -18,6 +21,7 @@
 //                                       as two families, each off by default
 //   wpg/nmpc/numdiff.hpp            finite-difference check of any family's Jacobian
 //   wpg/nmpc/solver.hpp             Gauss-Newton SQP, staged relaxation, LMPC baseline
+#include "wpg/nmpc/builtin_families.hpp"
 #include "wpg/nmpc/constraint_family.hpp"
 #include "wpg/nmpc/cost.hpp"
 #include "wpg/nmpc/layout.hpp"

@@ -28,6 +28,9 @@ class PatternGenerator {
   // (NmpcModel::addConstraintFamily), e.g. a new bound of the problem.
   PatternGenerator(const WalkingParameters& parameters, const GeneratorSettings& settings,
                    const ConstraintFamilies& extra_families = {});
+  // Its solver is bound to its own model: a copy would solve with the original's.
+  PatternGenerator(const PatternGenerator&) = delete;
+  PatternGenerator& operator=(const PatternGenerator&) = delete;
 
   // Obstacles to avoid (eq. 18-19), taken by value, owned and validated (ObstacleSelector::set:
   // throws std::invalid_argument). Their distances are libwpg's exact 2-D ones (ObstacleSet).

@@ -1,5 +1,6 @@
 // CoP in the support polygon, paper eq. (9)-(13): 4 rows per sample of the horizon.
 #include "nmpc_internal.hpp"
+#include "wpg/nmpc/builtin_families.hpp"
 #include "wpg/nmpc/model.hpp"
 
 namespace wpg {
@@ -14,7 +15,7 @@ constexpr double kCopNormal[4][2] = {{1.0, 0.0}, {-1.0, 0.0}, {0.0, 1.0}, {0.0, 
 class CopConstraint final : public NamedConstraintFamily {
  public:
   CopConstraint() : NamedConstraintFamily("cop", "m", RelaxationGroup::kBalance) {}
-  int rowCount(const NmpcLayout& L) const override { return NmpcLayout::kCopEdges * L.horizon; }
+  int rowCount(const NmpcModel& model) const override { return CopRows::count(model); }
 
   // a_e' R(theta_j) (z_j - f_j) <= b_e with R(theta) = [c s; -s c] (eq. 11). Writing
   // w = R(theta)' a_e: g = w_x dx + w_y dy - b_e, d = z_j - f_j = Pzs c_hat + Pzu jerk - f_j,
@@ -38,9 +39,9 @@ class CopConstraint final : public NamedConstraintFamily {
       const double half_width = f.step < 0 ? phase.support_half_width : w.copHalfWidth();
       const double bound[4] = {half_length, half_length, half_width, half_width};
       const double dx = zx - f.x, dy = zy - f.y;
-      for (int e = 0; e < NmpcLayout::kCopEdges; ++e) {
+      for (int e = 0; e < CopRows::kEdges; ++e) {
         const RotatedEdge edge(kCopNormal[e][0], kCopNormal[e][1], f.yaw);
-        const int row = L.copRow(j, e);
+        const int row = CopRows::row(j, e);
         g(row) = edge.value(dx, dy, bound[e]);
         if (!jacobian) continue;
         auto G = jacobian->row(row);
@@ -51,9 +52,11 @@ class CopConstraint final : public NamedConstraintFamily {
     }
   }
 
-  // Sample j becomes sample j - 1; the first sample's rows leave the horizon.
-  int shiftedRow(const NmpcLayout&, int row, bool) const override {
-    return row - NmpcLayout::kCopEdges;  // < 0 for the first sample
+  // Sample j becomes sample j - 1 (the same instant, one sample nearer); the first sample's
+  // rows leave the horizon.
+  int shiftedRow(const NmpcModel&, int row, bool) const override {
+    const int sample = row / CopRows::kEdges, edge = row % CopRows::kEdges;
+    return sample == 0 ? -1 : CopRows::row(sample - 1, edge);
   }
 };
 

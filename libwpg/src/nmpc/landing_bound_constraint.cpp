@@ -23,6 +23,7 @@
 // in U. A family whose rate is 0 (off) has no rows; the rows are inactive (g = -1) when no
 // foot swings and when step 0 is fixed (landed, final step).
 #include "nmpc_internal.hpp"
+#include "wpg/nmpc/builtin_families.hpp"
 #include "wpg/nmpc/model.hpp"
 
 namespace wpg {
@@ -35,8 +36,8 @@ class LandingBoundConstraint final : public NamedConstraintFamily {
       : NamedConstraintFamily(name, unit, RelaxationGroup::kKinematics),
         first_axis_(first_axis),
         last_axis_(last_axis) {}
-  int rowCount(const NmpcLayout& L) const override {
-    return first_axis_ == 2 ? L.landing_yaw_rows : L.landing_position_rows;
+  int rowCount(const NmpcModel& model) const override {
+    return yaw() ? LandingYawBoundRows::count(model) : LandingBoundRows::count(model);
   }
 
   void evaluate(const NmpcModel& model, const NmpcProblem& problem,
@@ -45,7 +46,7 @@ class LandingBoundConstraint final : public NamedConstraintFamily {
     const NmpcLayout& L = model.layout();
     const WalkingParameters& w = model.parameters();
     g.setConstant(-1.0);
-    if (rowCount(L) == 0 || !problem.landing_bounded || L.steps == 0 ||
+    if (rowCount(model) == 0 || !problem.landing_bounded || L.steps == 0 ||
         problem.phase.step_fixed(0))
       return;
     const double rates[3] = {w.max_landing_speed, w.max_landing_speed, w.max_landing_yaw_rate};
@@ -53,7 +54,7 @@ class LandingBoundConstraint final : public NamedConstraintFamily {
     for (int axis = first_axis_; axis < last_axis_; ++axis) {
       const double bound = rates[axis] * problem.landing_time_left;
       const double change = U(columns[axis]) - problem.previous_landing(axis);
-      const int upper = 2 * (axis - first_axis_), lower = upper + 1;
+      const int upper = row(axis, true), lower = row(axis, false);
       g(upper) = change - bound;
       g(lower) = -change - bound;
       if (!jacobian) continue;
@@ -63,11 +64,16 @@ class LandingBoundConstraint final : public NamedConstraintFamily {
   }
 
   // The rows keep their meaning during a swing; a completed step changes the swing foot.
-  int shiftedRow(const NmpcLayout&, int row, bool step_completed) const override {
+  int shiftedRow(const NmpcModel&, int row, bool step_completed) const override {
     return step_completed ? -1 : row;
   }
 
  private:
+  bool yaw() const { return first_axis_ == 2; }
+  int row(int axis, bool upper) const {
+    return yaw() ? LandingYawBoundRows::row(upper) : LandingBoundRows::row(axis, upper);
+  }
+
   int first_axis_, last_axis_;
 };
 

@@ -5,9 +5,9 @@
 
 namespace wpg {
 
-NmpcSolveResult NmpcSolver::solveLmpc(const NmpcModel& model, const NmpcProblem& problem,
+NmpcSolveResult NmpcSolver::solveLmpc(const NmpcProblem& problem,
                                       const GeneratorSettings& settings) {
-  checkModel(model);
+  const NmpcModel& model = *model_;
   model.checkProblem(problem);
   NmpcWorkspace& ws = workspace_;
   const NmpcLayout& L = model.layout();
@@ -49,7 +49,7 @@ NmpcSolveResult NmpcSolver::solveLmpc(const NmpcModel& model, const NmpcProblem&
   }
   // Position QP with those yaws: constraints are linear in (jerks, positions) once the yaws
   // are fixed, so one QP linearized at theta = theta* is exact.
-  NmpcSolveResult result = runSqp(model, problem, settings, 1, &ws.orientation_solution);
+  NmpcSolveResult result = runSqp(problem, settings, 1, &ws.orientation_solution);
   result.qp_iterations += orientation_iterations;
   return result;
 }

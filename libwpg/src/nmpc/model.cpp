@@ -2,12 +2,14 @@
 #include "wpg/nmpc/model.hpp"
 
 #include <algorithm>
+#include <cstring>
 #include <stdexcept>
 #include <utility>
 
 #include <Eigen/Dense>
 
 #include "nmpc_internal.hpp"
+#include "wpg/nmpc/builtin_families.hpp"
 
 namespace wpg {
 
@@ -28,17 +30,17 @@ NmpcModel::NmpcModel(const WalkingParameters& parameters, int obstacle_slots)
       !feasibility_right_.setVertices(parameters_.feasibilityVertices(FootSide::kRight), &why)) {
     throw std::invalid_argument("step feasibility polygon is " + why);
   }
+  // Mirror images (feasibilityVertices): the same edge count, the step feasibility rows' stride.
+  eigen_assert(feasibility_left_.edgeCount() == feasibility_right_.edgeCount());
   layout_.horizon = N;
   layout_.steps = nf;
-  layout_.feasibility_edges = feasibility_left_.edgeCount();
-  layout_.obstacle_slots = obstacle_slots;
-  layout_.landing_position_rows =
-      parameters_.max_landing_speed > 0.0 ? NmpcLayout::kLandingPositionRows : 0;
-  layout_.landing_yaw_rows = parameters_.max_landing_yaw_rate > 0.0 ? NmpcLayout::kLandingYawRows : 0;
+  obstacle_slots_ = obstacle_slots;
   prediction_ = LipmPrediction(N, parameters_.sampling_period, parameters_.com_height,
                                parameters_.gravity);
 
-  // The paper's families, in the row order of NmpcLayout's copRow .. landingRow.
+  // The paper's families. Their order is the order of the QP's rows, which breaks the active-set
+  // method's ties between equally violated rows: another order walks differently in the last
+  // bits.
   family_first_row_.push_back(0);
   addConstraintFamily(makeCopConstraint());
   addConstraintFamily(makeStepFeasibilityConstraint());
@@ -105,11 +107,16 @@ void NmpcModel::addConstraintFamily(std::shared_ptr<const ConstraintFamily> fami
                                 "': at most " + std::to_string(kMaxConstraintFamilies) +
                                 " families per model");
   }
-  const int rows = family->rowCount(layout_);
+  const int rows = family->rowCount(*this);
   if (rows < 0) throw std::invalid_argument("constraint family: negative row count");
   families_.push_back(std::move(family));
   family_first_row_.push_back(family_first_row_.back() + rows);
-  layout_.inequality_rows = family_first_row_.back();
+}
+
+int NmpcModel::findFamily(const char* name) const {
+  for (int k = 0; k < familyCount(); ++k)
+    if (name && std::strcmp(families_[k]->name(), name) == 0) return k;
+  return -1;
 }
 
 std::vector<ConstraintFamilyInfo> NmpcModel::familyInfo() const {
@@ -138,10 +145,10 @@ void NmpcModel::checkProblem(const NmpcProblem& problem) const {
   require(problem.velocity_past_x.size() == N, "velocity_past_x", N, problem.velocity_past_x.size());
   require(problem.velocity_past_y.size() == N, "velocity_past_y", N, problem.velocity_past_y.size());
   require(problem.yaw_reference.size() == nf, "yaw_reference", nf, problem.yaw_reference.size());
-  require(problem.obstacle_slot.size() == layout_.obstacle_slots, "obstacle_slot",
-          layout_.obstacle_slots, problem.obstacle_slot.size());
-  require(problem.obstacle_normal.cols() == layout_.obstacle_slots, "obstacle_normal (columns)",
-          layout_.obstacle_slots, problem.obstacle_normal.cols());
+  require(problem.obstacle_slot.size() == obstacle_slots_, "obstacle_slot", obstacle_slots_,
+          problem.obstacle_slot.size());
+  require(problem.obstacle_normal.cols() == obstacle_slots_, "obstacle_normal (columns)",
+          obstacle_slots_, problem.obstacle_normal.cols());
   if (phase.pattern < 0 || phase.pattern >= patternCount()) {
     throw std::invalid_argument("NMPC problem: 'phase.pattern': expected 0 to " +
                                 std::to_string(patternCount() - 1) + ", got " +
@@ -187,8 +194,8 @@ NmpcProblem NmpcModel::makeProblem() const {
   problem.velocity_past_x = Eigen::VectorXd::Zero(layout_.horizon);
   problem.velocity_past_y = Eigen::VectorXd::Zero(layout_.horizon);
   problem.yaw_reference = Eigen::VectorXd::Zero(layout_.steps);
-  problem.obstacle_slot = Eigen::VectorXi::Constant(layout_.obstacle_slots, -1);
-  problem.obstacle_normal = Eigen::Matrix2Xd::Zero(2, layout_.obstacle_slots);
+  problem.obstacle_slot = Eigen::VectorXi::Constant(obstacle_slots_, -1);
+  problem.obstacle_normal = Eigen::Matrix2Xd::Zero(2, obstacle_slots_);
   return problem;
 }
 
@@ -196,12 +203,12 @@ void evaluateConstraints(const NmpcModel& model, const NmpcProblem& problem,
                          const Eigen::Ref<const Eigen::VectorXd>& U,
                          Eigen::Ref<Eigen::VectorXd> g, Eigen::MatrixXd* jacobian) {
   const NmpcLayout& L = model.layout();
-  if (U.size() != L.variableCount() || g.size() != L.inequalityCount() ||
-      (jacobian && (jacobian->rows() != L.inequalityCount() ||
-                    jacobian->cols() != L.variableCount()))) {
+  const int m = model.inequalityCount();
+  if (U.size() != L.variableCount() || g.size() != m ||
+      (jacobian && (jacobian->rows() != m || jacobian->cols() != L.variableCount()))) {
     throw std::invalid_argument(
         "evaluateConstraints: expected U of " + std::to_string(L.variableCount()) + ", g of " +
-        std::to_string(L.inequalityCount()) + " and a " + std::to_string(L.inequalityCount()) +
+        std::to_string(m) + " and a " + std::to_string(m) +
         " x " + std::to_string(L.variableCount()) + " Jacobian, got " +
         std::to_string(U.size()) + ", " + std::to_string(g.size()) +
         (jacobian ? " and " + std::to_string(jacobian->rows()) + " x " +

@@ -29,7 +29,7 @@ JacobianCheck checkConstraintJacobian(const NmpcModel& model, const NmpcProblem&
                                       const Eigen::Ref<const Eigen::VectorXd>& U, int family,
                                       double h) {
   const int n = model.layout().variableCount();
-  const int m = family < 0 ? model.layout().inequalityCount() : model.familyRowCount(family);
+  const int m = family < 0 ? model.inequalityCount() : model.familyRowCount(family);
   Eigen::VectorXd g(m), gp(m), gm(m);
   Eigen::MatrixXd J = Eigen::MatrixXd::Zero(m, n);  // families write into zeroed rows
   evaluateRows(model, problem, U, family, g, &J);

@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "nmpc_internal.hpp"
+#include "wpg/nmpc/builtin_families.hpp"
 #include "wpg/nmpc/model.hpp"
 
 namespace wpg {
@@ -16,16 +17,18 @@ namespace {
 class ObstacleConstraint final : public NamedConstraintFamily {
  public:
   ObstacleConstraint() : NamedConstraintFamily("obstacle", "m", RelaxationGroup::kObstacle) {}
-  int rowCount(const NmpcLayout& L) const override { return L.obstacle_slots * L.steps; }
+  int rowCount(const NmpcModel& model) const override {
+    return ObstacleRows::of(model).count(model);
+  }
 
   void evaluate(const NmpcModel& model, const NmpcProblem& problem,
                 const Eigen::Ref<const Eigen::VectorXd>& U, Eigen::Ref<Eigen::VectorXd> g,
                 JacobianRows* jacobian) const override {
     const NmpcLayout& L = model.layout();
-    const int base = L.firstObstacleRow();
+    const ObstacleRows rows = ObstacleRows::of(model);
     for (int i = 0; i < L.steps; ++i) {
-      for (int k = 0; k < L.obstacle_slots; ++k) {
-        const int row = L.obstacleRow(i, k) - base;
+      for (int k = 0; k < rows.slots; ++k) {
+        const int row = rows.row(i, k);
         const int index = problem.obstacle_slot(k);
         if (index < 0 || !problem.obstacles || problem.phase.step_fixed(i)) {
           g(row) = -1.0;  // empty slot, or a step that can no longer move
@@ -77,10 +80,14 @@ class ObstacleConstraint final : public NamedConstraintFamily {
     }
   }
 
-  // Step i becomes step i - 1 when a step was completed (slots keep their obstacle only
-  // approximately: the selection is redone at every sample, a warm-start guess is a guess).
-  int shiftedRow(const NmpcLayout& L, int row, bool step_completed) const override {
-    return step_completed ? row - L.obstacle_slots : row;
+  // Step i becomes step i - 1 when a step was completed (step 0 has landed: its rows leave);
+  // slot k stays slot k (it keeps its obstacle only approximately: the selection is redone at
+  // every sample, a warm-start guess is a guess).
+  int shiftedRow(const NmpcModel& model, int row, bool step_completed) const override {
+    const ObstacleRows rows = ObstacleRows::of(model);
+    if (!step_completed || rows.slots == 0) return rows.slots == 0 ? -1 : row;
+    const int step = row / rows.slots, slot = row % rows.slots;
+    return step == 0 ? -1 : rows.row(step - 1, slot);
   }
 };
 

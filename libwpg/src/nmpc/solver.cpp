@@ -49,13 +49,13 @@ IterationStatus relaxedStatus(RelaxationGroup group) {
 
 NmpcWorkspace::NmpcWorkspace(const NmpcModel& model)
     : solver(model.layout().variableCount(), model.layout().maxEqualityCount(),
-             model.layout().inequalityCount()),
+             model.inequalityCount()),
       relaxed_solver(model.layout().variableCount() + model.familyCount(),
                      model.layout().maxEqualityCount(),
-                     model.layout().inequalityCount() + model.familyCount()),
+                     model.inequalityCount() + model.familyCount()),
       orientation_solver(model.layout().steps, model.layout().steps, 2 * model.layout().steps) {
   const NmpcLayout& L = model.layout();
-  const int n = L.variableCount(), mi = L.inequalityCount(), me = L.maxEqualityCount();
+  const int n = L.variableCount(), mi = model.inequalityCount(), me = L.maxEqualityCount();
   const int nf = L.steps, F = model.familyCount();
   linearization = Eigen::VectorXd::Zero(n);
   gradient = Eigen::VectorXd::Zero(n);
@@ -82,20 +82,20 @@ NmpcWorkspace::NmpcWorkspace(const NmpcModel& model)
 }
 
 NmpcSolver::NmpcSolver(const NmpcModel& model)
-    : plan_(Eigen::VectorXd::Zero(model.layout().variableCount())),
-      active_set_(Eigen::VectorXi::Zero(model.layout().inequalityCount() + model.familyCount())),
+    : model_(&model),
+      plan_(Eigen::VectorXd::Zero(model.layout().variableCount())),
+      active_set_(Eigen::VectorXi::Zero(model.inequalityCount() + model.familyCount())),
       workspace_(model) {}
 
-void NmpcSolver::shiftActiveSet(const NmpcModel& model, bool step_completed) {
-  checkModel(model);
-  const NmpcLayout& L = model.layout();
+void NmpcSolver::shiftActiveSet(bool step_completed) {
+  const NmpcModel& model = *model_;
   int kept = 0;
   for (int k = 0; k < active_count_; ++k) {
     const int row = active_set_(k);
     const int family = model.familyOfRow(row);  // each family shifts its own rows
     if (family < 0) continue;
     const int first = model.familyFirstRow(family);
-    const int local = model.family(family).shiftedRow(L, row - first, step_completed);
+    const int local = model.family(family).shiftedRow(model, row - first, step_completed);
     if (local >= 0 && local < model.familyRowCount(family)) active_set_(kept++) = first + local;
   }
   active_count_ = kept;
@@ -109,9 +109,9 @@ void NmpcSolver::rememberActiveSet(const qp::DenseQpSolver& solver, int inequali
   }
 }
 
-qp::QpStatus NmpcSolver::solveRelaxed(const NmpcModel& model, const qp::HessianFactor& factor, int me,
-                              double rho, RelaxationGroup relaxed_up_to,
-                              NmpcSolveResult& result) {
+qp::QpStatus NmpcSolver::solveRelaxed(const qp::HessianFactor& factor, int me, double rho,
+                                      RelaxationGroup relaxed_up_to, NmpcSolveResult& result) {
+  const NmpcModel& model = *model_;
   NmpcWorkspace& ws = workspace_;
   const int n = static_cast<int>(ws.gradient.size());
   const int mi = static_cast<int>(ws.upper.size());
@@ -163,12 +163,12 @@ qp::QpStatus NmpcSolver::solveRelaxed(const NmpcModel& model, const qp::HessianF
   return qp::QpStatus::kOptimal;
 }
 
-NmpcSolveResult NmpcSolver::runSqp(const NmpcModel& model, const NmpcProblem& problem,
-                                   const GeneratorSettings& settings, int iterations,
-                                   const Eigen::VectorXd* fixed_yaws) {
+NmpcSolveResult NmpcSolver::runSqp(const NmpcProblem& problem, const GeneratorSettings& settings,
+                                   int iterations, const Eigen::VectorXd* fixed_yaws) {
+  const NmpcModel& model = *model_;
   NmpcWorkspace& ws = workspace_;
   const NmpcLayout& L = model.layout();
-  const int mi = L.inequalityCount();
+  const int mi = model.inequalityCount();
   const qp::HessianFactor& factor = model.hessianFactor(problem.phase.pattern);
   NmpcSolveResult result;
   // A QP that cannot be used: keep the time-shifted previous plan (plan_ is untouched).
@@ -223,7 +223,7 @@ NmpcSolveResult NmpcSolver::runSqp(const NmpcModel& model, const NmpcProblem& pr
         for (int k = 0; k < model.familyCount() && !any; ++k)
           any = model.family(k).group() == stage && model.familyRowCount(k) > 0;
         if (!any) continue;
-        relaxed = solveRelaxed(model, factor, me, settings.slack_weight, stage, result);
+        relaxed = solveRelaxed(factor, me, settings.slack_weight, stage, result);
         if (relaxed != qp::QpStatus::kInfeasible) break;
       }
       if (relaxed == qp::QpStatus::kIterationLimit)
@@ -247,22 +247,9 @@ NmpcSolveResult NmpcSolver::runSqp(const NmpcModel& model, const NmpcProblem& pr
   return result;
 }
 
-void NmpcSolver::checkModel(const NmpcModel& model) const {
-  if (plan_.size() != model.layout().variableCount() ||
-      active_set_.size() != model.layout().inequalityCount() + model.familyCount()) {
-    throw std::invalid_argument(
-        "NmpcSolver: built for a model with " + std::to_string(plan_.size()) + " variables and " +
-        std::to_string(active_set_.size()) + " rows + slacks, given one with " +
-        std::to_string(model.layout().variableCount()) + " and " +
-        std::to_string(model.layout().inequalityCount() + model.familyCount()));
-  }
-}
-
-NmpcSolveResult NmpcSolver::solve(const NmpcModel& model, const NmpcProblem& problem,
-                                  const GeneratorSettings& settings) {
-  checkModel(model);
-  model.checkProblem(problem);
-  return runSqp(model, problem, settings, settings.sqp_iterations, nullptr);
+NmpcSolveResult NmpcSolver::solve(const NmpcProblem& problem, const GeneratorSettings& settings) {
+  model_->checkProblem(problem);
+  return runSqp(problem, settings, settings.sqp_iterations, nullptr);
 }
 
 }  // namespace wpg

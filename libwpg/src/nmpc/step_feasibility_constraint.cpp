@@ -1,6 +1,7 @@
 // Step feasibility, paper eq. (14)-(15): each previewed step inside the polygon of reachable
 // placements attached to the step before it (5 rows per step for HRP-2's polygon).
 #include "nmpc_internal.hpp"
+#include "wpg/nmpc/builtin_families.hpp"
 #include "wpg/nmpc/model.hpp"
 
 namespace wpg {
@@ -12,7 +13,9 @@ using nmpc_internal::RotatedEdge;
 class StepFeasibilityConstraint final : public NamedConstraintFamily {
  public:
   StepFeasibilityConstraint() : NamedConstraintFamily("step_feasibility", "m", RelaxationGroup::kKinematics) {}
-  int rowCount(const NmpcLayout& L) const override { return L.feasibility_edges * L.steps; }
+  int rowCount(const NmpcModel& model) const override {
+    return StepFeasibilityRows::of(model).count(model);
+  }
 
   // a_e' R(theta_prev) (F_i - F_prev) <= b_e; rows of fixed steps are inactive.
   void evaluate(const NmpcModel& model, const NmpcProblem& problem,
@@ -20,18 +23,18 @@ class StepFeasibilityConstraint final : public NamedConstraintFamily {
                 JacobianRows* jacobian) const override {
     const NmpcLayout& L = model.layout();
     const PhaseStructure& phase = problem.phase;
-    const int base = L.feasibilityRow(0, 0);
+    const StepFeasibilityRows rows = StepFeasibilityRows::of(model);
     for (int i = 0; i < L.steps; ++i) {
       const ConvexPolygon& polygon = model.feasibilityPolygon(phase.stepSide(i));
       if (phase.step_fixed(i)) {
-        for (int e = 0; e < L.feasibility_edges; ++e) g(L.feasibilityRow(i, e) - base) = -1.0;
+        for (int e = 0; e < rows.edges; ++e) g(rows.row(i, e)) = -1.0;
         continue;
       }
       const PoseRef prev = nmpc_internal::previousOfStep(L, problem, U, i);
       const double dx = U(L.stepX() + i) - prev.x, dy = U(L.stepY() + i) - prev.y;
-      for (int e = 0; e < L.feasibility_edges; ++e) {
+      for (int e = 0; e < rows.edges; ++e) {
         const RotatedEdge edge(polygon.normals()(e, 0), polygon.normals()(e, 1), prev.yaw);
-        const int row = L.feasibilityRow(i, e) - base;
+        const int row = rows.row(i, e);
         g(row) = edge.value(dx, dy, polygon.offsets()(e));
         if (!jacobian) continue;
         (*jacobian)(row, L.stepX() + i) = edge.wx;
@@ -41,9 +44,12 @@ class StepFeasibilityConstraint final : public NamedConstraintFamily {
     }
   }
 
-  // Step i becomes step i - 1 when a step was completed.
-  int shiftedRow(const NmpcLayout& L, int row, bool step_completed) const override {
-    return step_completed ? row - L.feasibility_edges : row;
+  // Step i becomes step i - 1 when a step was completed (step 0 has landed: its rows leave).
+  int shiftedRow(const NmpcModel& model, int row, bool step_completed) const override {
+    if (!step_completed) return row;
+    const StepFeasibilityRows rows = StepFeasibilityRows::of(model);
+    const int step = row / rows.edges, edge = row % rows.edges;
+    return step == 0 ? -1 : rows.row(step - 1, edge);
   }
 };
 

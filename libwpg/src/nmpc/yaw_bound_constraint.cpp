@@ -1,6 +1,7 @@
 // Yaw change between consecutive steps, paper eq. (16)-(17): |theta_i - theta_prev| <= bound
 // (walking parameter max_step_yaw_change), 2 rows per step.
 #include "nmpc_internal.hpp"
+#include "wpg/nmpc/builtin_families.hpp"
 #include "wpg/nmpc/model.hpp"
 
 namespace wpg {
@@ -9,16 +10,15 @@ namespace {
 class YawBoundConstraint final : public NamedConstraintFamily {
  public:
   YawBoundConstraint() : NamedConstraintFamily("yaw_bound", "rad", RelaxationGroup::kKinematics) {}
-  int rowCount(const NmpcLayout& L) const override { return 2 * L.steps; }
+  int rowCount(const NmpcModel& model) const override { return YawBoundRows::count(model); }
 
   void evaluate(const NmpcModel& model, const NmpcProblem& problem,
                 const Eigen::Ref<const Eigen::VectorXd>& U, Eigen::Ref<Eigen::VectorXd> g,
                 JacobianRows* jacobian) const override {
     const NmpcLayout& L = model.layout();
     const double bound = model.parameters().max_step_yaw_change;
-    const int base = L.yawRow(0, true);
     for (int i = 0; i < L.steps; ++i) {
-      const int upper = L.yawRow(i, true) - base, lower = L.yawRow(i, false) - base;
+      const int upper = YawBoundRows::row(i, true), lower = YawBoundRows::row(i, false);
       if (problem.phase.step_fixed(i)) {
         g(upper) = -1.0;
         g(lower) = -1.0;
@@ -38,8 +38,11 @@ class YawBoundConstraint final : public NamedConstraintFamily {
     }
   }
 
-  int shiftedRow(const NmpcLayout&, int row, bool step_completed) const override {
-    return step_completed ? row - 2 : row;
+  // Step i becomes step i - 1 when a step was completed (step 0 has landed: its rows leave).
+  int shiftedRow(const NmpcModel&, int row, bool step_completed) const override {
+    if (!step_completed) return row;
+    const int step = row / 2;
+    return step == 0 ? -1 : YawBoundRows::row(step - 1, row % 2 == 0);
   }
 };
 

@@ -4,14 +4,16 @@
 // crocoddyl: each family gives its rows and their exact Jacobian, says how its rows move when
 // the plan is shifted (the warm start's active set), and to which relaxation group its rows
 // belong (what an infeasible QP may give up, Sec. III-D: the robot may get blocked, never
-// unbalanced). A new family is one new file implementing this interface plus its
-// registration (NmpcModel's constructor for the built-in ones, addConstraintFamily for
-// others), and one finite-difference test (wpg/nmpc/numdiff.hpp).
+// unbalanced). A family knows only its own rows, numbered from 0: the model stacks the
+// families in registration order and assigns each its first row (NmpcModel::familyFirstRow),
+// as crocoddyl's constraint manager assigns offsets. A new family is one new file implementing
+// this interface plus its registration (NmpcModel's constructor for the built-in ones,
+// builtin_families.hpp; addConstraintFamily for others), one finite-difference test
+// (wpg/nmpc/numdiff.hpp) and one test of its shiftedRow.
 #include <memory>
 
 #include <Eigen/Core>
 
-#include "wpg/nmpc/layout.hpp"
 #include "wpg/nmpc/problem.hpp"
 
 namespace wpg {
@@ -42,18 +44,21 @@ class ConstraintFamily {
   // unit of g (and so of its relaxation slack): "m" or "rad"
   virtual const char* unit() const = 0;
   virtual RelaxationGroup group() const = 0;
-  // Number of rows for this layout (fixed for the model's lifetime).
-  virtual int rowCount(const NmpcLayout& layout) const = 0;
-  // g(U) of its rows (<= 0 when satisfied) into `g` (rowCount entries) and, when `jacobian`
-  // is not null, dg/dU into its rows; the caller has zeroed them. Inactive rows (of a fixed
-  // step, an empty obstacle slot) are g = -1 with a zero Jacobian row. Must not allocate.
+  // Number of rows in `model` (fixed for the model's lifetime). Called while the model
+  // registers the family: its parameters, layout, feasibility polygons and obstacle slots are
+  // set, its families and rows not yet.
+  virtual int rowCount(const NmpcModel& model) const = 0;
+  // g(U) of its rows (<= 0 when satisfied) into `g` (rowCount entries, its row 0 first) and,
+  // when `jacobian` is not null, dg/dU into its rows; the caller has zeroed them. Inactive
+  // rows (of a fixed step, an empty obstacle slot) are g = -1 with a zero Jacobian row. Must
+  // not allocate.
   virtual void evaluate(const NmpcModel& model, const NmpcProblem& problem,
                         const Eigen::Ref<const Eigen::VectorXd>& U,
                         Eigen::Ref<Eigen::VectorXd> g, JacobianRows* jacobian) const = 0;
-  // Warm start: the local row that `row` (local, active at the last sample) becomes once the
-  // plan is shifted one sample forward (and one step when a step was completed), or -1 when
-  // it leaves the horizon or changes meaning.
-  virtual int shiftedRow(const NmpcLayout& layout, int row, bool step_completed) const = 0;
+  // Warm start: the row that its row `row` (active at the last sample) becomes once the plan
+  // is shifted one sample forward (and one step when a step was completed), or -1 when it
+  // leaves the horizon or changes meaning. Must not allocate.
+  virtual int shiftedRow(const NmpcModel& model, int row, bool step_completed) const = 0;
 };
 
 // A family whose name, unit and relaxation group are fixed at construction (the built-in ones
@@ -71,15 +76,6 @@ class NamedConstraintFamily : public ConstraintFamily {
   const char* unit_;
   RelaxationGroup group_;
 };
-
-// The built-in families of the paper, in their registration order (rows as NmpcLayout's
-// copRow, feasibilityRow, yawRow, obstacleRow, landingRow).
-std::unique_ptr<ConstraintFamily> makeCopConstraint();              // eq. (9)-(13)
-std::unique_ptr<ConstraintFamily> makeStepFeasibilityConstraint();  // eq. (14)-(15)
-std::unique_ptr<ConstraintFamily> makeYawBoundConstraint();         // eq. (16)-(17)
-std::unique_ptr<ConstraintFamily> makeObstacleConstraint();         // eq. (18)-(19)
-std::unique_ptr<ConstraintFamily> makeLandingBoundConstraint();     // Sec. III-C3, last para.: x, y
-std::unique_ptr<ConstraintFamily> makeLandingYawBoundConstraint();  // Sec. III-C3, last para.: yaw
 
 // g(U) of every family of the model, stacked, and when jacobian != nullptr its exact Jacobian
 // dg/dU (every term, including the yaw derivative of the CoP rows through the current CoM

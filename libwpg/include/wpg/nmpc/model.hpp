@@ -1,7 +1,8 @@
 #pragma once
-// The constant part of the NMPC (../shared/STYLE.md item 1): prediction matrices (eq. 1-3),
-// the Gauss-Newton Hessian of the cost (5)-(8) for every walking pattern with its factor, the
-// step feasibility polygons, and the registered constraint families with their row ranges.
+// The constant part of the NMPC (the model; what changes every sample is NmpcProblem, the
+// scratch of a solve NmpcWorkspace): prediction matrices (eq. 1-3), the Gauss-Newton Hessian of
+// the cost (5)-(8) for every walking pattern with its factor, the step feasibility polygons,
+// and the registered constraint families, each with the range of rows the model assigns it.
 #include <memory>
 #include <string>
 #include <vector>
@@ -20,26 +21,32 @@ namespace wpg {
 
 class NmpcModel {
  public:
-  // Registers the paper's families: CoP, step feasibility, yaw bound, obstacles (with
-  // `obstacle_slots` obstacles at most in the QP at once).
+  // Registers the paper's families (builtin_families.hpp): CoP, step feasibility, yaw bound,
+  // obstacles (with `obstacle_slots` obstacles at most in the QP at once), landing bounds.
   explicit NmpcModel(const WalkingParameters& parameters, int obstacle_slots = 0);
 
-  // Appends a family after the built-in ones (its rows come last). Call it before building a
-  // solver on this model. Throws std::invalid_argument beyond kMaxConstraintFamilies families
-  // or for a null family.
+  // Appends a family after the registered ones: its rows start where theirs end. Call it before
+  // building a solver on this model. Throws std::invalid_argument beyond
+  // kMaxConstraintFamilies families or for a null family.
   void addConstraintFamily(std::shared_ptr<const ConstraintFamily> family);
   int familyCount() const { return static_cast<int>(families_.size()); }
   const ConstraintFamily& family(int index) const { return *families_[index]; }
+  // The family's rows are [familyFirstRow, familyFirstRow + familyRowCount) of the stacked g.
   int familyFirstRow(int index) const { return family_first_row_[index]; }
   int familyRowCount(int index) const {
     return family_first_row_[index + 1] - family_first_row_[index];
   }
+  // Index of the family named `name` (ConstraintFamily::name), -1 when none is.
+  int findFamily(const char* name) const;
   // Index of the family owning inequality row `row`, -1 past the last (a search over at most
   // kMaxConstraintFamilies ranges; no allocation).
   int familyOfRow(int row) const;
+  // All inequality rows: the families' rows, stacked in registration order.
+  int inequalityCount() const { return family_first_row_.back(); }
 
   const WalkingParameters& parameters() const { return parameters_; }
   const NmpcLayout& layout() const { return layout_; }
+  int obstacleSlots() const { return obstacle_slots_; }  // obstacles in the QP at once
   const LipmPrediction& prediction() const { return prediction_; }
   // The velocity J1 tracks: (windowed mean of) C' = tracked_state c_hat + tracked_jerk jerks
   // + the problem's velocity_past (prediction's velocity rows with window 1).
@@ -71,6 +78,7 @@ class NmpcModel {
  private:
   WalkingParameters parameters_;
   NmpcLayout layout_;
+  int obstacle_slots_ = 0;
   LipmPrediction prediction_;
   Eigen::Matrix<double, Eigen::Dynamic, 3> tracked_velocity_state_;
   Eigen::MatrixXd tracked_velocity_jerk_;

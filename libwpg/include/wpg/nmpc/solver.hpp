@@ -29,7 +29,7 @@ struct NmpcSolveResult {
   std::array<double, kMaxConstraintFamilies> slack{};
 };
 
-// Scratch buffers of one NMPC instance, sized once from the model (../shared/STYLE.md item 1).
+// Scratch buffers of one NMPC instance, sized once from the model (no allocation per sample).
 class NmpcWorkspace {
  public:
   explicit NmpcWorkspace(const NmpcModel& model);
@@ -59,7 +59,10 @@ class NmpcWorkspace {
 
 class NmpcSolver {
  public:
+  // Bound to `model` for good: it must outlive the solver (PatternGenerator owns both). Its
+  // workspace and active set are sized from the model's layout and rows.
   explicit NmpcSolver(const NmpcModel& model);
+  const NmpcModel& model() const { return *model_; }
 
   // The plan U = [jerk_x, F_x, jerk_y, F_y, F_theta] (eq. 6): on entry to solve() the initial
   // guess (the previous plan shifted by the caller), afterwards the plan to execute. When an
@@ -69,17 +72,16 @@ class NmpcSolver {
 
   // Gauss-Newton SQP from plan(): settings.sqp_iterations QPs (1 = real-time iteration), or to
   // convergence when 0 (bounded by max_sqp_iterations). Throws std::invalid_argument when the
-  // model or the problem does not have the sizes of the model this solver was built for.
-  NmpcSolveResult solve(const NmpcModel& model, const NmpcProblem& problem,
-                        const GeneratorSettings& settings);
+  // problem does not have the sizes of the model (NmpcModel::checkProblem).
+  NmpcSolveResult solve(const NmpcProblem& problem, const GeneratorSettings& settings);
   // Herdt et al. 2010 baseline: the step yaws from an orientation QP (J2 with the yaw bounds),
   // then the position QP with those yaws (linear once the yaws are fixed: one QP is exact).
-  NmpcSolveResult solveLmpc(const NmpcModel& model, const NmpcProblem& problem,
-                            const GeneratorSettings& settings);
+  NmpcSolveResult solveLmpc(const NmpcProblem& problem, const GeneratorSettings& settings);
 
   // Warm start: moves the active set one sample forward (and one step when a step was
-  // completed), each family shifting its own rows; rows that leave the horizon are dropped.
-  void shiftActiveSet(const NmpcModel& model, bool step_completed);
+  // completed), each family shifting its own rows (ConstraintFamily::shiftedRow); rows that
+  // leave the horizon are dropped.
+  void shiftActiveSet(bool step_completed);
   // Forget the active set (the rows change meaning: start or stop of a walk).
   void clearActiveSet() { active_count_ = 0; }
   int activeCount() const { return active_count_; }
@@ -88,18 +90,15 @@ class NmpcSolver {
   const NmpcWorkspace& workspace() const { return workspace_; }
 
  private:
-  NmpcSolveResult runSqp(const NmpcModel& model, const NmpcProblem& problem,
-                         const GeneratorSettings& settings, int iterations,
-                         const Eigen::VectorXd* fixed_yaws);
+  NmpcSolveResult runSqp(const NmpcProblem& problem, const GeneratorSettings& settings,
+                         int iterations, const Eigen::VectorXd* fixed_yaws);
   // Solves the QP with slacks on the families of the groups up to `relaxed_up_to`; on kOptimal
   // the solution is in the workspace's qp_solution and `result` records the relaxation.
-  qp::QpStatus solveRelaxed(const NmpcModel& model, const qp::HessianFactor& factor, int equalities,
-                    double slack_weight, RelaxationGroup relaxed_up_to,
-                    NmpcSolveResult& result);
+  qp::QpStatus solveRelaxed(const qp::HessianFactor& factor, int equalities, double slack_weight,
+                            RelaxationGroup relaxed_up_to, NmpcSolveResult& result);
   void rememberActiveSet(const qp::DenseQpSolver& solver, int inequality_rows);
-  // Throws std::invalid_argument unless `model` has the sizes this solver was built for.
-  void checkModel(const NmpcModel& model) const;
 
+  const NmpcModel* model_;
   Eigen::VectorXd plan_;
   Eigen::VectorXi active_set_;  // active inequality rows of the last solve (warm start)
   int active_count_ = 0;
