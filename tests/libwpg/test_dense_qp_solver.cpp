@@ -66,6 +66,7 @@ using Eigen::MatrixXd;
 using Eigen::VectorXd;
 using wpg::qp::DenseQpSolver;
 using wpg::qp::HessianFactor;
+using wpg::qp::QpSettings;
 using wpg::qp::QpStatus;
 
 struct Qp {
@@ -712,7 +713,8 @@ TEST(DenseQpSolver, InvalidInput) {
 }
 
 TEST(DenseQpSolver, SolveDoesNotAllocate) {
-  // Problem smaller than the capacities, with equalities, warm start and cold start.
+  // Problem smaller than the capacities, with equalities, warm start and cold start; then an
+  // infeasible problem and one stopped by the iteration limit (every way out of solve()).
   Rng rng(99);
   const int n = 38, me = 4, mi = 80;
   const Qp qp = randomFeasibleQp(rng, n, me, mi, true);
@@ -727,6 +729,12 @@ TEST(DenseQpSolver, SolveDoesNotAllocate) {
   guess.push_back(3);
   guess.push_back(11);
   const VectorXd g2 = qp.g + 0.1 * rng.normalVector(n);
+  const Qp infeasible = randomInfeasibleQp(rng, 20, 2, 40, 1);
+  const Qp vertex = vertexQp(rng, 30, 60);
+  HessianFactor infeasible_factor, vertex_factor;
+  ASSERT_TRUE(infeasible_factor.compute(infeasible.H));
+  ASSERT_TRUE(vertex_factor.compute(vertex.H));
+  VectorXd x_infeasible(20), x_vertex(30);
   int iterations_cold = 0, iterations_warm = 0;
 #ifdef EIGEN_RUNTIME_NO_MALLOC
   Eigen::internal::set_is_malloc_allowed(false);
@@ -740,6 +748,13 @@ TEST(DenseQpSolver, SolveDoesNotAllocate) {
   solver.setActiveSetGuess(guess.data(), static_cast<int>(guess.size()));
   const QpStatus warm = solver.solve(factor, g2, qp.E, qp.e, qp.C, qp.d, x);
   iterations_warm = solver.iterations();
+  const QpStatus no_solution =
+      solver.solve(infeasible_factor, infeasible.g, infeasible.E, infeasible.e, infeasible.C,
+                   infeasible.d, x_infeasible);
+  solver.settings().max_iterations = 2;
+  const QpStatus capped = solver.solve(vertex_factor, vertex.g, vertex.E, vertex.e, vertex.C,
+                                       vertex.d, x_vertex);
+  solver.settings().max_iterations = QpSettings().max_iterations;
 #ifdef WPG_TEST_COUNT_MALLOC
   g_count_mallocs = false;
   EXPECT_EQ(g_malloc_count, 0);
@@ -749,6 +764,8 @@ TEST(DenseQpSolver, SolveDoesNotAllocate) {
 #endif
   EXPECT_EQ(cold, QpStatus::kOptimal);
   EXPECT_EQ(warm, QpStatus::kOptimal);
+  EXPECT_EQ(no_solution, QpStatus::kInfeasible);
+  EXPECT_EQ(capped, QpStatus::kIterationLimit);
   EXPECT_GT(iterations_cold, 0);
   EXPECT_LE(iterations_warm, iterations_cold);
 #ifdef WPG_TEST_COUNT_MALLOC

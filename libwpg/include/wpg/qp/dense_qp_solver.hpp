@@ -90,6 +90,67 @@ class DenseQpSolver {
   int warmStartKept() const { return warm_start_kept_; }
 
  private:
+  // --- the steps of solve() (dense_qp_solver.cpp), in the order it takes them ---
+  // Whether the data fit the capacities and each other (sizes only).
+  bool sizesFit(const HessianFactor& factor, const Eigen::Ref<const Eigen::VectorXd>& g,
+                const Eigen::Ref<const Eigen::MatrixXd>& E,
+                const Eigen::Ref<const Eigen::VectorXd>& e,
+                const Eigen::Ref<const Eigen::MatrixXd>& C,
+                const Eigen::Ref<const Eigen::VectorXd>& d,
+                const Eigen::Ref<const Eigen::VectorXd>& x) const;
+  // row_scale_ = 1 / ||C_i||; false when some entry of g, E, e, C or d is not finite.
+  bool scaleInequalityRows(const Eigen::Ref<const Eigen::VectorXd>& g,
+                           const Eigen::Ref<const Eigen::MatrixXd>& E,
+                           const Eigen::Ref<const Eigen::VectorXd>& e,
+                           const Eigen::Ref<const Eigen::MatrixXd>& C,
+                           const Eigen::Ref<const Eigen::VectorXd>& d);
+  // Step 0: x = -H^{-1} g, J = J0, empty working set.
+  void startFromUnconstrainedMinimum(const HessianFactor& factor,
+                                     const Eigen::Ref<const Eigen::VectorXd>& g,
+                                     Eigen::Ref<Eigen::VectorXd> x);
+  // Adds every equality with a full step; false when they are inconsistent.
+  bool addEqualities(const Eigen::Ref<const Eigen::MatrixXd>& E,
+                     const Eigen::Ref<const Eigen::VectorXd>& e, Eigen::Ref<Eigen::VectorXd> x);
+  // Loads the guessed inequality rows that are independent of the working set.
+  void loadGuessedRows(int guess_count, const Eigen::Ref<const Eigen::MatrixXd>& C, int n);
+  // The minimum on the working set, dropping the most negative inequality multiplier until
+  // all are >= 0 (the warm start's primal point).
+  void solveOnWorkingSet(const Eigen::Ref<const Eigen::VectorXd>& g,
+                         const Eigen::Ref<const Eigen::VectorXd>& e,
+                         const Eigen::Ref<const Eigen::VectorXd>& d,
+                         Eigen::Ref<Eigen::VectorXd> x);
+  // Step 1: the most violated row not in the working set (violation scaled by the row norm),
+  // -1 when x is feasible. slack_ = C x - d afterwards.
+  int mostViolatedRow(const Eigen::Ref<const Eigen::MatrixXd>& C,
+                      const Eigen::Ref<const Eigen::VectorXd>& d,
+                      const Eigen::Ref<const Eigen::VectorXd>& x);
+  // Step 2: partial steps, each dropping a constraint, until the full step adds row p (or p
+  // is set aside as implied by the working set). kOptimal then, else kInfeasible or
+  // kIterationLimit with the results stored.
+  QpStatus addViolatedRow(int p, const HessianFactor& factor,
+                          const Eigen::Ref<const Eigen::VectorXd>& g,
+                          const Eigen::Ref<const Eigen::MatrixXd>& C,
+                          Eigen::Ref<Eigen::VectorXd> x, int me);
+  // Linear dependence of the constraint just reduced (reduceNormal() returned h) on the
+  // working set: |z|_H^2 = h^2 negligible against |n+|_{H^-1}^2 = |d|^2.
+  bool isDependent(double h, int n) const;
+  // r = R^{-1} d1: the dual step direction (minus the change of the working-set multipliers).
+  void computeDualDirection();
+  // The longest dual step t1 that keeps the inequality multipliers >= 0, and the working-set
+  // position `blocking` of the one it zeroes (-1 and infinity when none limits it).
+  double dualStepLength(int* blocking) const;
+  // u <- u - t r on the working set, inequality multipliers clamped at 0 (rounding).
+  void stepMultipliers(double t);
+  // Removes working-set position `position` (an inequality) and lets the rows set aside
+  // compete again: the working set has lost a constraint.
+  void dropInequality(int n, int mi, int position);
+  void releaseSetAside(int mi);
+  // Copies multipliers, active set and objective of the current iterate into the results.
+  void storeResults(const HessianFactor& factor, const Eigen::Ref<const Eigen::VectorXd>& g,
+                    const Eigen::Ref<const Eigen::VectorXd>& x, int me, int mi, int pending,
+                    double pending_multiplier);
+
+  // --- updates of the factorization J, R when the working set changes ---
   // d_ = J' normal_, then Givens rotations of the free columns J2 (any orthonormal basis of the
   // free space will do) bring d2 to (h, 0, ..., 0); returns h = |d2| >= 0. Afterwards the
   // primal direction z = J2 J2' n+ is h times column q of J.
@@ -98,10 +159,6 @@ class DenseQpSolver {
   void appendToWorkingSet(int code, double multiplier);
   // Removes working-set entry `position` (Givens rotations restore R, applied to J too).
   void dropFromWorkingSet(int n, int position);
-  // Copies multipliers, active set and objective of the current iterate into the results.
-  void storeResults(const HessianFactor& factor, const Eigen::Ref<const Eigen::VectorXd>& g,
-                    const Eigen::Ref<const Eigen::VectorXd>& x, int me, int mi, int pending,
-                    double pending_multiplier);
 
   int max_n_, max_me_, max_mi_;
   QpSettings settings_;
@@ -132,6 +189,7 @@ class DenseQpSolver {
   Eigen::Matrix<unsigned char, Eigen::Dynamic, 1> in_working_set_;  // max_mi
   int active_count_ = 0;          // q
   int active_equality_count_ = 0; // equalities in the working set (always the first ones)
+  bool any_set_aside_ = false;    // some in_working_set_ entry is kSetAside
 };
 
 }  // namespace wpg::qp
