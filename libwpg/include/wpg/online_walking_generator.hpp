@@ -3,7 +3,8 @@
 // period (5 ms) gives the CoM, the CoP and both feet to track; the NMPC runs inside at each
 // sampling period (0.1 s) boundary (paper Fig. 3: WPG every T, interpolation every control
 // period). A new velocity command, new obstacles and an external push can be given between
-// any two control periods. generateWalk (walk_generator.hpp) is a loop over this class.
+// any two control periods. generateWalk (walk_generator.hpp) is a loop over this class
+// (walk_loop.hpp).
 //
 //   wpg::OnlineWalkingGenerator generator(parameters, settings);
 //   generator.reset(Eigen::Vector3d(x, y, yaw));

@@ -18,7 +18,7 @@ enum class SupportState : std::uint8_t { kDouble = 0, kLeft = 1, kRight = 2 };
 enum class FootSide : std::uint8_t { kLeft = 1, kRight = 2 };
 
 // Outcome of one NMPC iteration, stored per iteration (dataset `mpc/status`). What each does
-// to the walk (WalkResult::outcome, the exit status of `wpg run`) is in walk_generator.hpp.
+// to the walk (WalkResult::success, the exit status of `wpg run`) is in walk_loop.hpp.
 enum class IterationStatus : std::uint8_t {
   kSolved = 0,             // every QP solved to optimality
   kRelaxedObstacle = 1,    // the QP was infeasible; only obstacle rows (previewed steps) were
