@@ -10,10 +10,10 @@
 #include "json_text.hpp"
 #include "wpg/analysis/run_metrics.hpp"
 #include "wpg/analysis/zmp_error.hpp"
-#include "wpg/datasets/input_error.hpp"
-#include "wpg/datasets/run_dataset_reader.hpp"
-#include "wpg/datasets/scenario.hpp"
-#include "wpg/datasets/stored_run_consistency.hpp"
+#include "wpg/datasets/input/input_error.hpp"
+#include "wpg/datasets/storage/run_dataset_reader.hpp"
+#include "wpg/datasets/input/scenario.hpp"
+#include "wpg/datasets/storage/stored_run_consistency.hpp"
 
 namespace wpg::cli {
 namespace {

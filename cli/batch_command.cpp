@@ -18,11 +18,11 @@
 #include "scenario_runner.hpp"
 #include "study_execution.hpp"
 #include "wpg/analysis/run_metrics.hpp"
-#include "wpg/datasets/batch_dataset.hpp"
-#include "wpg/datasets/batch_index.hpp"
-#include "wpg/datasets/input_error.hpp"
-#include "wpg/datasets/output_file.hpp"
-#include "wpg/datasets/study.hpp"
+#include "wpg/datasets/storage/batch_dataset.hpp"
+#include "wpg/datasets/storage/batch_index.hpp"
+#include "wpg/datasets/input/input_error.hpp"
+#include "wpg/datasets/storage/output_file.hpp"
+#include "wpg/datasets/study_design/study.hpp"
 
 namespace fs = std::filesystem;
 

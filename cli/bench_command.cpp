@@ -24,12 +24,12 @@
 #include "cli_common.hpp"
 #include "json_text.hpp"
 #include "pipeline_stages.hpp"
-#include "wpg/datasets/output_file.hpp"
+#include "wpg/datasets/storage/output_file.hpp"
 #include "summary_printing.hpp"
 #include "wpg/analysis/chain_timing.hpp"
 #include "wpg/analysis/zmp_error.hpp"
-#include "wpg/datasets/input_error.hpp"
-#include "wpg/datasets/scenario.hpp"
+#include "wpg/datasets/input/input_error.hpp"
+#include "wpg/datasets/input/scenario.hpp"
 
 namespace fs = std::filesystem;
 

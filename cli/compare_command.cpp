@@ -21,9 +21,9 @@
 #include "mpi_world.hpp"
 #include "study_execution.hpp"
 #include "wpg/analysis/comparison_summary.hpp"
-#include "wpg/datasets/comparison_study.hpp"
-#include "wpg/datasets/comparison_table.hpp"
-#include "wpg/datasets/input_error.hpp"
+#include "wpg/datasets/study_design/comparison_study.hpp"
+#include "wpg/datasets/storage/comparison_table.hpp"
+#include "wpg/datasets/input/input_error.hpp"
 
 namespace fs = std::filesystem;
 

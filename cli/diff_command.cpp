@@ -8,7 +8,7 @@
 #include <string>
 
 #include "cli_common.hpp"
-#include "wpg/datasets/dataset_diff.hpp"
+#include "wpg/datasets/storage/dataset_diff.hpp"
 
 namespace wpg::cli {
 namespace {

@@ -15,8 +15,8 @@
 #include "batch_progress.hpp"
 #include "cli_common.hpp"
 #include "study_execution.hpp"
-#include "wpg/datasets/batch_index.hpp"
-#include "wpg/datasets/input_error.hpp"
+#include "wpg/datasets/storage/batch_index.hpp"
+#include "wpg/datasets/input/input_error.hpp"
 
 namespace fs = std::filesystem;
 

@@ -18,8 +18,8 @@
 
 #include "mpi_world.hpp"
 #include "scenario_runner.hpp"
-#include "wpg/datasets/batch_dataset.hpp"
-#include "wpg/datasets/study.hpp"
+#include "wpg/datasets/storage/batch_dataset.hpp"
+#include "wpg/datasets/study_design/study.hpp"
 
 namespace wpg::cli {
 

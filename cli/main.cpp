@@ -11,7 +11,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cli_common.hpp"
-#include "wpg/datasets/input_error.hpp"
+#include "wpg/datasets/input/input_error.hpp"
 
 namespace {
 

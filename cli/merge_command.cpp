@@ -7,9 +7,9 @@
 
 #include "cli_common.hpp"
 #include "study_execution.hpp"
-#include "wpg/datasets/batch_index.hpp"
-#include "wpg/datasets/input_error.hpp"
-#include "wpg/datasets/output_file.hpp"
+#include "wpg/datasets/storage/batch_index.hpp"
+#include "wpg/datasets/input/input_error.hpp"
+#include "wpg/datasets/storage/output_file.hpp"
 
 namespace fs = std::filesystem;
 

@@ -9,7 +9,7 @@
 #include "cli_common.hpp"
 #include "wpg/analysis/chain_timing.hpp"
 #include "wpg/analysis/run_summary.hpp"
-#include "wpg/datasets/run_dataset.hpp"
+#include "wpg/datasets/storage/run_dataset.hpp"
 #include "wpg/preview_control.hpp"
 #include "wpg/robots/online_filter_loop.hpp"
 #include "wpg/robots/walk_replay.hpp"

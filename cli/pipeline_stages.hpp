@@ -8,8 +8,8 @@
 #include <optional>
 #include <string>
 
-#include "wpg/datasets/run_dataset.hpp"
-#include "wpg/datasets/scenario.hpp"
+#include "wpg/datasets/storage/run_dataset.hpp"
+#include "wpg/datasets/input/scenario.hpp"
 #include "wpg/multibody_validation.hpp"
 #include "wpg/robots/robot_model.hpp"
 #include "wpg/walk_generator.hpp"

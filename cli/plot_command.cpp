@@ -14,8 +14,8 @@
 #include <system_error>
 
 #include "cli_common.hpp"
-#include "wpg/datasets/input_error.hpp"
-#include "wpg/datasets/output_file.hpp"
+#include "wpg/datasets/input/input_error.hpp"
+#include "wpg/datasets/storage/output_file.hpp"
 
 extern char** environ;
 

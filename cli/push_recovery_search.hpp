@@ -11,7 +11,7 @@
 #include <Eigen/Core>
 
 #include "scenario_runner.hpp"
-#include "wpg/datasets/scenario.hpp"
+#include "wpg/datasets/input/scenario.hpp"
 
 namespace wpg::cli {
 

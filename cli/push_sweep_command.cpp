@@ -20,10 +20,10 @@
 #include "json_text.hpp"
 #include "ordered_parallel.hpp"
 #include "push_recovery_search.hpp"
-#include "wpg/datasets/input_error.hpp"
-#include "wpg/datasets/input_limits.hpp"
-#include "wpg/datasets/output_file.hpp"
-#include "wpg/datasets/push_sweep_dataset.hpp"
+#include "wpg/datasets/input/input_error.hpp"
+#include "wpg/datasets/input/input_limits.hpp"
+#include "wpg/datasets/storage/output_file.hpp"
+#include "wpg/datasets/storage/push_sweep_dataset.hpp"
 
 namespace fs = std::filesystem;
 

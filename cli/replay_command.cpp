@@ -9,11 +9,11 @@
 #include "cli_common.hpp"
 #include "pipeline_stages.hpp"
 #include "summary_printing.hpp"
-#include "wpg/datasets/input_error.hpp"
-#include "wpg/datasets/output_file.hpp"
-#include "wpg/datasets/run_dataset_reader.hpp"
-#include "wpg/datasets/scenario.hpp"
-#include "wpg/datasets/stored_run_consistency.hpp"
+#include "wpg/datasets/input/input_error.hpp"
+#include "wpg/datasets/storage/output_file.hpp"
+#include "wpg/datasets/storage/run_dataset_reader.hpp"
+#include "wpg/datasets/input/scenario.hpp"
+#include "wpg/datasets/storage/stored_run_consistency.hpp"
 
 namespace fs = std::filesystem;
 

@@ -10,9 +10,9 @@
 #include "study_execution.hpp"
 #include "summary_printing.hpp"
 #include "wpg/analysis/run_summary.hpp"
-#include "wpg/datasets/input_error.hpp"
-#include "wpg/datasets/output_file.hpp"
-#include "wpg/datasets/scenario.hpp"
+#include "wpg/datasets/input/input_error.hpp"
+#include "wpg/datasets/storage/output_file.hpp"
+#include "wpg/datasets/input/scenario.hpp"
 #include "wpg/walk_generator.hpp"
 
 namespace fs = std::filesystem;

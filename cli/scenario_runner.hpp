@@ -17,7 +17,7 @@
 #include "cli_common.hpp"
 #include "pipeline_stages.hpp"
 #include "wpg/analysis/run_metrics.hpp"
-#include "wpg/datasets/scenario.hpp"
+#include "wpg/datasets/input/scenario.hpp"
 
 namespace wpg::cli {
 

@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "scenario_runner.hpp"
-#include "wpg/datasets/batch_dataset.hpp"
-#include "wpg/datasets/study.hpp"
+#include "wpg/datasets/storage/batch_dataset.hpp"
+#include "wpg/datasets/study_design/study.hpp"
 
 namespace wpg::cli {
 

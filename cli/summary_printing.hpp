@@ -6,7 +6,7 @@
 
 #include "pipeline_stages.hpp"
 #include "wpg/analysis/run_summary.hpp"
-#include "wpg/datasets/scenario.hpp"
+#include "wpg/datasets/input/scenario.hpp"
 
 namespace wpg::cli {
 

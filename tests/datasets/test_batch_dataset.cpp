@@ -10,8 +10,8 @@
 #include "hand_made_run.hpp"
 #include "hdf5_read.hpp"
 #include "test_support.hpp"
-#include "wpg/datasets/batch_dataset.hpp"
-#include "wpg/datasets/run_dataset_reader.hpp"
+#include "wpg/datasets/storage/batch_dataset.hpp"
+#include "wpg/datasets/storage/run_dataset_reader.hpp"
 
 namespace fs = std::filesystem;
 using namespace wpg::datasets;  // NOLINT: the API under test

@@ -10,7 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "test_support.hpp"
-#include "wpg/datasets/comparison_study.hpp"
+#include "wpg/datasets/study_design/comparison_study.hpp"
 
 namespace fs = std::filesystem;
 using wpg::datasets::ComparisonStudy;

@@ -11,8 +11,8 @@
 #include "hand_made_run.hpp"
 #include "hdf5_read.hpp"
 #include "test_support.hpp"
-#include "wpg/datasets/run_dataset.hpp"
-#include "wpg/datasets/scenario.hpp"
+#include "wpg/datasets/storage/run_dataset.hpp"
+#include "wpg/datasets/input/scenario.hpp"
 
 namespace {
 

@@ -12,10 +12,10 @@
 #include <gtest/gtest.h>
 
 #include "test_support.hpp"
-#include "wpg/datasets/comparison_study.hpp"
-#include "wpg/datasets/input_limits.hpp"
-#include "wpg/datasets/scenario.hpp"
-#include "wpg/datasets/study.hpp"
+#include "wpg/datasets/study_design/comparison_study.hpp"
+#include "wpg/datasets/input/input_limits.hpp"
+#include "wpg/datasets/input/scenario.hpp"
+#include "wpg/datasets/study_design/study.hpp"
 
 namespace fs = std::filesystem;
 using wpg::datasets::escapeControlCharacters;

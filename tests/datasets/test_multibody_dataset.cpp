@@ -16,8 +16,8 @@
 #include "test_support.hpp"
 #include <gtest/gtest.h>
 
-#include "wpg/datasets/run_dataset.hpp"
-#include "wpg/datasets/run_dataset_reader.hpp"
+#include "wpg/datasets/storage/run_dataset.hpp"
+#include "wpg/datasets/storage/run_dataset_reader.hpp"
 
 namespace fs = std::filesystem;
 using wpg::datasets::InputError;

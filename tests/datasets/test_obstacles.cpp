@@ -18,8 +18,8 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
-#include "wpg/datasets/run_dataset.hpp"
-#include "wpg/datasets/scenario.hpp"
+#include "wpg/datasets/storage/run_dataset.hpp"
+#include "wpg/datasets/input/scenario.hpp"
 #include "wpg/obstacles.hpp"
 
 namespace fs = std::filesystem;

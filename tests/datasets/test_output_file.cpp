@@ -13,8 +13,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include "wpg/datasets/input_error.hpp"
-#include "wpg/datasets/output_file.hpp"
+#include "wpg/datasets/input/input_error.hpp"
+#include "wpg/datasets/storage/output_file.hpp"
 
 namespace {
 

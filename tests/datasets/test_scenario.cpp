@@ -15,7 +15,7 @@
 #include <unistd.h>
 
 #include "test_support.hpp"
-#include "wpg/datasets/scenario.hpp"
+#include "wpg/datasets/input/scenario.hpp"
 
 namespace fs = std::filesystem;
 using wpg::datasets::InputError;

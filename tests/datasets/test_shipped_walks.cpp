@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "wpg/datasets/scenario.hpp"
+#include "wpg/datasets/input/scenario.hpp"
 #include "wpg/walk_checks.hpp"
 #include "wpg/walk_generator.hpp"
 

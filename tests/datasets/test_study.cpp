@@ -9,7 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "test_support.hpp"
-#include "wpg/datasets/study.hpp"
+#include "wpg/datasets/study_design/study.hpp"
 
 namespace fs = std::filesystem;
 using wpg::datasets::InputError;

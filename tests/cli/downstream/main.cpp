@@ -8,7 +8,7 @@
 #include <vector>
 
 #include <wpg/analysis/run_summary.hpp>
-#include <wpg/datasets/scenario.hpp>
+#include <wpg/datasets/input/scenario.hpp>
 #include <wpg/online_walking_generator.hpp>
 #include <wpg/walk_generator.hpp>
 #include <wpg/walk_request.hpp>
