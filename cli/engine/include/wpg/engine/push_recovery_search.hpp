@@ -10,7 +10,7 @@
 
 #include <Eigen/Core>
 
-#include "scenario_runner.hpp"
+#include "scenario_run.hpp"
 #include "wpg/datasets/input/scenario.hpp"
 
 namespace wpg::cli {

@@ -1,5 +1,5 @@
 // A study on the ranks of an MPI job (distributed_study.hpp).
-#include "distributed_study.hpp"
+#include "mpi_executor.hpp"
 
 #include <algorithm>
 #include <chrono>

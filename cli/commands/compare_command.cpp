@@ -17,7 +17,7 @@
 
 #include "batch_progress.hpp"
 #include "cli_common.hpp"
-#include "distributed_study.hpp"
+#include "mpi_executor.hpp"
 #include "mpi_world.hpp"
 #include "study_execution.hpp"
 #include "wpg/analysis/comparison_summary.hpp"

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "scenario_runner.hpp"
+#include "scenario_run.hpp"
 #include "wpg/datasets/storage/batch_dataset.hpp"
 #include "wpg/datasets/study_design/study.hpp"
 

@@ -1,5 +1,5 @@
 // Resolved scenarios on N worker threads (scenario_runner.hpp).
-#include "scenario_runner.hpp"
+#include "scenario_run.hpp"
 
 #include <exception>
 

@@ -13,9 +13,9 @@
 
 #include "batch_progress.hpp"
 #include "cli_common.hpp"
-#include "distributed_study.hpp"
+#include "mpi_executor.hpp"
 #include "mpi_world.hpp"
-#include "scenario_runner.hpp"
+#include "scenario_run.hpp"
 #include "study_execution.hpp"
 #include "wpg/analysis/run_metrics.hpp"
 #include "wpg/datasets/storage/batch_dataset.hpp"

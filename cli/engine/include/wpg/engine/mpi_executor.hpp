@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "mpi_world.hpp"
-#include "scenario_runner.hpp"
+#include "scenario_run.hpp"
 #include "wpg/datasets/storage/batch_dataset.hpp"
 #include "wpg/datasets/study_design/study.hpp"
 
