@@ -1,27 +1,22 @@
 // `wpg analyze FILE.h5 [--format table|csv|json]`: the metrics of datasets/METRICS.md for every
-// run of a run file or a batch file, recomputed from the stored walk (analysis/run_metrics).
+// run of a run file or a batch file, recomputed from the stored walk by the engine
+// (stored_runs.hpp).
 #include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <string>
 #include <vector>
 
-#include "cli_common.hpp"
+#include "command_options.hpp"
+#include "exit_codes.hpp"
 #include "json_text.hpp"
 #include "wpg/analysis/run_metrics.hpp"
-#include "wpg/analysis/zmp_error.hpp"
-#include "wpg/datasets/input/input_error.hpp"
-#include "wpg/datasets/storage/run_dataset_reader.hpp"
-#include "wpg/datasets/input/scenario.hpp"
-#include "wpg/datasets/storage/stored_run_consistency.hpp"
+#include "wpg/engine/stored_runs.hpp"
 
 namespace wpg::cli {
 namespace {
 
-struct AnalyzedRun {
-  std::string name;
-  analysis::RunMetrics metrics;
-};
+using AnalyzedRun = engine::StoredRunMetrics;
 
 std::string number(double value, const char* format) {
   if (std::isnan(value)) return "nan";
@@ -83,25 +78,7 @@ int analyzeCommand(const AnalyzeOptions& options) {
     throw UsageError("--format: expected table, csv or json, got '" + options.format + "'");
   }
   // Every run is read and analysed before anything is printed: a bad file prints one line.
-  std::vector<AnalyzedRun> runs;
-  for (const std::string& name : datasets::listRuns(options.input)) {
-    const datasets::StoredRun stored = datasets::readRunDataset(options.input, name);
-    const datasets::Scenario scenario = datasets::loadScenarioText(
-        stored.scenario_yaml, options.input + ":/runs/" + name + "/scenario", {},
-        robotsDirectory());
-    datasets::checkStoredRunMatchesScenario(options.input, stored, scenario);
-    analysis::ZmpErrorComparison zmp;
-    if (stored.zmp_error) {
-      zmp.filtered = stored.zmp_error->filtered;
-      zmp.before.rms = stored.zmp_error->rms_before;
-      zmp.before.max = stored.zmp_error->max_before;
-      zmp.after.rms = stored.zmp_error->rms_after;
-      zmp.after.max = stored.zmp_error->max_after;
-    }
-    runs.push_back({name, analysis::computeRunMetrics(
-                              scenario.walking, scenario.request, stored.result.trajectory,
-                              stored.result.success, stored.zmp_error ? &zmp : nullptr)});
-  }
+  const std::vector<AnalyzedRun> runs = engine::analyzeRunFile(options.input, robotsDirectory());
   if (runs.empty()) throw UsageError(options.input + ": no run under /runs");
   if (options.format == "table") printTable(runs);
   if (options.format == "csv") printCsv(runs);

@@ -1,5 +1,5 @@
 // `wpg bench [SCENARIO...]`: the paper's Sec. V-C table. For each scenario: run the online loop
-// of Fig. 3 (WPG + dynamic filter + IK, pipeline_stages.hpp) and print the wall time of one
+// of Fig. 3 (WPG + dynamic filter + IK, the engine's control_chain_benchmark.hpp) and print the wall time of one
 // 5 ms control tick that contains an NMPC iteration, as the paper counts it: average, standard
 // deviation, minimum, maximum, beside the paper's numbers; the stages of those ticks; the same
 // over every tick; this machine's CPU and OS beside the paper's (analysis/chain_timing.hpp
@@ -21,15 +21,17 @@
 #include <sys/utsname.h>
 #include <unistd.h>
 
-#include "cli_common.hpp"
+#include "command_options.hpp"
+#include "error_messages.hpp"
+#include "exit_codes.hpp"
 #include "json_text.hpp"
-#include "pipeline_stages.hpp"
-#include "wpg/datasets/storage/output_file.hpp"
 #include "summary_printing.hpp"
-#include "wpg/analysis/chain_timing.hpp"
-#include "wpg/analysis/zmp_error.hpp"
 #include "wpg/datasets/input/input_error.hpp"
 #include "wpg/datasets/input/scenario.hpp"
+#include "wpg/datasets/storage/output_file.hpp"
+#include "wpg/engine/control_chain_benchmark.hpp"
+#include "wpg/engine/robot_models.hpp"
+#include "wpg/engine/run_input_checks.hpp"
 
 namespace fs = std::filesystem;
 
@@ -42,46 +44,8 @@ constexpr const char* kStageNames[analysis::kChainStageCount] = {"WPG", "IK", "m
 constexpr const char* kStageKeys[analysis::kChainStageCount] = {"wpg", "ik", "multibody_zmp",
                                                                 "filter"};
 
-// One column of the table: the numbers come from analysis/ (chain_timing.hpp, zmp_error.hpp).
-struct BenchRow {
-  std::string name;
-  analysis::TickTiming ticks;           // [s] per 5 ms control period
-  double walk_duration = 0.0;           // [s]
-  double loop_wall_time = 0.0;          // [s] the whole online loop (walk, filter, validation)
-  double real_time_factor = 0.0;
-  int ticks_over_period = 0;            // NMPC ticks longer than the control period
-  double control_period = 0.0;          // [s]
-  analysis::ZmpErrorComparison zmp;     // [m]
-  int ik_failures = 0;
-  bool walk_success = true;
-};
-
-BenchRow measure(const datasets::Scenario& scenario, const robots::RobotModel& model) {
-  // The paper's loop (Fig. 3), whatever the scenario's filter mode: the online filter is the
-  // one that runs in the control period.
-  datasets::Scenario online = scenario;
-  online.filter_loop.mode = DynamicFilterMode::kOnline;
-  // ... with the paper's preview: one step (Sec. V-A, "in order to insure real time
-  // feasibility on HRP-2"), 0.8 s for HRP-2; the window the NMPC ticks replay scales with it.
-  online.filter_settings.preview_time = scenario.walking.stepDuration();
-  const ScenarioRun run = runScenario(&model, online);
-  const ReplayOutcome& replay = *run.replay;
-  BenchRow row;
-  row.name = scenario.name;
-  row.walk_success = run.walk.result.success;
-  row.ticks = analysis::tickTiming(replay.validation);
-  row.walk_duration = replay.walk_duration;
-  row.loop_wall_time = replay.wall_time;
-  row.real_time_factor = replay.realTimeFactor();
-  row.control_period = scenario.walking.control_period;
-  const MultibodyValidation& v = replay.validation;
-  for (Eigen::Index i = 0; i < v.tick_stage_time.rows(); ++i)
-    if (v.tick_nmpc[static_cast<std::size_t>(i)] && v.tick_stage_time.row(i).sum() > row.control_period)
-      ++row.ticks_over_period;
-  row.zmp = analysis::compareZmpError(v);
-  row.ik_failures = v.ik_failures;
-  return row;
-}
+// One column of the table (the engine measures it, analysis/ computes the numbers).
+using BenchRow = engine::ControlChainTiming;
 
 // The paper's Sec. V-C table (HRP-2's CPU board, the complete control architecture of Fig. 3,
 // ticks that contain an NMPC iteration only): experiments A and B.
@@ -257,7 +221,7 @@ int benchCommand(const BenchOptions& options) {
     } catch (const datasets::InputError& e) {
       throw UsageError(e.what());
     }
-    checkFilterSettings(scenarios.back(), path);
+    engine::checkFilterSettings(scenarios.back(), path);
   }
   if (!options.json.empty()) {
     std::vector<std::string> inputs;
@@ -272,7 +236,7 @@ int benchCommand(const BenchOptions& options) {
   std::vector<std::string> robot_names;
   for (const datasets::Scenario& scenario : scenarios) {
     if (std::find(robot_names.begin(), robot_names.end(), scenario.robot) == robot_names.end()) {
-      models.push_back(loadRobotModel(scenario.robot));
+      models.push_back(engine::loadRobotModel(robotsDirectory(), scenario.robot));
       robot_names.push_back(scenario.robot);
     }
   }
@@ -282,7 +246,7 @@ int benchCommand(const BenchOptions& options) {
   for (const datasets::Scenario& scenario : scenarios) {
     const std::size_t robot = static_cast<std::size_t>(
         std::find(robot_names.begin(), robot_names.end(), scenario.robot) - robot_names.begin());
-    rows.push_back(measure(scenario, models[robot]));
+    rows.push_back(engine::measureControlChain(scenario, models[robot]));
     every_walk_succeeded = every_walk_succeeded && rows.back().walk_success;
   }
   printTable(std::cout, rows);

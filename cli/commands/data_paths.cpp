@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
-#include <iostream>
 #include <system_error>
 
-#include "cli_common.hpp"
+#include "data_paths.hpp"
+#include "exit_codes.hpp"
 
 namespace fs = std::filesystem;
 

@@ -7,7 +7,8 @@
 #include <set>
 #include <string>
 
-#include "cli_common.hpp"
+#include "command_options.hpp"
+#include "exit_codes.hpp"
 #include "wpg/datasets/storage/dataset_diff.hpp"
 
 namespace wpg::cli {

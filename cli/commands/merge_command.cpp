@@ -5,10 +5,10 @@
 #include <filesystem>
 #include <system_error>
 
-#include "cli_common.hpp"
-#include "study_execution.hpp"
+#include "batch_summary.hpp"
+#include "command_options.hpp"
+#include "exit_codes.hpp"
 #include "wpg/datasets/storage/batch_index.hpp"
-#include "wpg/datasets/input/input_error.hpp"
 #include "wpg/datasets/storage/output_file.hpp"
 
 namespace fs = std::filesystem;
@@ -37,13 +37,9 @@ int mergeCommand(const MergeOptions& options) {
       shards.push_back(argument);
     }
   }
-  try {
-    // Never over a shard (by identity, whatever the name), a folder or a file of another kind.
-    datasets::checkOutputPath(options.output, datasets::OutputKind::kHdf5, shards);
-  } catch (const datasets::InputError& e) {
-    throw UsageError(e.what());
-  }
-  checkWritableParent(options.output);
+  // Never over a shard (by identity, whatever the name), a folder or a file of another kind.
+  datasets::checkOutputPath(options.output, datasets::OutputKind::kHdf5, shards);
+  datasets::checkWritableParent(options.output);
   const datasets::IndexReport report = datasets::writeBatchIndex(
       options.output, shards, options.copy ? datasets::IndexLayout::kCopy : datasets::IndexLayout::kLinks);
   (void)report;

@@ -1,88 +1,19 @@
-// `wpg plot` and the figure drawn at the end of `wpg run`: both run analysis/plot_run.py with
-// Debian's Python (/usr/bin/python3: a pyenv python3 first on PATH would not see Debian's
-// h5py and matplotlib).
-#include <spawn.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
-#include <cerrno>
-#include <cstdlib>
-#include <cstring>
+// `wpg plot RUN.h5 [-o FIG.png]`: the figure of a run dataset (analysis/plot_run.py, the figure
+// `wpg run` draws too).
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <system_error>
 
-#include "cli_common.hpp"
+#include "analysis_scripts.hpp"
+#include "command_options.hpp"
+#include "exit_codes.hpp"
 #include "wpg/datasets/input/input_error.hpp"
 #include "wpg/datasets/storage/output_file.hpp"
-
-extern char** environ;
 
 namespace fs = std::filesystem;
 
 namespace wpg::cli {
-namespace {
-
-constexpr const char* kPython = "/usr/bin/python3";
-
-// Messages are one line: line breaks become spaces, and any other control character (user
-// text quoted in a usage error) is escaped.
-std::string oneLine(std::string text) {
-  for (char& c : text) {
-    if (c == '\n' || c == '\r') c = ' ';
-  }
-  while (!text.empty() && text.back() == ' ') text.pop_back();
-  return datasets::escapeControlCharacters(text);
-}
-
-}  // namespace
-
-void printError(const std::string& message) { std::cerr << "wpg: error: " << oneLine(message) << '\n'; }
-
-void printWarning(const std::string& message) {
-  std::cerr << "wpg: warning: " << oneLine(message) << '\n';
-}
-
-int drawFigure(const std::string& run_file, const std::string& figure_file) {
-  return runAnalysisScript(plotScriptPath(), {run_file, "-o", figure_file});
-}
-
-int runAnalysisScript(const std::string& script, const std::vector<std::string>& arguments) {
-  if (::access(kPython, X_OK) != 0) {
-    printError(std::string("plotting needs ") + kPython +
-               " with h5py and matplotlib: install the Debian packages python3 python3-h5py "
-               "python3-matplotlib");
-    return kExitBadInput;
-  }
-  std::error_code ec;
-  if (!fs::is_regular_file(script, ec)) {
-    printError("plot script not found: " + script + " (set WPG_DATA_DIR to the wpg data folder)");
-    return kExitBadInput;
-  }
-  // The script reports its errors as "wpg: error: ..." like the rest of the CLI.
-  ::setenv("WPG_PLOT_PROG", "wpg", 1);
-  std::vector<std::string> args{kPython, script};
-  args.insert(args.end(), arguments.begin(), arguments.end());
-  std::vector<char*> argv;
-  for (std::string& a : args) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  pid_t pid = 0;
-  if (int err = ::posix_spawn(&pid, kPython, nullptr, nullptr, argv.data(), environ); err != 0) {
-    printError(std::string("cannot start ") + kPython + ": " + std::strerror(err));
-    return kExitBadInput;
-  }
-  int status = 0;
-  while (::waitpid(pid, &status, 0) < 0) {
-    if (errno != EINTR) {
-      printError(std::string("waiting for the plot script: ") + std::strerror(errno));
-      return kExitRunFailed;
-    }
-  }
-  if (WIFEXITED(status)) return WEXITSTATUS(status);
-  printError("the plot script was killed by signal " + std::to_string(WTERMSIG(status)));
-  return kExitRunFailed;
-}
 
 int plotCommand(const PlotOptions& options) {
   std::error_code ec;

@@ -1,9 +1,7 @@
 // `wpg push-sweep [--situation forward|on_spot] [--phases K] [-j N] [--json FILE] [-o OUT.h5]`:
-// the paper's push-recovery test (Sec. V-B, issue 11 item 3). For each walking situation
-// (forward at 0.2 m/s: the shipped `push`; stepping in place: `push_stepping_in_place`; each
-// with its own push replaced), each direction (sagittal +/-, coronal +/-) and K phases spread
-// over one steady step, the largest recovered force of a 100 ms push (push_recovery_search.hpp).
-// One bisection per job on -j worker threads (ordered_parallel.hpp): the same numbers for any N.
+// the paper's push-recovery test (Sec. V-B), run by the engine (wpg/engine/push_sweep.hpp) for
+// the situations forward at 0.2 m/s (the shipped `push`) and stepping in place
+// (`push_stepping_in_place`), each with its own push replaced: the same numbers for any -j.
 // Prints our table beside the paper's, writes the HDF5 table, its figure and the --json list.
 #include <algorithm>
 #include <cmath>
@@ -15,20 +13,26 @@
 #include <sstream>
 #include <system_error>
 
+#include "analysis_scripts.hpp"
 #include "batch_progress.hpp"
-#include "cli_common.hpp"
+#include "command_options.hpp"
+#include "error_messages.hpp"
+#include "exit_codes.hpp"
 #include "json_text.hpp"
-#include "ordered_parallel.hpp"
-#include "push_recovery_search.hpp"
+#include "wpg/analysis/sample_statistics.hpp"
 #include "wpg/datasets/input/input_error.hpp"
 #include "wpg/datasets/input/input_limits.hpp"
 #include "wpg/datasets/storage/output_file.hpp"
 #include "wpg/datasets/storage/push_sweep_dataset.hpp"
+#include "wpg/engine/push_sweep.hpp"
 
 namespace fs = std::filesystem;
 
 namespace wpg::cli {
 namespace {
+
+using engine::PushSituation;
+using engine::shortestNumber;
 
 // The situations and the shipped scenario that holds each (pushes[0] is replaced).
 struct SituationSource {
@@ -37,14 +41,6 @@ struct SituationSource {
 };
 constexpr SituationSource kSituations[] = {{"forward", "push"},
                                            {"on_spot", "push_stepping_in_place"}};
-
-// The swept step: this lift-off of the unpushed walk (0-based). Forward, the robot lifts its
-// first foot at 1.8 s (after the start's double support), stepping in place at 0.8 s; two steps
-// later (3.4 s, 2.4 s) the gait is periodic: the CoM velocity over the next two steps differs
-// from that of the two after by less than 5 mm/s. In both situations the left foot swings in
-// this step (the right one supports), as in the shipped `push` (90 N to +y at 3.8 s).
-constexpr std::size_t kSweptLiftOff = 2;
-constexpr double kAfterPushMargin = 2.0;  // [s] of walk at least after the last push
 
 // The paper's Sec. V-B numbers [N] per situation and direction (NaN: not given). It does not
 // define its axes; "smaller in the forward direction" gives sagittal+ = forward = +x; its
@@ -56,20 +52,9 @@ double paperForce(const std::string& situation, const std::string& direction) {
   return direction == "sagittal+" ? 70.0 : -160.0;
 }
 
-// The shortest decimal text that reads back as the same double (JSON, YAML, table).
-std::string shortestNumber(double value) {
-  for (int digits = 1; digits <= 17; ++digits) {
-    std::ostringstream text;
-    text << std::setprecision(digits) << value;
-    if (std::stod(text.str()) == value) return text.str();
-  }
-  return jsonNumber(value, 17);
-}
-
-double median(std::vector<double> values) {
-  std::sort(values.begin(), values.end());
-  const std::size_t n = values.size();
-  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+double median(const std::vector<double>& values) {
+  return analysis::median(Eigen::Map<const Eigen::VectorXd>(values.data(),
+                                                            static_cast<Eigen::Index>(values.size())));
 }
 
 void checkWritable(const std::string& path, const char* option, datasets::OutputKind kind) {
@@ -115,39 +100,13 @@ std::string besideOutput(const std::string& output, const std::string& suffix) {
   return path.string();
 }
 
-// Loads the situation's base scenario with the overrides and finds its swept step on the
-// unpushed walk.
+// The situation's base scenario with the overrides, and its swept step (the engine runs the
+// unpushed walk).
 PushSituation loadSituation(const SituationSource& source, const PushSweepOptions& options) {
-  PushSituation situation;
-  situation.name = source.name;
-  situation.scenario = source.scenario;
-  situation.base = datasets::loadScenario(resolveScenarioPath(source.scenario), options.overrides,
-                                          robotsDirectory());
-  if (situation.base.goal.enabled) {
-    throw UsageError(std::string(source.scenario) + ": a push sweep needs a walk on a velocity command, not a goal");
-  }
-  situation.step_period = situation.base.walking.stepDuration();
-  datasets::Scenario unpushed = situation.base;
-  if (!unpushed.request.pushes.empty()) unpushed.request.pushes.erase(unpushed.request.pushes.begin());
-  RobotModelCache models;
-  const ScenarioOutcome outcome = runScenarioPipeline(unpushed, &models);
-  if (outcome.exit_status != kExitSuccess) {
-    throw UsageError(std::string(source.scenario) + " without its push fails (" + outcome.failure +
-                     "): nothing to push");
-  }
-  const std::vector<double> lift_offs = liftOffTimes(outcome.result.trajectory);
-  if (lift_offs.size() <= kSweptLiftOff) {
-    throw UsageError(std::string(source.scenario) + ": the walk takes fewer than " +
-                     std::to_string(kSweptLiftOff + 1) + " steps (duration too short?)");
-  }
-  situation.lift_off = lift_offs[kSweptLiftOff];
-  const double last_push_end = situation.lift_off + situation.step_period + 0.1;
-  if (last_push_end + kAfterPushMargin > situation.base.request.duration) {
-    throw UsageError(std::string(source.scenario) + ": duration " +
-                     shortestNumber(situation.base.request.duration) + " s leaves less than " +
-                     shortestNumber(kAfterPushMargin) + " s of walk after the swept step (lift-off " +
-                     shortestNumber(situation.lift_off) + " s)");
-  }
+  const datasets::Scenario base = datasets::loadScenario(
+      resolveScenarioPath(source.scenario), options.overrides, robotsDirectory());
+  PushSituation situation =
+      engine::preparePushSituation(source.name, source.scenario, base, robotsDirectory());
   // Written with the outputs (writeSituationScenario), after everything is checked.
   if (!options.overrides.empty()) situation.scenario = besideOutput(options.output, situation.name + ".yaml");
   return situation;
@@ -232,56 +191,16 @@ int pushSweepCommand(const PushSweepOptions& options) {
       situations.push_back(loadSituation(source, options));
     }
   }
-  PushSearchSettings settings;
+  engine::PushSearchSettings settings;
   settings.max_force = options.max_force;
   settings.tolerance = options.tolerance;
-
-  // Jobs: situation x direction x phase, in that order (the order of the table and files).
-  struct Job {
-    const PushSituation* situation;
-    const PushDirection* direction;
-    double phase, t;
-  };
-  std::vector<Job> jobs;
-  for (const PushSituation& situation : situations) {
-    for (const PushDirection& direction : pushDirections()) {
-      for (int k = 0; k < options.phases; ++k) {
-        const double phase = static_cast<double>(k) / options.phases;
-        // Rounded to 1 ms: the push start reads back the same from the JSON's short text.
-        const double t = std::round((situation.lift_off + phase * situation.step_period) * 1000.0) / 1000.0;
-        jobs.push_back({&situation, &direction, phase, t});
-      }
-    }
-  }
-
-  std::vector<RobotModelCache> models(static_cast<std::size_t>(options.threads));
-  std::vector<datasets::PushSweepRow> rows;
-  BatchProgress progress("push-sweep", jobs.size(), stderr);
-  runOrdered<PushSearchResult>(
-      jobs.size(), options.threads,
-      [&](std::size_t index, int worker) {
-        const Job& job = jobs[index];
-        return searchLargestRecoveredPush(job.situation->base, job.t, job.direction->unit, settings,
-                                          &models[static_cast<std::size_t>(worker)]);
-      },
-      [&](std::size_t index, PushSearchResult&& result) {
-        const Job& job = jobs[index];
-        datasets::PushSweepRow row;
-        row.situation = job.situation->name;
-        row.direction = job.direction->name;
-        row.scenario = job.situation->scenario;
-        row.phase = job.phase;
-        row.t = job.t;
-        row.fx = result.force * job.direction->unit.x();
-        row.fy = result.force * job.direction->unit.y();
-        row.force = result.force * (job.direction->unit.sum() < 0.0 ? -1.0 : 1.0);
-        row.duration = settings.duration;
-        row.impulse = row.force * row.duration;
-        row.at_upper_bound = result.at_upper_bound;
-        row.walks = result.walks;
-        rows.push_back(row);
-        progress.runFinished(false);
-      });
+  BatchProgress progress("push-sweep",
+                         situations.size() * engine::pushDirections().size() *
+                             static_cast<std::size_t>(options.phases),
+                         stderr);
+  const std::vector<datasets::PushSweepRow> rows =
+      engine::runPushSweep(situations, options.phases, settings, options.threads,
+                           robotsDirectory(), [&] { progress.runFinished(false); });
   progress.finish();
 
   printTable(rows, options.phases);

@@ -1,19 +1,20 @@
-// `wpg run`: scenario file -> generateWalk, or the walk to a goal (-> multibody replay and
-// dynamic filter) -> HDF5 dataset (+ figure) and a short summary.
+// `wpg run`: scenario file -> the engine's run (the walk, or the walk to a goal, -> multibody
+// replay and dynamic filter) -> HDF5 dataset (+ figure) and a short summary.
 #include <filesystem>
 #include <iostream>
-#include <optional>
+#include <stdexcept>
 #include <system_error>
 
-#include "cli_common.hpp"
-#include "pipeline_stages.hpp"
-#include "study_execution.hpp"
+#include "command_options.hpp"
+#include "error_messages.hpp"
+#include "exit_codes.hpp"
 #include "summary_printing.hpp"
 #include "wpg/analysis/run_summary.hpp"
 #include "wpg/datasets/input/input_error.hpp"
-#include "wpg/datasets/storage/output_file.hpp"
 #include "wpg/datasets/input/scenario.hpp"
-#include "wpg/walk_generator.hpp"
+#include "wpg/datasets/storage/output_file.hpp"
+#include "wpg/engine/run_input_checks.hpp"
+#include "wpg/engine/scenario_run.hpp"
 
 namespace fs = std::filesystem;
 
@@ -47,20 +48,14 @@ int runCommand(const RunOptions& options) {
   datasets::Scenario scenario;
   try {
     scenario = datasets::loadScenario(scenario_path, overrides, robotsDirectory());
-    scenario.walking.validate();
-    scenario.request.validate();
   } catch (const datasets::InputError& e) {
     throw UsageError(aboutFile(scenario_path, e.what()));
   } catch (const std::invalid_argument& e) {
     throw UsageError(aboutFile(scenario_path, e.what()));
   }
-  // The robot's multibody model and the filter's controller before anything is generated.
-  std::optional<robots::RobotModel> model;
-  if (scenario.replay) {
-    model.emplace(loadRobotModel(scenario.robot));
-    if (scenario.filter) checkFilterSettings(scenario, scenario_path);
-  }
-  checkGoalRequest(scenario, scenario_path);
+  // The robot's multibody model, the filter's controller and the goal before anything runs.
+  engine::RobotModelCache models(robotsDirectory());
+  engine::checkRunInput(scenario, scenario_path, models);
 
   const fs::path dataset_path =
       options.output.empty() ? fs::path("out") / (scenario.name + ".h5") : fs::path(options.output);
@@ -69,52 +64,42 @@ int runCommand(const RunOptions& options) {
   // Never replace an input, a device, a folder or a file of another kind (output_file.hpp).
   const std::vector<std::string> inputs = {
       scenario_path, (fs::path(robotsDirectory()) / scenario.robot / "walking.yaml").string(),
-      robotUrdfPath(scenario.robot)};
-  try {
-    datasets::checkOutputPath(dataset_path.string(), datasets::OutputKind::kHdf5, inputs);
-    if (options.plot)
-      datasets::checkOutputPath(figure_path.string(), datasets::OutputKind::kPng, inputs);
-  } catch (const datasets::InputError& e) {
-    throw UsageError(e.what());
-  }
-  std::error_code ec;
-  checkWritableParent(dataset_path);
+      engine::robotUrdfPath(robotsDirectory(), scenario.robot)};
+  datasets::checkOutputPath(dataset_path.string(), datasets::OutputKind::kHdf5, inputs);
+  if (options.plot) datasets::checkOutputPath(figure_path.string(), datasets::OutputKind::kPng, inputs);
+  datasets::checkWritableParent(dataset_path.string());
 
-  ScenarioRun run;
+  engine::RunResult result;
   try {
-    run = runScenario(model ? &*model : nullptr, scenario);
+    result = engine::runScenario(scenario, {robotsDirectory(), &models});
   } catch (const std::invalid_argument& e) {
     throw UsageError(aboutFile(scenario_path, e.what()));
   }
-  const WalkOutcome& walk = run.walk;
-  const WalkResult& result = walk.result;
-  const std::optional<ReplayOutcome>& replay = run.replay;
+  const WalkResult& walk = result.walk.result;
 
+  std::error_code ec;
   if (dataset_path.has_parent_path()) {
     fs::create_directories(dataset_path.parent_path(), ec);
     if (ec) {
       throw UsageError("cannot create the folder of '" + dataset_path.string() + "': " + ec.message());
     }
   }
-  std::optional<ObstacleClearances> clearances;  // when the FCL world checked the steps
   try {
-    clearances = writeScenarioDataset(dataset_path.string(), scenario, result,
-                                      replay ? &replay->validation : nullptr,
-                                      walk.goal ? &*walk.goal : nullptr);
+    engine::writeRunDataset(dataset_path.string(), scenario, result);
   } catch (const std::invalid_argument& e) {
     // an inconsistent trajectory is a bug, not bad input
     throw std::runtime_error(std::string("cannot write the dataset: ") + e.what());
   }
 
-  printRunSummary(std::cout, scenario, analysis::summarizeRun(result.trajectory));
-  if (clearances) printObstacleClearances(std::cout, *clearances);
-  if (walk.goal) printGoalSummary(std::cout, walk);
-  if (replay) printMultibodySummary(std::cout, *replay);
+  printRunSummary(std::cout, scenario, analysis::summarizeRun(walk.trajectory));
+  if (result.footsteps) printObstacleClearances(std::cout, result.footsteps->least);
+  if (result.walk.goal) printGoalSummary(std::cout, result.walk);
+  if (result.replay) printMultibodySummary(std::cout, *result.replay);
   reportDatasetAndFigure(dataset_path.string(), figure_path.string(), options.plot);
-  if (!result.success) {
+  if (result.outcome != engine::RunOutcome::kSucceeded) {
     std::cout.flush();
-    printError("the walk failed: " + (result.message.empty() ? std::string("see mpc/status in the dataset")
-                                                             : result.message) +
+    printError("the walk failed: " + (walk.message.empty() ? std::string("see mpc/status in the dataset")
+                                                           : walk.message) +
                " (dataset written)");
     return kExitRunFailed;
   }

@@ -5,7 +5,9 @@
 #include <iostream>
 #include <ostream>
 
-#include "cli_common.hpp"
+#include "analysis_scripts.hpp"
+#include "error_messages.hpp"
+#include "exit_codes.hpp"
 #include "wpg/analysis/chain_timing.hpp"
 #include "wpg/analysis/zmp_error.hpp"
 
@@ -44,7 +46,7 @@ void printRunSummary(std::ostream& out, const datasets::Scenario& scenario,
   }
 }
 
-void printObstacleClearances(std::ostream& out, const ObstacleClearances& clearances) {
+void printObstacleClearances(std::ostream& out, const engine::ObstacleClearances& clearances) {
   out << "obstacles " << clearances.obstacle_count
       << "; least clearance: step centre to " << clearances.step_centre_bound
       << " (the NMPC's constraint) "
@@ -52,7 +54,7 @@ void printObstacleClearances(std::ostream& out, const ObstacleClearances& cleara
       << " m; sole to obstacle " << fixed(clearances.sole_to_obstacle, 3) << " m\n";
 }
 
-void printGoalSummary(std::ostream& out, const WalkOutcome& walk) {
+void printGoalSummary(std::ostream& out, const engine::WalkOutcome& walk) {
   const datasets::GoalOutcome& goal = *walk.goal;
   out << "goal      ";
   if (goal.goal_reached) {
@@ -65,7 +67,7 @@ void printGoalSummary(std::ostream& out, const WalkOutcome& walk) {
       << fixed(1e3 * walk.planning_time, walk.planning_time < 0.01 ? 1 : 0) << " ms\n";
 }
 
-void printMultibodySummary(std::ostream& out, const ReplayOutcome& outcome) {
+void printMultibodySummary(std::ostream& out, const engine::ReplayOutcome& outcome) {
   const MultibodyValidation& v = outcome.validation;
   const analysis::ZmpErrorComparison zmp = analysis::compareZmpError(v);
   if (zmp.filtered) {

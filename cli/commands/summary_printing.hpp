@@ -1,12 +1,12 @@
 #pragma once
 // The summary lines that `wpg run` and `wpg replay` print: formatting only (the numbers come
-// from analysis/ and the pipeline's stages, pipeline_stages.hpp).
+// from analysis/ and the engine's run result, wpg/engine/scenario_run.hpp).
 #include <iosfwd>
 #include <string>
 
-#include "pipeline_stages.hpp"
 #include "wpg/analysis/run_summary.hpp"
 #include "wpg/datasets/input/scenario.hpp"
+#include "wpg/engine/pipeline_stages.hpp"
 
 namespace wpg::cli {
 
@@ -19,14 +19,14 @@ void printRunSummary(std::ostream& out, const datasets::Scenario& scenario,
                      const analysis::RunSummary& summary);
 
 // The line about the least clearances of the footsteps to the obstacles.
-void printObstacleClearances(std::ostream& out, const ObstacleClearances& clearances);
+void printObstacleClearances(std::ostream& out, const engine::ObstacleClearances& clearances);
 
 // The line of a walk to a goal: reached or not (and why), the first route's length, the
 // replans and the planner's time over all plans.
-void printGoalSummary(std::ostream& out, const WalkOutcome& walk);
+void printGoalSummary(std::ostream& out, const engine::WalkOutcome& walk);
 
 // The summary lines of a replay: ZMP error before/after, IK status, timing of the chain.
-void printMultibodySummary(std::ostream& out, const ReplayOutcome& outcome);
+void printMultibodySummary(std::ostream& out, const engine::ReplayOutcome& outcome);
 
 // The last lines of `wpg run` and `wpg replay`: the dataset, and when `plot` its figure next to
 // it (a figure that cannot be drawn is a warning: the dataset is complete).

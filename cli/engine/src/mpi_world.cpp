@@ -13,7 +13,7 @@
 #include <mpi.h>
 #endif
 
-namespace wpg::cli::mpi {
+namespace wpg::engine::mpi {
 
 int launcherProcesses() {
   for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE"}) {
@@ -216,4 +216,4 @@ std::optional<std::size_t> RunDispenser::next(std::optional<std::size_t>, std::v
 
 #endif
 
-}  // namespace wpg::cli::mpi
+}  // namespace wpg::engine::mpi

@@ -2,13 +2,16 @@
 // The only MPI wpg uses (mpi_world.cpp is the one file that includes <mpi.h>; built with
 // WPG_WITH_MPI, otherwise launched() is false and the rest is never called): start and stop,
 // a status broadcast, a barrier, and the hand-out of a study's runs by rank 0 (RunDispenser).
+// The MPI executor (mpi_executor.cpp) is its one user.
 #include <cstddef>
 #include <functional>
 #include <memory>
 #include <optional>
 #include <vector>
 
-namespace wpg::cli::mpi {
+#include "wpg/engine/mpi_executor.hpp"
+
+namespace wpg::engine::mpi {
 
 // Built with MPI and started by an MPI launcher (mpirun, srun, ...: its environment says so).
 bool launched();
@@ -17,10 +20,7 @@ bool launched();
 // into one file, and refuses to.
 int launcherProcesses();
 
-struct World {
-  int rank = 0;
-  int size = 1;
-};
+using World = MpiWorld;
 // MPI_Init_thread (MPI_THREAD_SERIALIZED: one thread at a time calls MPI, see RunDispenser).
 World start();
 void finish();                         // MPI_Finalize
@@ -72,4 +72,4 @@ class RunDispenser {
   std::unique_ptr<State> state_;
 };
 
-}  // namespace wpg::cli::mpi
+}  // namespace wpg::engine::mpi

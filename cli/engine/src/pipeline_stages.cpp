@@ -1,72 +1,19 @@
 // The pipeline of one scenario, stage by stage (pipeline_stages.hpp).
-#include "pipeline_stages.hpp"
+#include "wpg/engine/pipeline_stages.hpp"
 
 #include <chrono>
-#include <filesystem>
 #include <stdexcept>
-#include <system_error>
 
-#include "cli_common.hpp"
 #include "wpg/analysis/chain_timing.hpp"
 #include "wpg/analysis/run_summary.hpp"
-#include "wpg/datasets/storage/run_dataset.hpp"
-#include "wpg/preview_control.hpp"
+#include "wpg/engine/run_input_checks.hpp"
+#include "wpg/planning/goal_walk.hpp"
+#include "wpg/planning/obstacle_checks.hpp"
+#include "wpg/planning/world.hpp"
 #include "wpg/robots/online_filter_loop.hpp"
 #include "wpg/robots/walk_replay.hpp"
 
-// The FCL world of planning/ (the post-run footstep checks), used as soon as the executable
-// links wpg_planning (its headers are then on the include path). Without it the dataset holds
-// the step-centre clearances only, computed by datasets/ with libwpg's exact 2-D distances.
-#if __has_include("wpg/planning/obstacle_checks.hpp")
-#define WPG_CLI_WITH_PLANNING 1
-#include "wpg/planning/obstacle_checks.hpp"
-#include "wpg/planning/world.hpp"
-#endif
-#include "wpg/planning/goal_walk.hpp"
-
-namespace fs = std::filesystem;
-
-namespace wpg::cli {
-
-std::string robotUrdfPath(const std::string& robot) {
-  return (fs::path(robotsDirectory()) / robot / (robot + ".urdf")).string();
-}
-
-robots::RobotModel loadRobotModel(const std::string& robot) {
-  const std::string path = robotUrdfPath(robot);
-  std::error_code ec;
-  if (!fs::is_regular_file(path, ec)) {
-    throw UsageError("robot '" + robot + "' has no multibody model for the replay: " + path +
-                     " not found (a robot folder needs <robot>.urdf to be replayed)");
-  }
-  try {
-    return robots::RobotModel(path);
-  } catch (const std::exception& e) {
-    throw UsageError("cannot load the multibody model of robot '" + robot + "' (" + path +
-                     "): " + e.what());
-  }
-}
-
-void checkFilterSettings(const datasets::Scenario& scenario, const std::string& scenario_path) {
-  try {
-    const PreviewController controller(scenario.walking.control_period,
-                                       scenario.walking.com_height, scenario.walking.gravity,
-                                       scenario.filter_settings);
-    (void)controller;
-  } catch (const std::exception& e) {
-    throw UsageError(scenario_path + ": key 'filter_settings': no preview controller for these "
-                     "weights (" + e.what() + ")");
-  }
-}
-
-void checkGoalRequest(const datasets::Scenario& scenario, const std::string& scenario_path) {
-  if (!scenario.goal.enabled) return;
-  try {
-    planning::checkGoalRequest(scenario.walking, scenario.request, scenario.goal);
-  } catch (const std::invalid_argument& e) {
-    throw UsageError(scenario_path + ": " + e.what());
-  }
-}
+namespace wpg::engine {
 
 WalkOutcome runScenarioWalk(const datasets::Scenario& scenario) {
   WalkOutcome outcome;
@@ -156,15 +103,19 @@ ReplayOutcome replayScenarioWalk(const robots::RobotModel& model,
 namespace {
 
 // A walk the replay cannot follow fails the run; the walk is still written (exit 1).
-void recordReplayFailure(WalkResult& result, const std::string& why) {
+void recordReplayFailure(WalkAndReplay& run, const std::string& why) {
+  WalkResult& result = run.walk.result;
+  run.walk_succeeded = result.success;
   result.success = false;
   result.message = result.message.empty() ? why : result.message + "; " + why;
+  run.replay_failure = why;
 }
 
 }  // namespace
 
-ScenarioRun runScenario(const robots::RobotModel* model, const datasets::Scenario& scenario) {
-  ScenarioRun run;
+WalkAndReplay runWalkAndReplay(const robots::RobotModel* model,
+                               const datasets::Scenario& scenario) {
+  WalkAndReplay run;
   const bool online = scenario.filter && model != nullptr &&
                       scenario.filter_loop.mode != DynamicFilterMode::kOffline;
   if (!online) {
@@ -174,7 +125,7 @@ ScenarioRun runScenario(const robots::RobotModel* model, const datasets::Scenari
     // Long enough by the scenario's duration (checked when it was loaded); a walk that fell in
     // its first samples is not, and is written without the multibody fields.
     if (result.trajectory.size() < 3) {
-      recordReplayFailure(result, "the walk is too short to replay (" +
+      recordReplayFailure(run, "the walk is too short to replay (" +
                                       std::to_string(result.trajectory.size()) +
                                       " samples, the replay needs 3)");
       return run;
@@ -182,15 +133,11 @@ ScenarioRun runScenario(const robots::RobotModel* model, const datasets::Scenari
     try {
       run.replay = replayScenarioWalk(*model, scenario, result.trajectory, scenario.filter);
     } catch (const std::runtime_error& e) {
-      recordReplayFailure(result, e.what());
+      recordReplayFailure(run, e.what());
     }
     return run;
   }
-  if (scenario.goal.enabled)
-    throw std::invalid_argument(
-        "key 'filter_settings.mode': expected offline for a scenario with a goal (the online "
-        "filter loop runs velocity-command walks only), got " +
-        std::string(dynamicFilterModeName(scenario.filter_loop.mode)));
+  checkFilterMode(scenario, scenario.source_path);
   robots::OnlineFilterLoopSettings settings;
   settings.preview = scenario.filter_settings;
   settings.reinitialize_wpg = scenario.filter_loop.reinitialize_wpg;
@@ -200,7 +147,11 @@ ScenarioRun runScenario(const robots::RobotModel* model, const datasets::Scenari
   try {
     loop = robots::runOnlineFilterLoop(*model, scenario.walking, scenario.request, settings);
   } catch (const std::runtime_error& e) {
-    throw std::runtime_error(std::string("cannot replay the walk: ") + e.what());
+    // The loop keeps no walk it cannot follow (one too short to replay): the walk is
+    // generated again without the loop, and the run fails for the replay.
+    run.walk = runScenarioWalk(scenario);
+    recordReplayFailure(run, std::string("cannot replay the walk: ") + e.what());
+    return run;
   }
   outcome.wall_time =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -208,7 +159,7 @@ ScenarioRun runScenario(const robots::RobotModel* model, const datasets::Scenari
   outcome.validation = std::move(loop.validation);
   outcome.walk_duration = analysis::walkDuration(run.walk.result.trajectory);
   if (!allFinite(outcome.validation)) {
-    recordReplayFailure(run.walk.result, kNotFinite);
+    recordReplayFailure(run, kNotFinite);
     return run;
   }
   if (scenario.filter_loop.mode == DynamicFilterMode::kBoth) {
@@ -222,7 +173,7 @@ ScenarioRun runScenario(const robots::RobotModel* model, const datasets::Scenari
       outcome.validation.offline_before = offline.validation.before;
       outcome.validation.offline_after = offline.validation.after;
     } catch (const std::runtime_error& e) {
-      recordReplayFailure(run.walk.result, std::string("offline pass: ") + e.what());
+      recordReplayFailure(run, std::string("offline pass: ") + e.what());
       return run;
     }
   }
@@ -232,39 +183,20 @@ ScenarioRun runScenario(const robots::RobotModel* model, const datasets::Scenari
 
 std::optional<FootstepCheck> checkScenarioFootsteps(const datasets::Scenario& scenario,
                                                     const WalkResult& result) {
-#ifdef WPG_CLI_WITH_PLANNING
-  if (!scenario.request.obstacles.empty()) {
-    const planning::World world(scenario.request.obstacles);
-    const planning::FootstepObstacleReport report =
-        planning::checkFootsteps(world, scenario.walking, result.trajectory);
-    FootstepCheck check;
-    check.clearances.clearance = report.clearance;
-    check.clearances.clearance_obstacle = report.clearance_obstacle;
-    check.clearances.foot_distance = report.foot_distance;
-    check.least.obstacle_count = world.obstacleCount();
-    check.least.step_centre = report.min_centre_clearance;
-    check.least.step_centre_bound = stepCentreBoundName(scenario.walking);
-    check.least.sole = report.min_clearance;
-    check.least.sole_to_obstacle = report.min_foot_distance;
-    return check;
-  }
-#else
-  (void)scenario;
-  (void)result;
-#endif
-  return std::nullopt;
+  if (scenario.request.obstacles.empty()) return std::nullopt;
+  const planning::World world(scenario.request.obstacles);
+  const planning::FootstepObstacleReport report =
+      planning::checkFootsteps(world, scenario.walking, result.trajectory);
+  FootstepCheck check;
+  check.clearances.clearance = report.clearance;
+  check.clearances.clearance_obstacle = report.clearance_obstacle;
+  check.clearances.foot_distance = report.foot_distance;
+  check.least.obstacle_count = world.obstacleCount();
+  check.least.step_centre = report.min_centre_clearance;
+  check.least.step_centre_bound = stepCentreBoundName(scenario.walking);
+  check.least.sole = report.min_clearance;
+  check.least.sole_to_obstacle = report.min_foot_distance;
+  return check;
 }
 
-std::optional<ObstacleClearances> writeScenarioDataset(const std::string& path,
-                                                       const datasets::Scenario& scenario,
-                                                       const WalkResult& result,
-                                                       const MultibodyValidation* multibody,
-                                                       const datasets::GoalOutcome* goal) {
-  const std::optional<FootstepCheck> check = checkScenarioFootsteps(scenario, result);
-  datasets::writeRunDataset(path, scenario, result, check ? &check->clearances : nullptr,
-                            multibody, goal);
-  if (!check) return std::nullopt;
-  return check->least;
-}
-
-}  // namespace wpg::cli
+}  // namespace wpg::engine

@@ -1,9 +1,9 @@
 // The push-recovery search of `wpg push-sweep` (push_recovery_search.hpp).
-#include "push_recovery_search.hpp"
+#include "wpg/engine/push_recovery_search.hpp"
 
 #include "wpg/walk_trajectory.hpp"
 
-namespace wpg::cli {
+namespace wpg::engine {
 
 const std::vector<PushDirection>& pushDirections() {
   static const std::vector<PushDirection> directions = {
@@ -41,23 +41,22 @@ datasets::Scenario withPush(const datasets::Scenario& base, double t, const Eige
   return scenario;
 }
 
-bool walkRecovers(const datasets::Scenario& scenario, double push_start, RobotModelCache* models) {
-  const ScenarioOutcome outcome = runScenarioPipeline(scenario, models);
-  if (outcome.exit_status != kExitSuccess) return false;
-  for (const MpcIterationLog& row : outcome.result.trajectory.mpc) {
+bool walkRecovers(const datasets::Scenario& scenario, double push_start,
+                  const RunSettings& settings) {
+  const RunResult result = runScenario(scenario, settings);
+  if (result.outcome != RunOutcome::kSucceeded) return false;
+  for (const MpcIterationLog& row : result.walk.result.trajectory.mpc) {
     if (row.time >= push_start && row.status != IterationStatus::kSolved) return false;
   }
   return true;
 }
 
-PushSearchResult searchLargestRecoveredPush(const datasets::Scenario& base, double t,
-                                            const Eigen::Vector2d& unit,
-                                            const PushSearchSettings& settings,
-                                            RobotModelCache* models) {
+PushSearchResult searchLargestRecoveredForce(const std::function<bool(double force)>& recovered,
+                                             const PushSearchSettings& settings) {
   PushSearchResult result;
   const auto recovers = [&](double force) {
     ++result.walks;
-    return walkRecovers(withPush(base, t, force * unit, settings.duration), t, models);
+    return recovered(force);
   };
   // Invariant: `low` recovered (or is 0), `high` failed.
   double low = 0.0, high = settings.max_force;
@@ -96,4 +95,15 @@ PushSearchResult searchLargestRecoveredPush(const datasets::Scenario& base, doub
   return result;
 }
 
-}  // namespace wpg::cli
+PushSearchResult searchLargestRecoveredPush(const datasets::Scenario& base, double t,
+                                            const Eigen::Vector2d& unit,
+                                            const PushSearchSettings& settings,
+                                            const RunSettings& run_settings) {
+  return searchLargestRecoveredForce(
+      [&](double force) {
+        return walkRecovers(withPush(base, t, force * unit, settings.duration), t, run_settings);
+      },
+      settings);
+}
+
+}  // namespace wpg::engine

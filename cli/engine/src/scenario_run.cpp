@@ -1,71 +1,68 @@
-// Resolved scenarios on N worker threads (scenario_runner.hpp).
-#include "scenario_run.hpp"
+// One scenario end to end (scenario_run.hpp).
+#include "wpg/engine/scenario_run.hpp"
 
-#include <exception>
+#include <optional>
 
-#include "batch_progress.hpp"
-#include "ordered_parallel.hpp"
+#include "wpg/analysis/chain_timing.hpp"
 #include "wpg/analysis/zmp_error.hpp"
 
-namespace wpg::cli {
+namespace wpg::engine {
 
-ScenarioOutcome runScenarioPipeline(const datasets::Scenario& scenario, RobotModelCache* models) {
-  ScenarioOutcome outcome;
-  const robots::RobotModel* robot = nullptr;
+const char* runOutcomeName(RunOutcome outcome) {
+  switch (outcome) {
+    case RunOutcome::kSucceeded: return "succeeded";
+    case RunOutcome::kWalkFailed: return "walk_failed";
+    case RunOutcome::kReplayFailed: return "replay_failed";
+  }
+  return "unknown";
+}
+
+RunResult runScenario(const datasets::Scenario& scenario, const RunSettings& settings) {
+  const robots::RobotModel* model = nullptr;
+  std::optional<RobotModelCache> own_models;
   if (scenario.replay) {
-    auto model = models->find(scenario.robot);
-    if (model == models->end()) {
-      model = models->emplace(scenario.robot, std::make_unique<robots::RobotModel>(
-                                                  loadRobotModel(scenario.robot)))
-                  .first;
-    }
-    robot = model->second.get();
+    RobotModelCache* models = settings.models;
+    if (!models) models = &own_models.emplace(settings.robots_directory);
+    model = &models->model(scenario.robot);
   }
-  try {
-    ScenarioRun run = runScenario(robot, scenario);
-    outcome.result = std::move(run.walk.result);
-    outcome.goal = std::move(run.walk.goal);
-    outcome.replay = std::move(run.replay);
-  } catch (const std::runtime_error& e) {  // a walk too short to replay: a failed run
-    WalkOutcome walk = runScenarioWalk(scenario);
-    outcome.result = std::move(walk.result);
-    outcome.goal = std::move(walk.goal);
-    outcome.exit_status = kExitRunFailed;
-    outcome.failure = e.what();
+  WalkAndReplay run = runWalkAndReplay(model, scenario);
+  RunResult result;
+  result.walk = std::move(run.walk);
+  result.replay = std::move(run.replay);
+  evaluateRun(scenario, result);
+  if (result.outcome == RunOutcome::kWalkFailed && !run.replay_failure.empty() &&
+      run.walk_succeeded) {
+    result.outcome = RunOutcome::kReplayFailed;
   }
-  if (!outcome.result.success) {
-    outcome.exit_status = kExitRunFailed;
-    if (outcome.failure.empty())
-      outcome.failure = outcome.result.message.empty() ? "the walk failed" : outcome.result.message;
-  }
-  outcome.footsteps = checkScenarioFootsteps(scenario, outcome.result);
+  return result;
+}
+
+void evaluateRun(const datasets::Scenario& scenario, RunResult& result) {
+  const WalkResult& walk = result.walk.result;
+  result.outcome = walk.success ? RunOutcome::kSucceeded : RunOutcome::kWalkFailed;
+  result.failure = walk.success ? "" : walk.message.empty() ? "the walk failed" : walk.message;
+  result.footsteps = checkScenarioFootsteps(scenario, walk);
+  result.checks = datasets::computeDatasetChecks(
+      scenario, walk.trajectory, result.footsteps ? &result.footsteps->clearances : nullptr);
   analysis::ZmpErrorComparison zmp;
-  if (outcome.replay) zmp = analysis::compareZmpError(outcome.replay->validation);
-  outcome.metrics =
-      analysis::computeRunMetrics(scenario.walking, scenario.request, outcome.result.trajectory,
-                                  outcome.result.success, outcome.replay ? &zmp : nullptr);
-  return outcome;
+  if (result.replay) zmp = analysis::compareZmpError(result.replay->validation);
+  result.metrics = analysis::computeRunMetrics(scenario.walking, scenario.request, walk.trajectory,
+                                               walk.success, result.replay ? &zmp : nullptr);
 }
 
-void runScenarios(const std::vector<const datasets::Scenario*>& scenarios, int threads,
-                  BatchProgress* progress,
-                  const std::function<void(std::size_t, ScenarioOutcome&)>& in_worker,
-                  const std::function<void(std::size_t, ScenarioOutcome&&)>& deliver) {
-  const int workers = threads < 1 ? 1 : threads;
-  std::vector<RobotModelCache> models(static_cast<std::size_t>(workers));
-  runOrdered<ScenarioOutcome>(
-      scenarios.size(), workers,
-      [&](std::size_t job, int worker) {
-        ScenarioOutcome outcome =
-            runScenarioPipeline(*scenarios[job], &models[static_cast<std::size_t>(worker)]);
-        if (in_worker) in_worker(job, outcome);
-        return outcome;
-      },
-      [&](std::size_t job, ScenarioOutcome&& outcome) {
-        const bool failed = outcome.exit_status != kExitSuccess;
-        deliver(job, std::move(outcome));
-        if (progress) progress->runFinished(failed);
-      });
+datasets::MultibodyRecord multibodyRecordOf(const ReplayOutcome& replay) {
+  const analysis::SampleStatistics chain = analysis::chainTiming(replay.validation).per_iteration;
+  return {replay.validation, {chain.mean, chain.std_dev, chain.min, chain.max}};
 }
 
-}  // namespace wpg::cli
+void writeRunDataset(const std::string& path, const datasets::Scenario& scenario,
+                     const RunResult& result) {
+  std::optional<datasets::MultibodyRecord> multibody;
+  if (result.replay) multibody.emplace(multibodyRecordOf(*result.replay));
+  datasets::writeRunDataset(path, scenario, result.walk.result,
+                            result.footsteps ? &result.footsteps->clearances : nullptr,
+                            multibody ? &*multibody : nullptr,
+                            result.walk.goal ? &*result.walk.goal : nullptr);
+}
+
+}  // namespace wpg::engine

@@ -172,6 +172,21 @@ void checkOutputPath(const std::string& path, OutputKind kind,
                            std::string(outputKindName(kind)) + " is replaced)");
 }
 
+void checkWritableParent(const std::string& output) {
+  std::error_code ec;
+  const fs::path path(output);
+  for (fs::path folder = path.parent_path(); !folder.empty(); folder = folder.parent_path()) {
+    if (fs::exists(folder, ec)) {
+      if (!fs::is_directory(folder, ec) || ::access(folder.c_str(), W_OK | X_OK) != 0) {
+        throw InputError("cannot write output '" + output + "': '" + folder.string() +
+                         "' is not a writable directory");
+      }
+      break;
+    }
+    if (folder == folder.parent_path()) break;
+  }
+}
+
 TemporaryOutput::TemporaryOutput(const std::string& target) : target_(target) {
   const fs::path file(target);
   if (target.empty() || !file.has_filename())

@@ -26,7 +26,7 @@
 #include "wpg/datasets/storage/output_file.hpp"
 #include "hdf5_writing.hpp"
 #include "run_group_writing.hpp"
-#include "run_checks.hpp"
+#include "wpg/datasets/storage/dataset_checks.hpp"
 #include "wpg/obstacles.hpp"
 #include <unistd.h>
 
@@ -295,7 +295,7 @@ void writeObstacles(H5::Group& run, const std::vector<Obstacle>& obstacles) {
 }
 
 // Footsteps against the obstacles (when there are any): the step centres computed by
-// run_checks.cpp with libwpg's exact 2-D distance; the soles from the caller's FCL world.
+// dataset_checks.cpp with libwpg's exact 2-D distance; the soles from the caller's FCL world.
 void writeObstacleChecks(H5::Group& checks, const FootstepObstacleChecks& steps,
                          const FootstepClearances* clearances) {
   writeDoubles(checks, "step_centre_clearance", steps.step_centre_clearance, 0,
@@ -327,9 +327,9 @@ void writeObstacleChecks(H5::Group& checks, const FootstepObstacleChecks& steps,
   writeDoubleAttribute(checks, "min_step_foot_distance", steps.min_step_foot_distance);
 }
 
-// Physical invariants of the walk (run_checks.hpp), so that a dataset says whether it is sound
+// Physical invariants of the walk (dataset_checks.hpp), so that a dataset says whether it is sound
 // without any code of ours.
-void writeChecks(H5::Group& run, const RunChecks& checked, const FootstepClearances* clearances) {
+void writeChecks(H5::Group& run, const DatasetChecks& checked, const FootstepClearances* clearances) {
   const WalkCheckReport& report = checked.walk;
   H5::Group checks = createGroup(run, "checks");
   writeStringAttribute(checks, "description",
@@ -393,7 +393,8 @@ void checkMultibodySizes(const MultibodyValidation& multibody, const WalkTraject
 // The multibody replay and the dynamic filter (paper Sec. IV, Fig. 6): the motion sent to the
 // robot, the multibody ZMP before and after the filter, and how far they are from the
 // reference CoP.
-void writeMultibody(H5::Group& run, const Scenario& scenario, const MultibodyValidation& mb) {
+void writeMultibody(H5::Group& run, const Scenario& scenario, const MultibodyRecord& multibody) {
+  const MultibodyValidation& mb = multibody.validation;
   const hsize_t nq = mb.configuration_names.size();
   std::vector<std::string> units;
   for (hsize_t j = 0; j < nq; ++j) units.push_back(j < 3 ? "m" : j < 7 ? "1" : "rad");
@@ -470,11 +471,10 @@ void writeMultibody(H5::Group& run, const Scenario& scenario, const MultibodyVal
   writeDoubles(timing, "chain_stage_time", rowMajor(mb.chain_stage_time), 4,
                {"s", nullptr, "wall time of each stage of the chain in each NMPC iteration",
                 "nmpc, ik, multibody_zmp, filter"});
-  const TimeStatistics statistics = timeStatistics(chain);
-  writeDoubleAttribute(timing, "chain_time_average", statistics.average);
-  writeDoubleAttribute(timing, "chain_time_std", statistics.std_dev);
-  writeDoubleAttribute(timing, "chain_time_min", statistics.min);
-  writeDoubleAttribute(timing, "chain_time_max", statistics.max);
+  writeDoubleAttribute(timing, "chain_time_average", multibody.chain_time.average);
+  writeDoubleAttribute(timing, "chain_time_std", multibody.chain_time.std_dev);
+  writeDoubleAttribute(timing, "chain_time_min", multibody.chain_time.min);
+  writeDoubleAttribute(timing, "chain_time_max", multibody.chain_time.max);
 
   // Per control period (the paper's unit: one 5 ms tick, Sec. V-C).
   if (mb.tick_stage_time.rows() > 0) {
@@ -495,7 +495,7 @@ void writeMultibody(H5::Group& run, const Scenario& scenario, const MultibodyVal
 }
 
 void writeFile(const std::string& file_path, const Scenario& scenario, const WalkResult& result,
-               const FootstepClearances* clearances, const MultibodyValidation* multibody,
+               const FootstepClearances* clearances, const MultibodyRecord* multibody,
                const GoalOutcome* goal) {
   // Closing the file closes every object still open and flushes them (a strong close): a write
   // that fails there (disk full) is an error of file.close(), not a message of a destructor
@@ -530,17 +530,16 @@ void writeFile(const std::string& file_path, const Scenario& scenario, const Wal
 namespace detail {
 
 void checkRunInputs(const Scenario& scenario, const wpg::WalkResult& result,
-                    const FootstepClearances* clearances,
-                    const wpg::MultibodyValidation* multibody) {
+                    const FootstepClearances* clearances, const MultibodyRecord* multibody) {
   checkSizes(result.trajectory);
   if (clearances) checkClearanceSizes(*clearances, result.trajectory);
-  if (multibody) checkMultibodySizes(*multibody, result.trajectory);
+  if (multibody) checkMultibodySizes(multibody->validation, result.trajectory);
   checkGroupName(scenario.name);
 }
 
 H5::Group writeRunGroup(H5::Group& runs, const std::string& group_name, const Scenario& scenario,
                         const WalkResult& result, const FootstepClearances* clearances,
-                        const MultibodyValidation* multibody, const GoalOutcome* goal) {
+                        const MultibodyRecord* multibody, const GoalOutcome* goal) {
   H5::Group run = createGroup(runs, group_name);
   writeStringAttribute(run, "algorithm",
                        generatorAlgorithmName(scenario.request.generator.algorithm));
@@ -552,11 +551,12 @@ H5::Group writeRunGroup(H5::Group& runs, const std::string& group_name, const Sc
   writeObstacles(run, scenario.request.obstacles);
   // The checks are computed once: while recording (a batch worker, off the lock) when there
   // is a recording, and kept for the replay.
-  std::shared_ptr<const RunChecks> checks;
+  std::shared_ptr<const DatasetChecks> checks;
   if (ChunkRecording* replay = activeReplay(); replay && replay->cache) {
-    checks = std::static_pointer_cast<const RunChecks>(replay->cache);
+    checks = std::static_pointer_cast<const DatasetChecks>(replay->cache);
   } else {
-    checks = std::make_shared<RunChecks>(computeRunChecks(scenario, result.trajectory, clearances));
+    checks = std::make_shared<DatasetChecks>(
+        computeDatasetChecks(scenario, result.trajectory, clearances));
     if (ChunkRecording* recording = activeRecording()) recording->cache = checks;
   }
   writeChecks(run, *checks, clearances);
@@ -569,7 +569,7 @@ H5::Group writeRunGroup(H5::Group& runs, const std::string& group_name, const Sc
 
 void writeRunDataset(const std::string& path, const Scenario& scenario,
                      const wpg::WalkResult& result, const FootstepClearances* clearances,
-                     const wpg::MultibodyValidation* multibody, const GoalOutcome* goal) {
+                     const MultibodyRecord* multibody, const GoalOutcome* goal) {
   checkRunInputs(scenario, result, clearances, multibody);
   if (goal && !scenario.goal.enabled) {
     throw std::invalid_argument("writeRunDataset: a goal outcome for a scenario without a goal");

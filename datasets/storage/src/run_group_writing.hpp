@@ -12,12 +12,12 @@ namespace wpg::datasets::detail {
 
 // The checks of writeRunDataset on its inputs (std::invalid_argument, see there).
 void checkRunInputs(const Scenario& scenario, const wpg::WalkResult& result,
-                    const FootstepClearances* clearances, const wpg::MultibodyValidation* multibody);
+                    const FootstepClearances* clearances, const MultibodyRecord* multibody);
 
 // Creates runs/<group_name> with everything of the run schema; the caller holds hdf5Mutex().
 H5::Group writeRunGroup(H5::Group& runs, const std::string& group_name, const Scenario& scenario,
                         const wpg::WalkResult& result, const FootstepClearances* clearances,
-                        const wpg::MultibodyValidation* multibody,
+                        const MultibodyRecord* multibody,
                         const GoalOutcome* goal = nullptr);
 
 }  // namespace wpg::datasets::detail

@@ -1,7 +1,7 @@
 #pragma once
 // Jobs 0..count-1 on `threads` worker threads, their outcomes delivered in job order: the
-// engine of `wpg batch` (scenario_runner.hpp), meant for any sweep of independent jobs (a push
-// sweep's bisections, a comparison's runs). Each worker owns what its jobs build (one problem
+// thread executor of studies and comparisons (study_executor.hpp) and the push sweep's
+// bisections (push_sweep.hpp) run on it. Each worker owns what its jobs build (one problem
 // copy per thread, nothing shared that a job writes); `deliver` is called by one thread at a
 // time, in order 0, 1, 2, ..., as soon as the outcome of every earlier job is there, so a writer
 // behind it sees the same sequence for any number of threads.
@@ -16,7 +16,7 @@
 #include <thread>
 #include <vector>
 
-namespace wpg::cli {
+namespace wpg::engine {
 
 // `work(job, worker)`: worker in [0, threads), for per-thread state (a robot model, ...).
 // `started(job)` (may be empty) is called when a job is handed to a worker.
@@ -78,4 +78,4 @@ void runOrdered(std::size_t count, int threads,
   if (error) std::rethrow_exception(error);
 }
 
-}  // namespace wpg::cli
+}  // namespace wpg::engine

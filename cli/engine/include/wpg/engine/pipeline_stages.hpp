@@ -1,31 +1,18 @@
 #pragma once
-// The pipeline of one scenario, stage by stage, as `wpg run`, `wpg replay` and `wpg bench` wire
-// it: scenario (datasets) -> generateWalk (NMPC + interpolation: libwpg) -> replayWalk (IK,
-// multibody ZMP, dynamic filter: robots) -> footstep checks (FCL world: planning) and the
-// dataset (datasets). Each function calls one library stage with the scenario's settings and
-// turns the stage's failures into the CLI's errors; the numbers of the summaries are computed
-// by analysis/, and printed by summary_printing.hpp.
+// The stages of one scenario's pipeline: scenario (datasets) -> the walk (generateWalk, or the
+// walk to a goal of planning/) -> its replay on the multibody model and the dynamic filter
+// (robots) -> the footsteps against the obstacles (FCL world: planning). runScenario
+// (scenario_run.hpp) chains them for a run; `wpg replay` and `wpg bench` call single stages.
 #include <optional>
 #include <string>
 
-#include "wpg/datasets/storage/run_dataset.hpp"
 #include "wpg/datasets/input/scenario.hpp"
+#include "wpg/datasets/storage/run_dataset.hpp"
 #include "wpg/multibody_validation.hpp"
 #include "wpg/robots/robot_model.hpp"
 #include "wpg/walk_generator.hpp"
 
-namespace wpg::cli {
-
-// <robots directory>/<robot>/<robot>.urdf: the multibody model of a robot folder.
-std::string robotUrdfPath(const std::string& robot);
-
-// The robot's multibody model; throws UsageError naming the URDF path when the robot has no
-// URDF or it cannot be read (checked before anything is generated or written).
-robots::RobotModel loadRobotModel(const std::string& robot);
-
-// Throws UsageError when the scenario's filter_settings give no preview controller (the
-// Riccati iteration does not converge), naming `scenario_path`.
-void checkFilterSettings(const datasets::Scenario& scenario, const std::string& scenario_path);
+namespace wpg::engine {
 
 // Stage walk: generateWalk on the scenario's velocity command, or, when it has a goal, the walk
 // to the goal (planning/goal_walk.hpp: route planner + path follower + replanning), whose
@@ -38,11 +25,7 @@ struct WalkOutcome {
   double route_length = 0.0;                  // [m] of the first route (0 without one)
 };
 
-// Throws UsageError naming `scenario_path` when the goal request does not fit the world (goal
-// or start inside a grown obstacle or out of the bounds, unknown planner): checked before
-// anything is generated or written. Nothing to check without a goal.
-void checkGoalRequest(const datasets::Scenario& scenario, const std::string& scenario_path);
-
+// Throws std::invalid_argument for a walk the generator rejects (as generateWalk).
 WalkOutcome runScenarioWalk(const datasets::Scenario& scenario);
 
 // Stage replay + filter, with the wall time it took.
@@ -53,24 +36,31 @@ struct ReplayOutcome {
   double realTimeFactor() const;  // walk_duration / wall_time (analysis::realTimeFactor)
 };
 
-// replayWalk with the scenario's filter settings; `filter` false replays only.
+// replayWalk with the scenario's filter settings; `filter` false replays only. Throws
+// std::runtime_error ("cannot replay the walk: ...") when the replay cannot follow the walk (too
+// short, or joint angles, filtered CoM or multibody ZMP that are not finite).
 ReplayOutcome replayScenarioWalk(const robots::RobotModel& model,
                                  const datasets::Scenario& scenario, const WalkTrajectory& walk,
                                  bool filter);
 
 // Stages walk + replay + filter as the scenario says (`scenario.replay`, `filter`,
-// `filter_settings.mode`): generateWalk then replayScenarioWalk (no filter, or mode offline),
-// or the online loop of the paper's Fig. 3 (robots/online_filter_loop.hpp: the walk and its
-// filter together; mode both also runs generateWalk + the offline pass, whose ZMP errors
-// go to validation.offline_*). `model` is needed (non-null) when the scenario replays.
-// A goal walk (runScenarioWalk) is filtered offline only: its online loop would need the goal
-// walk inside the filter loop (std::invalid_argument for filter_settings.mode online or both).
-// Throws std::invalid_argument for a walk the generator rejects (as generateWalk).
-struct ScenarioRun {
+// `filter_settings.mode`): runScenarioWalk then replayScenarioWalk (no filter, or mode
+// offline), or the online loop of the paper's Fig. 3 (robots/online_filter_loop.hpp: the walk
+// and its filter together; mode both also runs generateWalk + the offline pass, whose ZMP
+// errors go to validation.offline_*). `model` is needed (non-null) when the scenario replays.
+// A replay that cannot follow the walk is written into the walk (success false, the reason
+// appended to its message) and into `replay_failure`: the run failed, its walk is kept. When the
+// online loop cannot follow its walk it returns none, and the walk is generated without it.
+// A goal walk is filtered offline only: datasets::InputError otherwise (checkFilterMode,
+// run_input_checks.hpp). Throws std::invalid_argument for a walk the generator rejects (as
+// generateWalk).
+struct WalkAndReplay {
   WalkOutcome walk;
   std::optional<ReplayOutcome> replay;
+  std::string replay_failure;  // why the replay failed (one line); empty when it did not
+  bool walk_succeeded = true;  // the walk's own success, before a failed replay was recorded
 };
-ScenarioRun runScenario(const robots::RobotModel* model, const datasets::Scenario& scenario);
+WalkAndReplay runWalkAndReplay(const robots::RobotModel* model, const datasets::Scenario& scenario);
 
 // The least clearances of the landed footsteps to the scenario's obstacles (FCL world,
 // wpg/planning/obstacle_checks.hpp), minima over the steps [m].
@@ -84,7 +74,7 @@ struct ObstacleClearances {
 };
 
 // The footstep clearances of the FCL world (sole rectangles against the obstacles) for the
-// dataset, with their minima; none without obstacles (or without planning/ linked).
+// dataset, with their minima; none without obstacles.
 struct FootstepCheck {
   datasets::FootstepClearances clearances;
   ObstacleClearances least;
@@ -92,11 +82,4 @@ struct FootstepCheck {
 std::optional<FootstepCheck> checkScenarioFootsteps(const datasets::Scenario& scenario,
                                                     const WalkResult& result);
 
-// Stage dataset: writeRunDataset, with the footstep clearances of the FCL world when the
-// scenario has obstacles; returns those clearances (none without obstacles).
-// `goal`: the goal walk's plans and outcome (WalkOutcome::goal), required for a goal scenario.
-std::optional<ObstacleClearances> writeScenarioDataset(
-    const std::string& path, const datasets::Scenario& scenario, const WalkResult& result,
-    const MultibodyValidation* multibody = nullptr, const datasets::GoalOutcome* goal = nullptr);
-
-}  // namespace wpg::cli
+}  // namespace wpg::engine

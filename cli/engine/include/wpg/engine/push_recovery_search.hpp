@@ -5,25 +5,16 @@
 // from the push start on is `solved` (no relaxed constraint of any family, no dropped QP):
 // the same walk under `wpg run <scenario> --set 'pushes[0]={t: .., force: [..], duration: 0.1}'`
 // exits 0 (these scenarios have no obstacles, whose relaxed rows would not fail a run).
+#include <functional>
 #include <string>
 #include <vector>
 
 #include <Eigen/Core>
 
-#include "scenario_run.hpp"
 #include "wpg/datasets/input/scenario.hpp"
+#include "wpg/engine/scenario_run.hpp"
 
-namespace wpg::cli {
-
-// A walking situation of the paper's push test: a base scenario whose pushes[0] is replaced by
-// the swept push, and the step over which the phases are spread.
-struct PushSituation {
-  std::string name;      // "forward" or "on_spot"
-  std::string scenario;  // the argument that replays it: a shipped name or a scenario file
-  datasets::Scenario base;
-  double lift_off = 0.0;      // [s] lift-off of the swept step (of the unpushed walk)
-  double step_period = 0.0;   // [s] single + double support
-};
+namespace wpg::engine {
 
 // A push direction: a unit vector in the world frame (both situations walk along +x).
 struct PushDirection {
@@ -40,7 +31,8 @@ datasets::Scenario withPush(const datasets::Scenario& base, double t, const Eige
                             double duration);
 
 // Whether the walk of `scenario` recovers from a push starting at `push_start` (see above).
-bool walkRecovers(const datasets::Scenario& scenario, double push_start, RobotModelCache* models);
+bool walkRecovers(const datasets::Scenario& scenario, double push_start,
+                  const RunSettings& settings);
 
 struct PushSearchSettings {
   double max_force = 600.0;     // [N] upper end of the bracket
@@ -60,9 +52,10 @@ struct PushSearchResult {
 // monotone in the force everywhere (a stronger push can make the next step land better), so the
 // result is checked: when force x stronger_factor recovers too, the bisection starts again
 // above it, until a push that much stronger fails (or the bound is reached).
+// `run_settings`: how each walk runs (the robot models of a scenario that replays).
 PushSearchResult searchLargestRecoveredPush(const datasets::Scenario& base, double t,
                                             const Eigen::Vector2d& unit,
                                             const PushSearchSettings& settings,
-                                            RobotModelCache* models);
+                                            const RunSettings& run_settings);
 
-}  // namespace wpg::cli
+}  // namespace wpg::engine

@@ -1,52 +1,70 @@
 #pragma once
-// Resolved scenarios run on N worker threads, outcomes handed over in list order: the runner
-// of `wpg batch`, for any command that runs many scenarios (a push sweep, `wpg compare`). Each
-// run is the pipeline of `wpg run` (pipeline_stages.hpp) without the file: runScenario (the
-// walk, to a goal or on a velocity command, the multibody replay and the filter, offline or
-// online, when the scenario asks), the FCL footstep check with obstacles,
-// and the metrics of analysis/. Every worker builds its own problem (generateWalk constructs
-// the NMPC per call) and loads its own robot model; nothing a run writes is shared.
-#include <cstddef>
-#include <functional>
-#include <map>
-#include <memory>
+// One scenario end to end, as `wpg run`, every run of `wpg batch` and `wpg compare` and every
+// walk of the push search run it: the walk (to a goal, or on a velocity command), its replay on
+// the multibody model and the dynamic filter (offline or online) when the scenario asks, the
+// footsteps against the obstacles (FCL world), the checks a dataset holds and the metrics of
+// analysis/. runScenario prints nothing and never exits: bad input is a datasets::InputError,
+// a walk that failed is a result (RunResult::outcome). The dataset of a result is written by
+// writeRunDataset below.
 #include <optional>
 #include <string>
-#include <vector>
 
-#include "cli_common.hpp"
-#include "pipeline_stages.hpp"
 #include "wpg/analysis/run_metrics.hpp"
 #include "wpg/datasets/input/scenario.hpp"
+#include "wpg/datasets/storage/dataset_checks.hpp"
+#include "wpg/engine/pipeline_stages.hpp"
+#include "wpg/engine/robot_models.hpp"
 
-namespace wpg::cli {
+namespace wpg::engine {
 
-class BatchProgress;
-
-struct ScenarioOutcome {
-  WalkResult result;
-  std::optional<datasets::GoalOutcome> goal;    // a walk to a goal: its plans and outcome
-  std::optional<ReplayOutcome> replay;          // when the scenario replays
-  std::optional<FootstepCheck> footsteps;       // when it has obstacles
-  analysis::RunMetrics metrics;
-  int exit_status = kExitSuccess;  // kExitSuccess, or kExitRunFailed when the walk failed
-  std::string failure;             // why it failed (one line), empty on success
+struct RunSettings {
+  // The robots directory (robots/): the multibody models of a scenario that replays.
+  std::string robots_directory;
+  // Models already loaded (one cache per worker thread), used instead of loading them again;
+  // may be null: runScenario then loads the model it needs from robots_directory.
+  RobotModelCache* models = nullptr;
 };
 
-// The robot models one worker has loaded, by robot name.
-using RobotModelCache = std::map<std::string, std::unique_ptr<robots::RobotModel>>;
+// How a run ended. Not kSucceeded: the walk and what was computed of it are still a result
+// (and a dataset), with exit status 1.
+enum class RunOutcome {
+  kSucceeded,
+  kWalkFailed,    // the walk failed (an NMPC iteration failed, the robot fell, ...)
+  kReplayFailed,  // the walk succeeded, the replay or the filter could not follow it
+};
+const char* runOutcomeName(RunOutcome outcome);  // "succeeded", "walk_failed", "replay_failed"
 
-// One scenario through the pipeline; `models` caches the robot models of this worker.
-ScenarioOutcome runScenarioPipeline(const datasets::Scenario& scenario, RobotModelCache* models);
+struct RunResult {
+  // The walk: walk.result (trajectory, success, message: a failed replay is recorded there
+  // too, as the dataset stores it) and, for a walk to a goal, its plans and outcome.
+  WalkOutcome walk;
+  std::optional<ReplayOutcome> replay;     // when the scenario replays and the replay succeeded
+  std::optional<FootstepCheck> footsteps;  // the FCL world's sole clearances, with obstacles
+  datasets::DatasetChecks checks;          // what the dataset's `checks` group holds
+  analysis::RunMetrics metrics;            // datasets/METRICS.md
+  RunOutcome outcome = RunOutcome::kSucceeded;
+  std::string failure;  // why it failed (one line), empty on success
 
-// Runs `scenarios` on `threads` workers; `in_worker(position, outcome)` (may be empty) right
-// after each run on the worker that ran it, in parallel (the heavy, thread-safe part of the
-// caller's handling: compressing its datasets); `deliver(position, outcome)` in list order, one
-// call at a time; `progress` (may be null) counts each run as it is delivered. Exceptions of
-// either (an I/O error of the writer) stop the batch and are rethrown.
-void runScenarios(const std::vector<const datasets::Scenario*>& scenarios, int threads,
-                  BatchProgress* progress,
-                  const std::function<void(std::size_t position, ScenarioOutcome& outcome)>& in_worker,
-                  const std::function<void(std::size_t position, ScenarioOutcome&& outcome)>& deliver);
+  // 0 when it succeeded, else 1: `wpg run`'s exit status and /batch/summary's exit_status.
+  int exitStatus() const { return outcome == RunOutcome::kSucceeded ? 0 : 1; }
+};
 
-}  // namespace wpg::cli
+// Runs `scenario` (loaded and checked by datasets/input; checkRunInput, run_input_checks.hpp,
+// checks the rest). Throws datasets::InputError for input that cannot run (no robot model, a
+// goal walk with the online filter), std::invalid_argument for a walk the generator rejects.
+RunResult runScenario(const datasets::Scenario& scenario, const RunSettings& settings);
+
+// The rest of a result whose walk (and replay) are set: its outcome from the walk's success
+// (kWalkFailed or kSucceeded), the FCL footstep check, the dataset checks and the metrics.
+void evaluateRun(const datasets::Scenario& scenario, RunResult& result);
+
+// The dataset of `result` (run dataset, datasets/SCHEMA.md) at `path`, atomically, as
+// datasets::writeRunDataset (which see for the errors), with the result's footstep clearances,
+// replay and goal outcome.
+void writeRunDataset(const std::string& path, const datasets::Scenario& scenario,
+                     const RunResult& result);
+
+// What a dataset stores of a replay: the replay and its chain timing's summary (analysis/).
+datasets::MultibodyRecord multibodyRecordOf(const ReplayOutcome& replay);
+
+}  // namespace wpg::engine

@@ -33,7 +33,7 @@ struct BatchRunRecord {
   const StudyRun* run = nullptr;
   const wpg::WalkResult* result = nullptr;
   const FootstepClearances* clearances = nullptr;       // may be null
-  const wpg::MultibodyValidation* multibody = nullptr;  // may be null (not replayed)
+  const MultibodyRecord* multibody = nullptr;  // may be null (not replayed)
   const GoalOutcome* goal = nullptr;                     // a walk to a goal, else null
   int exit_status = 0;                 // 0 the walk succeeded, 1 it failed (as `wpg run`)
   std::vector<double> values;          // one per SummaryColumn, in the writer's order

@@ -1,5 +1,5 @@
 #pragma once
-// Output files that never destroy what is not theirs (issue #13, "Outputs"):
+// Output files that never destroy what is not theirs:
 //  * checkOutputPath refuses, before anything is computed or written, an output path that is
 //    a folder (or ends with '/'), that exists and is not a regular file (a device such as
 //    /dev/null, a FIFO, /proc/self/fd/1), that is the same file (device and inode, whatever the
@@ -30,6 +30,10 @@ const char* outputKindName(OutputKind kind);  // "an HDF5 file", "a PNG image", 
 // (above). `inputs`: the files the command reads (missing ones are skipped).
 void checkOutputPath(const std::string& path, OutputKind kind,
                      const std::vector<std::string>& inputs = {});
+
+// Throws InputError ("cannot write output '<output>': '<folder>' is not a writable directory")
+// unless the nearest existing folder above `output` is a directory this process may write in.
+void checkWritableParent(const std::string& output);
 
 class TemporaryOutput {
  public:

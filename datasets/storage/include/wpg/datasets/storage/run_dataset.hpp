@@ -63,6 +63,24 @@ struct GoalOutcome {
   std::vector<RoutePlanRecord> plans;
 };
 
+// The statistics of the control chain's wall time per NMPC iteration
+// (MultibodyValidation::chain_time) that /runs/<name>/timing holds as attributes
+// (chain_time_average, _std, _min, _max) [s]. The caller computes them (analysis/:
+// wpg::analysis::chainTiming): datasets/ stores statistics, it does not compute them.
+struct ChainTimeSummary {
+  double average = 0.0;
+  double std_dev = 0.0;  // sample standard deviation (k - 1 denominator)
+  double min = 0.0;
+  double max = 0.0;
+};
+
+// A walk's multibody replay and dynamic filter as the caller computed them (robots/:
+// wpg::robots::replayWalk; datasets/ does not link Simbody), with its chain timing's summary.
+struct MultibodyRecord {
+  const wpg::MultibodyValidation& validation;
+  ChainTimeSummary chain_time;
+};
+
 // Writes `result` of `scenario` to `path` (group /runs/<scenario.name>), atomically: the file
 // is written as a temporary file created exclusively under an unpredictable name in the same
 // folder (TemporaryOutput, output_file.hpp), then renamed over `path`; on any error, SIGINT or
@@ -74,8 +92,7 @@ struct GoalOutcome {
 // the step centres are checked).
 //
 // `multibody` (may be null: not replayed), the multibody replay and the dynamic filter of the
-// walk as computed by the caller (robots/: wpg::robots::replayWalk; datasets/ does not link
-// Simbody), adds q, zmp_multibody (and com_filtered, zmp_multibody_filtered when filtered) to
+// walk, adds q, zmp_multibody (and com_filtered, zmp_multibody_filtered when filtered) to
 // the run group, the ZMP error and IK summary to /runs/<name>/multibody/ and the timing
 // profile of the control chain to /runs/<name>/timing/.
 //
@@ -90,7 +107,7 @@ struct GoalOutcome {
 // scenario with a goal.
 void writeRunDataset(const std::string& path, const Scenario& scenario,
                      const wpg::WalkResult& result, const FootstepClearances* clearances = nullptr,
-                     const wpg::MultibodyValidation* multibody = nullptr,
+                     const MultibodyRecord* multibody = nullptr,
                      const GoalOutcome* goal = nullptr);
 
 // Debian's HDF5 is built without thread safety: every use of the HDF5 library in this process

@@ -1,46 +1,14 @@
 #pragma once
-// Shared pieces of the `wpg` executable that do not need CLI11 (main.cpp is the only
-// translation unit that includes CLI11: it is the slowest header of the project to compile).
-#include <stdexcept>
+// The options of each `wpg` subcommand, as the command line gives them (registration.cpp parses
+// them with CLI11), and the function that runs it (commands/<name>_command.cpp): it returns the
+// exit status (exit_codes.hpp) or throws UsageError / datasets::InputError for bad input.
 #include <string>
 #include <vector>
 
+#include "data_paths.hpp"
+
 namespace wpg::cli {
 
-// Exit codes of every subcommand.
-constexpr int kExitSuccess = 0;
-constexpr int kExitRunFailed = 1;  // the walk was generated but some NMPC iteration failed
-constexpr int kExitBadInput = 2;   // bad scenario, option or file: nothing was written
-// Could not complete for want of a resource or an I/O error (out of memory, disk full, a write
-// that failed): nothing was written (the temporary output is removed).
-constexpr int kExitIncomplete = 3;
-
-// A user mistake detected by the CLI itself (bad option value, missing file): exit 2.
-class UsageError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
-
-// --- where the data lives -----------------------------------------------------------------
-// The folder holding robots/, datasets/scenarios/ and analysis/: $WPG_DATA_DIR when set and
-// non-empty, else the source tree the executable was built from when it still exists, else
-// the installed share/wpg.
-std::string dataDirectory();
-std::string robotsDirectory();
-std::string scenariosDirectory();
-std::string plotScriptPath();
-
-// The name of the default scenario (datasets/scenarios/<name>.yaml).
-constexpr const char* kDefaultScenario = "walk_forward";
-
-// Names of the shipped scenarios (file stems of datasets/scenarios/*.yaml), sorted.
-std::vector<std::string> shippedScenarioNames();
-
-// A SCENARIO argument is an existing file path, or the name of a shipped scenario (with or
-// without ".yaml"). Returns the file path; throws UsageError naming the argument otherwise.
-std::string resolveScenarioPath(const std::string& argument);
-
-// --- subcommands ------------------------------------------------------------------------------
 struct RunOptions {
   std::string scenario = kDefaultScenario;
   std::string output;                  // empty: out/<scenario name>.h5
@@ -82,9 +50,6 @@ struct BatchOptions {
   bool threads_given = false;  // -j on the command line (under MPI the default is 1 per rank)
 };
 int batchCommand(const BatchOptions& options);
-// OUT.summary.csv/.md (and .png with `plot`) beside a batch file or index; prints "wrote ...";
-// kExitRunFailed when a run failed.
-int finishBatchFile(const std::string& batch_file, bool plot);
 
 // `wpg merge OUT.h5 SHARD...` (batch_index.hpp): the index of shard files, or of every *.h5 of
 // a folder given alone.
@@ -139,15 +104,5 @@ struct PlotOptions {
   std::string output;  // empty: the input with its extension replaced by .png
 };
 int plotCommand(const PlotOptions& options);
-
-// Runs /usr/bin/python3 <plot script> run_file -o figure_file; returns its exit status
-// (kExitBadInput with a message on stderr when Python or its modules are missing).
-int drawFigure(const std::string& run_file, const std::string& figure_file);
-// Runs /usr/bin/python3 script arguments... (the same checks and messages as drawFigure).
-int runAnalysisScript(const std::string& script, const std::vector<std::string>& arguments);
-
-// The one-line error format of every subcommand: "wpg: error: <message>".
-void printError(const std::string& message);
-void printWarning(const std::string& message);
 
 }  // namespace wpg::cli

@@ -1,10 +1,11 @@
 #pragma once
-// What a run dataset says about its walk beyond the trajectory itself, computed here and only
-// written by run_dataset.cpp: the invariants of the `checks` group (libwpg's walk checks, the
-// footsteps against the obstacles) and the summary statistics of the control chain's timing.
+// The checks a run dataset holds (its `checks` group, datasets/SCHEMA.md): libwpg's walk checks
+// (the invariants of the walk) and the landed footsteps against the obstacles. Computed from the
+// walk by the writer (run_dataset.cpp), and by whoever wants them without a file (the engine's
+// run result). Not to be confused with the input checks (datasets/input: InputError), libwpg's
+// walk checks alone (wpg/walk_checks.hpp) and a stored run's consistency with its scenario
+// (stored_run_consistency.hpp).
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "wpg/datasets/storage/run_dataset.hpp"
 #include "wpg/obstacles.hpp"
@@ -12,7 +13,7 @@
 #include "wpg/walk_trajectory.hpp"
 #include "wpg/walking_parameters.hpp"
 
-namespace wpg::datasets::detail {
+namespace wpg::datasets {
 
 // The landed footsteps against the obstacles, one entry per row of WalkTrajectory::footsteps.
 struct FootstepObstacleChecks {
@@ -36,24 +37,14 @@ FootstepObstacleChecks checkFootstepsAgainstObstacles(const WalkingParameters& p
                                                       const FootstepClearances* clearances);
 
 // Everything the `checks` group holds.
-struct RunChecks {
+struct DatasetChecks {
   WalkCheckReport walk;  // libwpg's invariants (CoP, step feasibility, yaw bound, speed)
   bool has_obstacles = false;
   FootstepObstacleChecks footsteps;  // filled when the scenario has obstacles
 };
 
-RunChecks computeRunChecks(const Scenario& scenario, const WalkTrajectory& trajectory,
-                           const FootstepClearances* clearances);
+// `clearances`: the FCL world's sole clearances (may be null: the step centres only).
+DatasetChecks computeDatasetChecks(const Scenario& scenario, const WalkTrajectory& trajectory,
+                                   const FootstepClearances* clearances);
 
-// Sample statistics of a series of wall times [s]: all 0 when it is empty (std also when it has
-// one entry); std with the n - 1 denominator.
-struct TimeStatistics {
-  double average = 0.0;
-  double std_dev = 0.0;
-  double min = 0.0;
-  double max = 0.0;
-};
-
-TimeStatistics timeStatistics(const Eigen::VectorXd& times);
-
-}  // namespace wpg::datasets::detail
+}  // namespace wpg::datasets

@@ -1,11 +1,10 @@
-// The computations behind a run dataset's checks and timing summaries (run_checks.hpp).
-#include "run_checks.hpp"
+// The checks a run dataset holds (dataset_checks.hpp).
+#include "wpg/datasets/storage/dataset_checks.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <limits>
 
-namespace wpg::datasets::detail {
+namespace wpg::datasets {
 namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
@@ -48,9 +47,9 @@ FootstepObstacleChecks checkFootstepsAgainstObstacles(const WalkingParameters& p
   return checks;
 }
 
-RunChecks computeRunChecks(const Scenario& scenario, const WalkTrajectory& trajectory,
-                           const FootstepClearances* clearances) {
-  RunChecks checks;
+DatasetChecks computeDatasetChecks(const Scenario& scenario, const WalkTrajectory& trajectory,
+                                   const FootstepClearances* clearances) {
+  DatasetChecks checks;
   checks.walk = checkWalk(scenario.walking, trajectory);
   checks.has_obstacles = !scenario.request.obstacles.empty();
   if (checks.has_obstacles) {
@@ -60,18 +59,4 @@ RunChecks computeRunChecks(const Scenario& scenario, const WalkTrajectory& traje
   return checks;
 }
 
-TimeStatistics timeStatistics(const Eigen::VectorXd& times) {
-  TimeStatistics statistics;
-  const Eigen::Index k = times.size();
-  if (k == 0) return statistics;
-  statistics.average = times.mean();
-  statistics.std_dev =
-      k > 1 ? std::sqrt((times.array() - statistics.average).square().sum() /
-                        static_cast<double>(k - 1))
-            : 0.0;
-  statistics.min = times.minCoeff();
-  statistics.max = times.maxCoeff();
-  return statistics;
-}
-
-}  // namespace wpg::datasets::detail
+}  // namespace wpg::datasets
