@@ -48,10 +48,16 @@ struct PushSearchResult {
   int walks = 0;                 // walks generated
 };
 
-// Bisection on [0, max_force] (max_force first: recovered -> at_upper_bound). Recovery is not
-// monotone in the force everywhere (a stronger push can make the next step land better), so the
-// result is checked: when force x stronger_factor recovers too, the bisection starts again
-// above it, until a push that much stronger fails (or the bound is reached).
+// The search for the largest force that `recovered(force)` accepts (each call is a walk,
+// counted in PushSearchResult::walks): bisection on [0, max_force] (max_force first: recovered
+// -> at_upper_bound), down to a bracket of `tolerance`. Recovery is not monotone in the force
+// everywhere (a stronger push can make the next step land better), so the result is checked:
+// when force x stronger_factor recovers too, the bisection starts again above it, until a push
+// that much stronger fails (or the bound is reached).
+PushSearchResult searchLargestRecoveredForce(const std::function<bool(double force)>& recovered,
+                                             const PushSearchSettings& settings);
+
+// That search on the walk of `base` pushed at `t` along `unit` for settings.duration;
 // `run_settings`: how each walk runs (the robot models of a scenario that replays).
 PushSearchResult searchLargestRecoveredPush(const datasets::Scenario& base, double t,
                                             const Eigen::Vector2d& unit,
