@@ -7,7 +7,6 @@
 #include <filesystem>
 #include <iostream>
 #include <optional>
-#include <set>
 #include <system_error>
 
 #include "analysis_scripts.hpp"
@@ -21,7 +20,7 @@
 #include "wpg/datasets/storage/output_file.hpp"
 #include "wpg/datasets/study_design/study.hpp"
 #include "wpg/engine/mpi_executor.hpp"
-#include "wpg/engine/robot_models.hpp"
+#include "wpg/engine/run_input_checks.hpp"
 #include "wpg/engine/study_summary.hpp"
 
 namespace fs = std::filesystem;
@@ -104,13 +103,7 @@ int batchCommand(const BatchOptions& options) {
     // Never over the study, a device, a folder or a file that is not HDF5 (output_file.hpp).
     datasets::checkOutputPath(options.output, datasets::OutputKind::kHdf5, {options.study});
     datasets::checkWritableParent(options.output);
-    std::set<std::string> replayed_robots;
-    for (const datasets::StudyRun& run : study.runs) {
-      if (run.scenario.replay) replayed_robots.insert(run.scenario.robot);
-    }
-    for (const std::string& robot : replayed_robots) {
-      (void)engine::loadRobotModel(robotsDirectory(), robot);
-    }
+    engine::checkStudyRobotModels(study, robotsDirectory());
   };
   std::optional<engine::MpiWorld> world;
   if (slice) {

@@ -9,7 +9,6 @@
 #include <filesystem>
 #include <iostream>
 #include <optional>
-#include <set>
 #include <system_error>
 
 #include "analysis_scripts.hpp"
@@ -21,7 +20,7 @@
 #include "wpg/datasets/storage/output_file.hpp"
 #include "wpg/engine/comparison_run.hpp"
 #include "wpg/engine/mpi_executor.hpp"
-#include "wpg/engine/robot_models.hpp"
+#include "wpg/engine/run_input_checks.hpp"
 
 namespace fs = std::filesystem;
 
@@ -80,13 +79,7 @@ int compareCommand(const CompareOptions& options) {
       throw UsageError("output '" + folder.string() + "' is not a directory");
     }
     datasets::checkWritableParent(batch_file.string());
-    std::set<std::string> replayed_robots;
-    for (const datasets::StudyRun& run : comparison.study.runs) {
-      if (run.scenario.replay) replayed_robots.insert(run.scenario.robot);
-    }
-    for (const std::string& robot : replayed_robots) {
-      (void)engine::loadRobotModel(robotsDirectory(), robot);
-    }
+    engine::checkStudyRobotModels(comparison.study, robotsDirectory());
   });
   const datasets::Study& study = comparison.study;
 

@@ -1,6 +1,6 @@
 // `wpg diff A.h5 B.h5 [--rtol R] [--atol A] [--compare-wall-time]`: the regression comparison of
-// two run or batch datasets (wpg/datasets/dataset_diff.hpp), printed for a reader: the first
-// sample beyond the tolerance, then one line per field that differs.
+// two run or batch datasets (wpg/datasets/storage/dataset_diff.hpp), printed for a reader: the
+// first sample beyond the tolerance, then one line per field that differs.
 #include <cmath>
 #include <cstdio>
 #include <iostream>

@@ -1,6 +1,6 @@
-// The batch file (wpg/datasets/batch_dataset.hpp), read back with the HDF5 C++ API: run groups
-// with their scenario and swept values, the summary table filled row by row, prepared (chunks
-// compressed off the writer) and direct writes giving the same data, --resume's checks.
+// The batch file (wpg/datasets/storage/batch_dataset.hpp), read back with the HDF5 C++ API: run
+// groups with their scenario and swept values, the summary table filled row by row, prepared
+// (chunks compressed off the writer) and direct writes giving the same data, --resume's checks.
 #include <fstream>
 #include <iterator>
 #include <string>

@@ -1,4 +1,4 @@
-// Shards and their index (wpg/datasets/batch_index.hpp): the slicing rule puts every run in
+// Shards and their index (wpg/datasets/storage/batch_index.hpp): the slicing rule puts every run in
 // exactly one slice; the index takes each run's row and group from the shard that holds it
 // (the first when several do), links the groups with paths relative to its folder, reads back
 // as a batch file, and is not written when a run is in no shard.

@@ -2,6 +2,7 @@
 #include "wpg/engine/run_input_checks.hpp"
 
 #include <exception>
+#include <set>
 #include <stdexcept>
 
 #include "wpg/datasets/input/input_error.hpp"
@@ -50,6 +51,14 @@ void checkRunInput(const datasets::Scenario& scenario, const std::string& origin
   }
   checkGoalRequest(scenario, origin);
   if (scenario.replay) checkFilterMode(scenario, origin);
+}
+
+void checkStudyRobotModels(const datasets::Study& study, const std::string& robots_directory) {
+  std::set<std::string> replayed_robots;
+  for (const datasets::StudyRun& run : study.runs) {
+    if (run.scenario.replay) replayed_robots.insert(run.scenario.robot);
+  }
+  for (const std::string& robot : replayed_robots) (void)loadRobotModel(robots_directory, robot);
 }
 
 }  // namespace wpg::engine

@@ -1,6 +1,6 @@
 #pragma once
-// The scenario's `goal:` and `planner:` sections (issue 10; keys: datasets/SCENARIOS.md, "Walks
-// to a goal"): read into libwpg's plain GoalRequest, and emitted back into the resolved
+// The scenario's `goal:` and `planner:` sections (keys: datasets/SCENARIOS.md, "Walks to a
+// goal"): read into libwpg's plain GoalRequest, and emitted back into the resolved
 // scenario. planning/ checks what needs the world (a goal inside an obstacle, the planner's
 // name against OMPL's planners).
 #include <yaml-cpp/yaml.h>

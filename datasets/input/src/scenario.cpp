@@ -1,7 +1,8 @@
 // Scenario files: YAML in, a validated Scenario out (every key: datasets/SCENARIOS.md). This
 // file holds the order of the steps: the robot, the merge of its walking parameters with the
 // scenario's, the --set overrides, the sections, libwpg's cross-field checks, the resolved
-// YAML. The pieces, each in its own file of datasets/src/:
+// YAML. The pieces, each in its own file of datasets/input/ (yaml_input.hpp is public: the
+// study files are read with it too):
 //   yaml_input          typed YAML readers whose errors name the file and the key
 //   scenario_overrides  the --set grammar (dotted paths, [index]) and its assignment
 //   parameter_fields    the tables binding walking/generator/filter keys to struct fields
@@ -113,7 +114,7 @@ Scenario loadScenarioTree(YAML::Node root, const std::string& path,
                                                  "a positive mass in kg", source);
     }
     scenario.request.generator = readGenerator(entry(entries, "generator"), source);
-    // A goal replaces the velocity command: the path follower gives it (issue 10).
+    // A goal replaces the velocity command: the path follower gives it.
     const bool has_goal = present(entries, "goal");
     if (has_goal && entry(entries, "reference").IsDefined()) {
       source.failWith("reference", "expected either 'goal' or 'reference', not both (the path "

@@ -1,6 +1,6 @@
 #pragma once
 // `wpg run --set key=value`: the key is a dotted path into the scenario tree with list
-// indices, the value is parsed as YAML (grammar: wpg/datasets/scenario.hpp, loadScenario).
+// indices, the value is parsed as YAML (grammar: wpg/datasets/input/scenario.hpp, loadScenario).
 #include <cstddef>
 #include <string>
 #include <vector>

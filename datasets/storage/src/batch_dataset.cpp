@@ -1,4 +1,4 @@
-// The batch file of a study (wpg/datasets/batch_dataset.hpp; layout: datasets/SCHEMA.md).
+// The batch file of a study (wpg/datasets/storage/batch_dataset.hpp; layout: datasets/SCHEMA.md).
 //
 // Why the summary table is fixed-size, contiguous and allocated early: a row is then written
 // in place, never moving data that the last flushed state of the file points to, so that a

@@ -1,4 +1,4 @@
-// Shard files and the index that joins them (wpg/datasets/batch_index.hpp; layout:
+// Shard files and the index that joins them (wpg/datasets/storage/batch_index.hpp; layout:
 // datasets/SCHEMA.md, "Sharded batches").
 //
 // The index is built from the first shard's objects, not written anew: its root attributes

@@ -1,4 +1,4 @@
-// The table of a comparison study in its batch file (wpg/datasets/comparison_table.hpp).
+// The table of a comparison study in its batch file (wpg/datasets/storage/comparison_table.hpp).
 #include "wpg/datasets/storage/comparison_table.hpp"
 
 #include <mutex>

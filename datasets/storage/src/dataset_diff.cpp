@@ -1,7 +1,7 @@
-// Field-by-field comparison of two HDF5 datasets (wpg/datasets/dataset_diff.hpp). Generic on
-// purpose: every group, dataset and attribute of the files is visited, whatever the schema holds,
-// so that a regression reference also catches a field nobody thought of checking. The files may
-// be anyone's: every size is bounded before it is allocated (read_limits.hpp), and the walk
+// Field-by-field comparison of two HDF5 datasets (wpg/datasets/storage/dataset_diff.hpp). Generic
+// on purpose: every group, dataset and attribute of the files is visited, whatever the schema
+// holds, so that a regression reference also catches a field nobody thought of checking. The files
+// may be anyone's: every size is bounded before it is allocated (read_limits.hpp), and the walk
 // follows each pair of groups once, at most kMaxGroupDepth levels deep (hard and soft links can
 // make cycles and exponentially many paths).
 #include "wpg/datasets/storage/dataset_diff.hpp"

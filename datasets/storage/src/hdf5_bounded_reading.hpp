@@ -1,9 +1,9 @@
 #pragma once
-// Reading from HDF5 files we did not write, bounded: every size a file declares (a dataspace's
-// rank and dimensions, an attribute's element count) is checked against the limits of
-// wpg/datasets/read_limits.hpp before anything is allocated for it, and attributes read into one
-// value must hold exactly one (the C++ API would write past the value otherwise). Failures are
-// InputError, one line: "FILE: <what> ..., expected ...".
+// Reading from HDF5 files we did not write, bounded: every size a file declares (a dataspace's rank
+// and dimensions, an attribute's element count) is checked against the limits of
+// wpg/datasets/storage/read_limits.hpp before anything is allocated for it, and attributes read
+// into one value must hold exactly one (the C++ API would write past the value otherwise). Failures
+// are InputError, one line: "FILE: <what> ..., expected ...".
 #include <cstdint>
 #include <string>
 #include <vector>

@@ -2,8 +2,8 @@
 // h5py reads everything without code of ours: plain numeric datasets, time-major, with
 // `units` / `frame` / `description` attributes and variable-length UTF-8 string attributes.
 // This file lays out the groups and writes the file atomically; the HDF5 helpers are in
-// hdf5_writing.cpp, the values of the `checks` group and the timing summaries are computed in
-// run_checks.cpp.
+// hdf5_writing.cpp, the values of the `checks` group are computed in dataset_checks.cpp, the
+// timing summaries by the caller (analysis/).
 //
 // Why ~550 lines: one writer function per group of the schema (run, mpc, obstacles, checks,
 // multibody, timing), each a list of datasets with their units and descriptions; the pieces

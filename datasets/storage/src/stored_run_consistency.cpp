@@ -1,4 +1,4 @@
-// A stored walk against its stored scenario (wpg/datasets/stored_run_consistency.hpp): the
+// A stored walk against its stored scenario (wpg/datasets/storage/stored_run_consistency.hpp): the
 // generator's timing and shape (libwpg/src/walk_generator.cpp, OnlineWalkingGenerator::time()),
 // checked so that a walk and a scenario that do not belong together are refused before any
 // replay or metric uses them.

@@ -1,5 +1,5 @@
 // Comparison study files: worlds x variants x seeds expanded into a Study
-// (wpg/datasets/comparison_study.hpp).
+// (wpg/datasets/study_design/comparison_study.hpp).
 #include "wpg/datasets/study_design/comparison_study.hpp"
 #include "wpg/datasets/input/input_limits.hpp"
 

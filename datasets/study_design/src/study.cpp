@@ -1,4 +1,5 @@
-// Study files: parsing, sweep expansion and the runs' scenarios (wpg/datasets/study.hpp).
+// Study files: parsing, sweep expansion and the runs' scenarios
+// (wpg/datasets/study_design/study.hpp).
 #include "wpg/datasets/study_design/study.hpp"
 #include "wpg/datasets/input/input_limits.hpp"
 

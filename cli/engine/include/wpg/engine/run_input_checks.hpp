@@ -6,6 +6,7 @@
 #include <string>
 
 #include "wpg/datasets/input/scenario.hpp"
+#include "wpg/datasets/study_design/study.hpp"
 #include "wpg/engine/robot_models.hpp"
 
 namespace wpg::engine {
@@ -24,5 +25,8 @@ void checkFilterMode(const datasets::Scenario& scenario, const std::string& orig
 // `models` when the scenario replays, in the order `wpg run` reports them.
 void checkRunInput(const datasets::Scenario& scenario, const std::string& origin,
                    RobotModelCache& models);
+
+// The multibody model of every robot the study's runs replay loads (once per robot).
+void checkStudyRobotModels(const datasets::Study& study, const std::string& robots_directory);
 
 }  // namespace wpg::engine

@@ -24,7 +24,7 @@ struct Scenario {
   // duration, reference, pushes, generator; robot_mass from the robot's `mass` unless the
   // scenario sets `robot_mass`.
   wpg::WalkRequest request;
-  // `goal:` and `planner:` (issue 10): a walk to a goal, its velocity command from the route
+  // `goal:` and `planner:`: a walk to a goal, its velocity command from the route
   // planner and the path follower (planning/goal_walk.hpp) instead of `reference:`
   // (goal.enabled false without a `goal:`); known_to_planner from the obstacles' flags.
   wpg::GoalRequest goal;
@@ -34,8 +34,8 @@ struct Scenario {
   bool replay = false;
   bool filter = false;
   wpg::PreviewControlSettings filter_settings;  // Qe = 1, R = 1e-6, 1.6 s by default
-  // filter_settings.mode (online | offline | both, default online: the paper's Fig. 3 loop)
-  // and filter_settings.reinitialize_wpg (default true), wpg/dynamic_filter.hpp.
+  // filter_settings.mode (online: the paper's Fig. 3 loop | offline, the default | both) and
+  // filter_settings.reinitialize_wpg (default false), wpg/dynamic_filter.hpp.
   wpg::DynamicFilterLoopSettings filter_loop;
   // The whole scenario after merging the robot parameters and the overrides, emitted with
   // yaml-cpp: every key explicit (all walking parameters, all generator settings). Loading it

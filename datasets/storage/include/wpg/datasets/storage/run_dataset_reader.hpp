@@ -35,14 +35,14 @@ std::vector<std::string> listRuns(const std::string& path);
 // Reads /runs/<run_name> of `path`; with an empty run_name, the file's only run. Holds
 // hdf5Mutex() while it reads.
 //
-// Throws InputError, one line naming the file and what is wrong: missing or unreadable file,
-// not an HDF5 file, no such run (or several runs and no run_name), a dataset of the schema
-// missing, of the wrong shape or type, declaring more rows than kMaxStoredSamples (checked
-// before anything is allocated, wpg/datasets/read_limits.hpp), per-sample datasets of different
-// lengths, a value that is not finite (with its dataset, row and column), `time` or `mpc/time`
-// not strictly increasing, codes outside their enums, negative counts, an attribute read as one
-// value holding another number of them. Whether the walk belongs to its stored scenario is
-// checkStoredRunMatchesScenario's (wpg/datasets/stored_run_consistency.hpp).
+// Throws InputError, one line naming the file and what is wrong: missing or unreadable file, not an
+// HDF5 file, no such run (or several runs and no run_name), a dataset of the schema missing, of the
+// wrong shape or type, declaring more rows than kMaxStoredSamples (checked before anything is
+// allocated, wpg/datasets/storage/read_limits.hpp), per-sample datasets of different lengths, a
+// value that is not finite (with its dataset, row and column), `time` or `mpc/time` not strictly
+// increasing, codes outside their enums, negative counts, an attribute read as one value holding
+// another number of them. Whether the walk belongs to its stored scenario is
+// checkStoredRunMatchesScenario's (wpg/datasets/storage/stored_run_consistency.hpp).
 StoredRun readRunDataset(const std::string& path, const std::string& run_name = "");
 
 }  // namespace wpg::datasets
