@@ -69,12 +69,7 @@ int runCommand(const RunOptions& options) {
   if (options.plot) datasets::checkOutputPath(figure_path.string(), datasets::OutputKind::kPng, inputs);
   datasets::checkWritableParent(dataset_path.string());
 
-  engine::RunResult result;
-  try {
-    result = engine::runScenario(scenario, {robotsDirectory(), &models});
-  } catch (const std::invalid_argument& e) {
-    throw UsageError(aboutFile(scenario_path, e.what()));
-  }
+  const engine::RunResult result = engine::runScenario(scenario, {robotsDirectory(), &models});
   const WalkResult& walk = result.walk.result;
 
   std::error_code ec;

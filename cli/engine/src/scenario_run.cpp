@@ -2,9 +2,12 @@
 #include "wpg/engine/scenario_run.hpp"
 
 #include <optional>
+#include <stdexcept>
+#include <string>
 
 #include "wpg/analysis/chain_timing.hpp"
 #include "wpg/analysis/zmp_error.hpp"
+#include "wpg/datasets/input/input_error.hpp"
 
 namespace wpg::engine {
 
@@ -25,7 +28,15 @@ RunResult runScenario(const datasets::Scenario& scenario, const RunSettings& set
     if (!models) models = &own_models.emplace(settings.robots_directory);
     model = &models->model(scenario.robot);
   }
-  WalkAndReplay run = runWalkAndReplay(model, scenario);
+  WalkAndReplay run;
+  try {
+    run = runWalkAndReplay(model, scenario);
+  } catch (const std::invalid_argument& e) {  // parameters the generator rejects: bad input
+    const std::string message = e.what();
+    throw datasets::InputError(message.find(scenario.source_path) != std::string::npos
+                                   ? message
+                                   : scenario.source_path + ": " + message);
+  }
   RunResult result;
   result.walk = std::move(run.walk);
   result.replay = std::move(run.replay);

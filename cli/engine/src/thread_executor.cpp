@@ -13,14 +13,6 @@ namespace fs = std::filesystem;
 
 namespace wpg::engine {
 
-void StudyObserver::movedDamagedFile(const std::string&, const std::string&, bool) {}
-void StudyObserver::resuming(std::size_t, std::size_t, const std::string&) {}
-void StudyObserver::started(std::size_t) {}
-void StudyObserver::runFinished(bool) {}
-void StudyObserver::finished() {}
-void StudyObserver::ranksFinished(const RankStatistics&) {}
-void StudyObserver::rankFailed(int, const std::string&) {}
-
 namespace {
 
 class ThreadExecutor : public StudyExecutor {
