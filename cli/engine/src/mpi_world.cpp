@@ -1,4 +1,4 @@
-// The MPI of `wpg batch` and `wpg compare` under a launcher (mpi_world.hpp). The only file that
+// The MPI of the engine's MPI executor, under a launcher (mpi_world.hpp). The only file that
 // includes <mpi.h>; without WPG_WITH_MPI it compiles to launched() == false.
 #include "mpi_world.hpp"
 

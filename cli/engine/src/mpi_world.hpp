@@ -42,9 +42,9 @@ struct DispenserStats {
 // indices to do; a worker asks for its next run when it has finished one, so a slow run keeps
 // one worker, not a rank's share of the study (dynamic scheduling, no static split). Rank 0
 // runs workers too: its workers take from the list directly, and a dispatcher thread answers
-// the other ranks' requests (polling MPI_Iprobe every 200 us: a blocking receive would keep a
-// core busy, which the workers of rank 0 need; for the same reason every wait of this file
-// sleeps between MPI_Test calls instead of spinning). Only the dispatcher calls MPI on rank 0 while
+// the other ranks' requests (polling MPI_Iprobe every 1 ms, mpi_world.cpp says why: a blocking
+// receive would keep a core busy, which the workers of rank 0 need; for the same reason every
+// wait of this file sleeps between MPI_Test calls instead of spinning). Only the dispatcher calls MPI on rank 0 while
 // runs are handed out; on the other ranks a mutex makes each request and its reply one round
 // trip: MPI_THREAD_SERIALIZED is enough.
 class RunDispenser {
