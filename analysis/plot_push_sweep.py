@@ -24,7 +24,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-# The paper's Sec. V-B forces [N] (magnitudes), as cli/push_sweep_command.cpp reads them.
+# The paper's Sec. V-B forces [N] (magnitudes), as cli/commands/push_sweep_command.cpp reads them.
 PAPER = {
     "forward": {"sagittal+": 70, "sagittal-": 160, "coronal+": 90, "coronal-": 45},
     "on_spot": {"sagittal+": 115, "sagittal-": 115, "coronal+": 90, "coronal-": 45},

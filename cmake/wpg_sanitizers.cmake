@@ -6,7 +6,7 @@
 #   a test cannot pass over it. -O1 -g1: the suite runs at a useful speed while the build stays
 #   short (-g1 gives file:line in the reports, full -g only makes the objects bigger).
 # WPG_FUZZ: the libFuzzer targets of tests/fuzz (clang only, needs WPG_SANITIZE). Only the
-#   code the targets exercise, wpg_datasets, gets libFuzzer's coverage instrumentation
+#   code the targets exercise, the libraries of wpg_datasets, gets libFuzzer's coverage instrumentation
 #   (-fsanitize=fuzzer-no-link): on libwpg's numeric loops it would slow the sanitizer test
 #   suite, which runs in the same tree, for no coverage the targets can use.
 option(WPG_SANITIZE "Build with AddressSanitizer + UndefinedBehaviorSanitizer" OFF)

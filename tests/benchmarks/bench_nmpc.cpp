@@ -12,8 +12,8 @@
 
 #include <unistd.h>
 
-#include "wpg/datasets/run_dataset.hpp"
-#include "wpg/datasets/scenario.hpp"
+#include "wpg/datasets/storage/run_dataset.hpp"
+#include "wpg/datasets/input/scenario.hpp"
 #include "wpg/lipm_prediction.hpp"
 #include "wpg/pattern_generator.hpp"
 #include "wpg/walk_generator.hpp"

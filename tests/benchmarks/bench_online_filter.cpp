@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "wpg/datasets/scenario.hpp"
+#include "wpg/datasets/input/scenario.hpp"
 #include "wpg/robots/multibody_replay.hpp"
 #include "wpg/robots/online_filter_loop.hpp"
 #include "wpg/robots/robot_model.hpp"

@@ -10,7 +10,7 @@
 #include <chrono>
 #include <string>
 
-#include "wpg/datasets/scenario.hpp"
+#include "wpg/datasets/input/scenario.hpp"
 #include "wpg/robots/robot_model.hpp"
 #include "wpg/robots/walk_replay.hpp"
 #include "wpg/walk_generator.hpp"

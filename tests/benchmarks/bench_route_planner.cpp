@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "wpg/datasets/scenario.hpp"
+#include "wpg/datasets/input/scenario.hpp"
 #include "wpg/planning/goal_walk.hpp"
 #include "wpg/planning/route_planner.hpp"
 

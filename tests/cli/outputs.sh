@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
-# outputs.sh WPG: outputs never destroy what is not theirs (issue #13, items 1-3; policy in
-# datasets/include/wpg/datasets/output_file.hpp). Each refused case exits 2 with one line on
-# stderr and leaves every file as it was; an existing output of the same kind is replaced; no
-# temporary file is left behind.
+# outputs.sh WPG: outputs never destroy what is not theirs (policy in
+# datasets/storage/include/wpg/datasets/storage/output_file.hpp). Each refused case exits 2 with one
+# line on stderr and leaves every file as it was; an existing output of the same kind is replaced;
+# no temporary file is left behind.
 set -euo pipefail
 # shellcheck source=common.sh
 source "$(dirname "$0")/common.sh"

@@ -1,6 +1,6 @@
-// The batch file (wpg/datasets/batch_dataset.hpp), read back with the HDF5 C++ API: run groups
-// with their scenario and swept values, the summary table filled row by row, prepared (chunks
-// compressed off the writer) and direct writes giving the same data, --resume's checks.
+// The batch file (wpg/datasets/storage/batch_dataset.hpp), read back with the HDF5 C++ API: run
+// groups with their scenario and swept values, the summary table filled row by row, prepared
+// (chunks compressed off the writer) and direct writes giving the same data, --resume's checks.
 #include <fstream>
 #include <iterator>
 #include <string>
@@ -10,8 +10,8 @@
 #include "hand_made_run.hpp"
 #include "hdf5_read.hpp"
 #include "test_support.hpp"
-#include "wpg/datasets/batch_dataset.hpp"
-#include "wpg/datasets/run_dataset_reader.hpp"
+#include "wpg/datasets/storage/batch_dataset.hpp"
+#include "wpg/datasets/storage/run_dataset_reader.hpp"
 
 namespace fs = std::filesystem;
 using namespace wpg::datasets;  // NOLINT: the API under test

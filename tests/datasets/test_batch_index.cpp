@@ -1,4 +1,4 @@
-// Shards and their index (wpg/datasets/batch_index.hpp): the slicing rule puts every run in
+// Shards and their index (wpg/datasets/storage/batch_index.hpp): the slicing rule puts every run in
 // exactly one slice; the index takes each run's row and group from the shard that holds it
 // (the first when several do), links the groups with paths relative to its folder, reads back
 // as a batch file, and is not written when a run is in no shard.
@@ -10,10 +10,10 @@
 #include "hand_made_run.hpp"
 #include "hdf5_read.hpp"
 #include "test_support.hpp"
-#include "wpg/datasets/batch_dataset.hpp"
-#include "wpg/datasets/batch_index.hpp"
-#include "wpg/datasets/input_error.hpp"
-#include "wpg/datasets/run_dataset_reader.hpp"
+#include "wpg/datasets/storage/batch_dataset.hpp"
+#include "wpg/datasets/storage/batch_index.hpp"
+#include "wpg/datasets/input/input_error.hpp"
+#include "wpg/datasets/storage/run_dataset_reader.hpp"
 
 namespace fs = std::filesystem;
 using namespace wpg::datasets;  // NOLINT: the API under test

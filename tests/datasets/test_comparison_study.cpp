@@ -1,6 +1,6 @@
-// Comparison study files (wpg/datasets/comparison_study.hpp): the expansion worlds x variants
-// x seeds (order, names, swept values), what reaches each run's scenario (variant keys, the
-// seed, generated obstacles and goal), the generators' geometry and determinism, and bad
+// Comparison study files (wpg/datasets/study_design/comparison_study.hpp): the expansion worlds x
+// variants x seeds (order, names, swept values), what reaches each run's scenario (variant keys,
+// the seed, generated obstacles and goal), the generators' geometry and determinism, and bad
 // studies as InputError naming the key.
 #include <cmath>
 #include <fstream>
@@ -10,7 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "test_support.hpp"
-#include "wpg/datasets/comparison_study.hpp"
+#include "wpg/datasets/study_design/comparison_study.hpp"
 
 namespace fs = std::filesystem;
 using wpg::datasets::ComparisonStudy;

@@ -10,7 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "test_support.hpp"
-#include "wpg/datasets/dataset_diff.hpp"
+#include "wpg/datasets/storage/dataset_diff.hpp"
 
 namespace {
 

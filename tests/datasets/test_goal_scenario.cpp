@@ -1,4 +1,4 @@
-// Walks to a goal in scenario files and datasets (issue 10): the goal, planner and
+// Walks to a goal in scenario files and datasets: the goal, planner and
 // known_to_planner keys, their errors, the resolved scenario, and the plans group written.
 #include <gtest/gtest.h>
 
@@ -11,8 +11,8 @@
 #include "hand_made_run.hpp"
 #include "hdf5_read.hpp"
 #include "test_support.hpp"
-#include "wpg/datasets/run_dataset.hpp"
-#include "wpg/datasets/scenario.hpp"
+#include "wpg/datasets/storage/run_dataset.hpp"
+#include "wpg/datasets/input/scenario.hpp"
 
 namespace {
 

@@ -1,4 +1,4 @@
-// Files we did not write (issue 13, item 10): a real run dataset (walk_forward, 4 s, written as
+// Files we did not write: a real run dataset (walk_forward, 4 s, written as
 // `wpg run` writes it) edited with the HDF5 C/C++ API into what a hostile or corrupt file holds.
 // Every reader must refuse it with one InputError line naming the file, the dataset (and row)
 // and what was expected, without allocating what the file declares, and without crashing or
@@ -16,14 +16,14 @@
 #include <gtest/gtest.h>
 
 #include "test_support.hpp"
-#include "wpg/datasets/batch_dataset.hpp"
-#include "wpg/datasets/dataset_diff.hpp"
-#include "wpg/datasets/read_limits.hpp"
-#include "wpg/datasets/run_dataset.hpp"
-#include "wpg/datasets/run_dataset_reader.hpp"
-#include "wpg/datasets/scenario.hpp"
-#include "wpg/datasets/study.hpp"
-#include "wpg/datasets/stored_run_consistency.hpp"
+#include "wpg/datasets/storage/batch_dataset.hpp"
+#include "wpg/datasets/storage/dataset_diff.hpp"
+#include "wpg/datasets/storage/read_limits.hpp"
+#include "wpg/datasets/storage/run_dataset.hpp"
+#include "wpg/datasets/storage/run_dataset_reader.hpp"
+#include "wpg/datasets/input/scenario.hpp"
+#include "wpg/datasets/study_design/study.hpp"
+#include "wpg/datasets/storage/stored_run_consistency.hpp"
 #include "wpg/walk_generator.hpp"
 
 namespace fs = std::filesystem;

@@ -1,4 +1,4 @@
-// Limits on input (issue #13 items 7, 8, 9, 12; datasets/SCENARIOS.md, "Limits"): files that
+// Limits on input (datasets/SCENARIOS.md, "Limits"): files that
 // are not regular or too large, too-deep YAML and --set keys, second YAML documents in --set
 // values, lengths beyond kMaxLength (scenarios and generated worlds), names too long for a file
 // name, walks too short to run or replay, and control characters escaped in every message.
@@ -12,10 +12,10 @@
 #include <gtest/gtest.h>
 
 #include "test_support.hpp"
-#include "wpg/datasets/comparison_study.hpp"
-#include "wpg/datasets/input_limits.hpp"
-#include "wpg/datasets/scenario.hpp"
-#include "wpg/datasets/study.hpp"
+#include "wpg/datasets/study_design/comparison_study.hpp"
+#include "wpg/datasets/input/input_limits.hpp"
+#include "wpg/datasets/input/scenario.hpp"
+#include "wpg/datasets/study_design/study.hpp"
 
 namespace fs = std::filesystem;
 using wpg::datasets::escapeControlCharacters;

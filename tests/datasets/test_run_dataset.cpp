@@ -14,7 +14,7 @@
 #include "test_support.hpp"
 #include <gtest/gtest.h>
 
-#include "wpg/datasets/run_dataset.hpp"
+#include "wpg/datasets/storage/run_dataset.hpp"
 
 namespace fs = std::filesystem;
 using wpg::datasets::Scenario;

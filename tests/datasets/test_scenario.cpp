@@ -1,9 +1,6 @@
 // Scenario files: the shipped ones load with the expected values, every malformed input is
-// an InputError naming the file and the key, --set overrides work, the resolved YAML
-// reproduces the scenario.
-//
-// Why ~560 lines: one file for the scenario format: every key's reading, error message and
-// override path is a row or two of the tables below.
+// an InputError naming the file and the key, the resolved YAML reproduces the scenario (the
+// --set overrides: test_scenario_overrides.cpp).
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -14,8 +11,9 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include "scenario_files.hpp"
 #include "test_support.hpp"
-#include "wpg/datasets/scenario.hpp"
+#include "wpg/datasets/input/scenario.hpp"
 
 namespace fs = std::filesystem;
 using wpg::datasets::InputError;
@@ -26,58 +24,11 @@ namespace {
 
 using wpg_test::kRobotsDir;
 using wpg_test::kScenariosDir;
-
-std::string shipped(const std::string& name) { return kScenariosDir + "/" + name + ".yaml"; }
-
-Scenario loadShipped(const std::string& name, const std::vector<std::string>& overrides = {}) {
-  return loadScenario(shipped(name), overrides, kRobotsDir);
-}
-
-// A valid scenario; tests replace one line to make it malformed.
-const char* const kValidScenario =
-    "name: test_case\n"
-    "robot: hrp2\n"
-    "duration: 5.0\n"
-    "generator: {algorithm: nmpc, sqp_iterations: 1}\n"
-    "reference:\n"
-    "  - {t: 0.0, v: [0.0, 0.0, 0.0]}\n"
-    "  - {t: 1.0, v: [0.2, 0.0, 0.0]}\n"
-    "pushes:\n"
-    "  - {t: 2.0, force: [0.0, 90.0], duration: 0.1}\n"
-    "walking: {max_step_yaw_change: 0.17}\n";
-
-std::string replaced(std::string text, const std::string& from, const std::string& to) {
-  const std::size_t at = text.find(from);
-  if (at == std::string::npos) throw std::logic_error("test bug: '" + from + "' not found");
-  return text.replace(at, from.size(), to);
-}
-
-class ScenarioFiles : public wpg_test::ScratchDirectoryTest {
- protected:
-  ScenarioFiles() : ScratchDirectoryTest("wpg_test_scenario") {}
-
-  std::string write(const std::string& file_name, const std::string& text) {
-    const fs::path path = directory_ / file_name;
-    fs::create_directories(path.parent_path());
-    std::ofstream(path) << text;
-    return path.string();
-  }
-
-  // Loading `text` (written as `file_name`) must throw one InputError line holding the file
-  // name and every one of `parts`.
-  void expectError(const std::string& file_name, const std::string& text,
-                   std::initializer_list<std::string> parts,
-                   const std::vector<std::string>& overrides = {}) {
-    const std::string path = write(file_name, text);
-    expectErrorAt(path, parts, overrides, kRobotsDir);
-  }
-
-  static void expectErrorAt(const std::string& path, std::initializer_list<std::string> parts,
-                            const std::vector<std::string>& overrides,
-                            const std::string& robots_dir) {
-    wpg_test::expectInputError([&] { loadScenario(path, overrides, robots_dir); }, path, parts);
-  }
-};
+using wpg_test::kValidScenario;
+using wpg_test::loadShipped;
+using wpg_test::replaced;
+using wpg_test::ScenarioFiles;
+using wpg_test::shipped;
 
 // ---------------------------------------------------------------------------------------------
 // Shipped scenarios
@@ -316,39 +267,6 @@ TEST(ShippedScenarios, FilterModeKeys) {
 // Malformed input: one InputError line naming the file and the key
 // ---------------------------------------------------------------------------------------------
 
-// The non-default value (command is the default since issue 9): the paper's support_foot.
-TEST(Overrides, HeadingReferenceRoundTrips) {
-  const Scenario s = loadShipped("walk_forward", {"walking.heading_reference=support_foot"});
-  EXPECT_EQ(s.walking.heading_reference, wpg::HeadingReference::kSupportFoot);
-  EXPECT_NE(s.resolved_yaml.find("heading_reference: support_foot"), std::string::npos);
-  const Scenario again =
-      wpg::datasets::loadScenarioText(s.resolved_yaml, "run.h5:/scenario", {}, kRobotsDir);
-  EXPECT_EQ(again.walking.heading_reference, wpg::HeadingReference::kSupportFoot);
-}
-
-TEST(Overrides, ObstacleDistanceFormRoundTrips) {
-  EXPECT_EQ(loadShipped("walk_forward").walking.obstacle_distance_form,
-            wpg::ObstacleDistanceForm::kSoleClearance);
-  const Scenario s = loadShipped("walk_forward", {"walking.obstacle_distance_form=paper"});
-  EXPECT_EQ(s.walking.obstacle_distance_form, wpg::ObstacleDistanceForm::kPaper);
-  EXPECT_NE(s.resolved_yaml.find("obstacle_distance_form: paper"), std::string::npos);
-  const Scenario again =
-      wpg::datasets::loadScenarioText(s.resolved_yaml, "run.h5:/scenario", {}, kRobotsDir);
-  EXPECT_EQ(again.walking.obstacle_distance_form, wpg::ObstacleDistanceForm::kPaper);
-}
-
-TEST(Overrides, ObstacleLinearizationRoundTrips) {
-  const Scenario defaults = loadShipped("walk_forward");
-  EXPECT_EQ(defaults.walking.obstacle_linearization, wpg::ObstacleLinearization::kStep);
-  const Scenario s =
-      loadShipped("walk_forward", {"walking.obstacle_linearization=command_tangent"});
-  EXPECT_EQ(s.walking.obstacle_linearization, wpg::ObstacleLinearization::kCommandTangent);
-  EXPECT_NE(s.resolved_yaml.find("obstacle_linearization: command_tangent"), std::string::npos);
-  const Scenario again =
-      wpg::datasets::loadScenarioText(s.resolved_yaml, "run.h5:/scenario", {}, kRobotsDir);
-  EXPECT_EQ(again.walking.obstacle_linearization, wpg::ObstacleLinearization::kCommandTangent);
-}
-
 TEST_F(ScenarioFiles, UnknownObstacleLinearizationIsAnError) {
   expectError("bad_linearization.yaml", kValidScenario,
               {"walking.obstacle_linearization", "step or command_tangent"},
@@ -571,71 +489,6 @@ TEST_F(ScenarioFiles, BadRobotFiles) {
   // A complete copy of hrp2 is a valid robot.
   write("robots/partial/walking.yaml", text);
   EXPECT_EQ(loadScenario(scenario_path, {}, robots).robot, "partial");
-}
-
-// ---------------------------------------------------------------------------------------------
-// --set overrides
-// ---------------------------------------------------------------------------------------------
-
-TEST(Overrides, ScalarsNestedKeysAndListIndices) {
-  const Scenario s =
-      loadShipped("walk_forward", {"duration=20", "generator.sqp_iterations=3",
-                                   "generator.algorithm=lmpc",
-                                   "walking.max_step_yaw_change=0.17",
-                                   "reference[1].v=[0.3,0,0]", "walking.feasibility_y[2]=0.35"});
-  EXPECT_DOUBLE_EQ(s.request.duration, 20.0);
-  EXPECT_EQ(s.request.generator.sqp_iterations, 3);
-  EXPECT_EQ(s.request.generator.algorithm, wpg::GeneratorAlgorithm::kLmpc);
-  EXPECT_DOUBLE_EQ(s.walking.max_step_yaw_change, 0.17);
-  EXPECT_EQ(s.request.reference[1].velocity, Eigen::Vector3d(0.3, 0.0, 0.0));
-  EXPECT_DOUBLE_EQ(s.walking.feasibility_y[2], 0.35);
-  EXPECT_DOUBLE_EQ(s.walking.feasibility_y[1], 0.3);  // the rest of the robot's list stays
-  EXPECT_NE(s.resolved_yaml.find("duration: 20.0"), std::string::npos) << s.resolved_yaml;
-  EXPECT_NE(s.resolved_yaml.find("algorithm: lmpc"), std::string::npos) << s.resolved_yaml;
-  EXPECT_NE(s.resolved_yaml.find("{t: 1.0, v: [0.3, 0.0, 0.0]}"), std::string::npos)
-      << s.resolved_yaml;
-}
-
-TEST(Overrides, AppendAndCreate) {
-  const Scenario s = loadShipped(
-      "walk_forward", {"reference[2]={t: 5, v: [0, 0, 0]}", "pushes[0]={t: 2, force: [10, 0]}",
-                       "pushes[0].duration=0.2", "robot_mass=60"});
-  ASSERT_EQ(s.request.reference.size(), 3u);
-  EXPECT_DOUBLE_EQ(s.request.reference[2].t, 5.0);
-  ASSERT_EQ(s.request.pushes.size(), 1u);
-  EXPECT_EQ(s.request.pushes[0].force, Eigen::Vector2d(10.0, 0.0));
-  EXPECT_DOUBLE_EQ(s.request.pushes[0].duration, 0.2);
-  EXPECT_DOUBLE_EQ(s.request.robot_mass, 60.0);
-}
-
-TEST(Overrides, LaterOverridesWinAndScenarioBeatsRobot) {
-  // turn_on_the_spot sets 0.17 over the robot's 0.05; --set goes last.
-  EXPECT_DOUBLE_EQ(loadShipped("turn_on_the_spot").walking.max_step_yaw_change, 0.17);
-  const Scenario s = loadShipped("turn_on_the_spot", {"walking.max_step_yaw_change=0.1",
-                                                      "walking.max_step_yaw_change=0.12"});
-  EXPECT_DOUBLE_EQ(s.walking.max_step_yaw_change, 0.12);
-}
-
-TEST_F(ScenarioFiles, BadOverrides) {
-  const std::string text = kValidScenario;
-  expectError("o1.yaml", text, {"--set 'duration'", "key=value"}, {"duration"});
-  expectError("o2.yaml", text, {"'reference[9]'", "out of range"}, {"reference[9].v=[0,0,0]"});
-  expectError("o3.yaml", text, {"reference[x].v", "index"}, {"reference[x].v=1"});
-  expectError("o4.yaml", text, {"'name.first'", "not a map"}, {"name.first=1"});
-  expectError("o5.yaml", text, {"'duration'", "syntax error"}, {"duration=[1"});
-  expectError("o6.yaml", text, {"key 'durration'", "unknown key", "--set 'durration=3'"},
-              {"durration=3"});
-  expectError("o7.yaml", text, {"key 'duration'", "got abc", "--set 'duration=abc'"},
-              {"duration=abc"});
-  expectError("o8.yaml", text, {"'reference[1].v'", "3 numbers", "--set"},
-              {"reference[1].v=[1,2]"});
-  expectError("o9.yaml", text, {"'walking.bogus'", "unknown key"}, {"walking.bogus=1"});
-  expectError("o10.yaml", text, {"--set '=3'"}, {"=3"});
-  expectError("o11.yaml", text, {"key 'robot'", "got nao", "--set 'robot=nao'"}, {"robot=nao"});
-  expectError("o12.yaml", text, {"'walking.feasibility_x'", "5 numbers", "--set"},
-              {"walking.feasibility_x[5]=1"});
-  expectError("o13.yaml", text, {"'walking.feasibility_x[6]'", "out of range"},
-              {"walking.feasibility_x[6]=1"});
 }
 
 }  // namespace

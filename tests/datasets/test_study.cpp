@@ -1,5 +1,5 @@
-// Study files (wpg/datasets/study.hpp): the expansion of grid, zip and random sweeps (count,
-// order, names), the seeded random values, the fingerprint, and bad studies as InputError.
+// Study files (wpg/datasets/study_design/study.hpp): the expansion of grid, zip and random sweeps
+// (count, order, names), the seeded random values, the fingerprint, and bad studies as InputError.
 #include <cmath>
 #include <cstdint>
 #include <fstream>
@@ -9,7 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "test_support.hpp"
-#include "wpg/datasets/study.hpp"
+#include "wpg/datasets/study_design/study.hpp"
 
 namespace fs = std::filesystem;
 using wpg::datasets::InputError;

@@ -12,7 +12,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
-#include "wpg/datasets/input_error.hpp"
+#include "wpg/datasets/input/input_error.hpp"
 
 namespace wpg_test {
 

@@ -22,9 +22,9 @@
 #include <vector>
 
 #include "hdf5_image.hpp"
-#include "wpg/datasets/input_error.hpp"
-#include "wpg/datasets/run_dataset_reader.hpp"
-#include "wpg/datasets/scenario.hpp"
+#include "wpg/datasets/input/input_error.hpp"
+#include "wpg/datasets/storage/run_dataset_reader.hpp"
+#include "wpg/datasets/input/scenario.hpp"
 
 namespace {
 

@@ -17,8 +17,8 @@
 #include <string>
 #include <vector>
 
-#include "wpg/datasets/input_error.hpp"
-#include "wpg/datasets/scenario.hpp"
+#include "wpg/datasets/input/input_error.hpp"
+#include "wpg/datasets/input/scenario.hpp"
 
 namespace {
 

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "wpg/datasets/scenario.hpp"
+#include "wpg/datasets/input/scenario.hpp"
 #include "wpg/planning/goal_walk.hpp"
 #include "wpg/planning/obstacle_checks.hpp"
 #include "wpg/walk_checks.hpp"

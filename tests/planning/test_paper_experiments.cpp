@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "wpg/datasets/scenario.hpp"
+#include "wpg/datasets/input/scenario.hpp"
 #include "wpg/planning/obstacle_checks.hpp"
 #include "wpg/planning/world.hpp"
 #include "wpg/walk_generator.hpp"

@@ -1,14 +1,16 @@
 // Uses the installed wpg: HRP-2's default walking parameters and a walk request must validate,
 // a bad value must be rejected with std::invalid_argument, the online API must generate a walk
-// (CoM and feet every control period) that goes forward, generateWalk must agree with it, and
-// wpg::analysis must count its steps.
+// (CoM and feet every control period) that goes forward, generateWalk must agree with it,
+// wpg::analysis must count its steps, and wpg::engine must run it as a scenario to the same
+// walk, with its metrics.
 #include <cmath>
 #include <iostream>
 #include <stdexcept>
 #include <vector>
 
 #include <wpg/analysis/run_summary.hpp>
-#include <wpg/datasets/scenario.hpp>
+#include <wpg/datasets/input/scenario.hpp>
+#include <wpg/engine/scenario_run.hpp>
 #include <wpg/online_walking_generator.hpp>
 #include <wpg/walk_generator.hpp>
 #include <wpg/walk_request.hpp>
@@ -78,6 +80,20 @@ int main() {
     return fail("wpg::analysis summary disagrees with the walk");
   std::cout << "wpg::analysis ok (" << summary.steps << " steps, " << summary.displacement
             << " m)\n";
+
+  // wpg::engine: the same walk as a scenario (no replay: no robot files needed).
+  wpg::datasets::Scenario scenario;
+  scenario.name = "downstream";
+  scenario.robot = "hrp2";
+  scenario.walking = parameters;
+  scenario.request = request;
+  const wpg::engine::RunResult run = wpg::engine::runScenario(scenario, {});
+  if (run.outcome != wpg::engine::RunOutcome::kSucceeded || run.exitStatus() != 0 ||
+      run.walk.result.trajectory.com != walk.trajectory.com ||
+      run.metrics.steps != static_cast<double>(landings))
+    return fail("wpg::engine's run differs from generateWalk");
+  std::cout << "wpg::engine ok (" << wpg::engine::runOutcomeName(run.outcome) << ", "
+            << run.metrics.steps << " steps)\n";
 
   // wpg::datasets: a missing scenario file is an InputError.
   try {

@@ -1,0 +1,29 @@
+// The one-line messages on stderr (error_messages.hpp).
+#include "error_messages.hpp"
+
+#include <iostream>
+
+#include "wpg/datasets/input/input_error.hpp"
+
+namespace wpg::cli {
+namespace {
+
+// Messages are one line: line breaks become spaces, and any other control character (user
+// text quoted in a usage error) is escaped.
+std::string oneLine(std::string text) {
+  for (char& c : text) {
+    if (c == '\n' || c == '\r') c = ' ';
+  }
+  while (!text.empty() && text.back() == ' ') text.pop_back();
+  return datasets::escapeControlCharacters(text);
+}
+
+}  // namespace
+
+void printError(const std::string& message) { std::cerr << "wpg: error: " << oneLine(message) << '\n'; }
+
+void printWarning(const std::string& message) {
+  std::cerr << "wpg: warning: " << oneLine(message) << '\n';
+}
+
+}  // namespace wpg::cli

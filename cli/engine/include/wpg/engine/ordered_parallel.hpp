@@ -1,0 +1,81 @@
+#pragma once
+// Jobs 0..count-1 on `threads` worker threads, their outcomes delivered in job order: the
+// thread executor of studies and comparisons (study_executor.hpp) and the push sweep's
+// bisections (push_sweep.hpp) run on it. Each worker owns what its jobs build (one problem
+// copy per thread, nothing shared that a job writes); `deliver` is called by one thread at a
+// time, in order 0, 1, 2, ..., as soon as the outcome of every earlier job is there, so a writer
+// behind it sees the same sequence for any number of threads.
+//
+// An exception thrown by `work` or `deliver` stops the hand-out of new jobs; the running jobs
+// finish, and the first exception is rethrown to the caller.
+#include <cstddef>
+#include <exception>
+#include <functional>
+#include <map>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace wpg::engine {
+
+// `work(job, worker)`: worker in [0, threads), for per-thread state (a robot model, ...).
+// `started(job)` (may be empty) is called when a job is handed to a worker.
+template <typename Outcome>
+void runOrdered(std::size_t count, int threads,
+                const std::function<Outcome(std::size_t job, int worker)>& work,
+                const std::function<void(std::size_t job, Outcome&& outcome)>& deliver) {
+  std::mutex mutex;
+  std::map<std::size_t, Outcome> ready;  // finished, waiting for an earlier job
+  std::size_t next_job = 0, next_delivery = 0;
+  bool delivering = false;
+  std::exception_ptr error;
+
+  const auto worker = [&](int worker_index) {
+    while (true) {
+      std::size_t job = 0;
+      {
+        std::lock_guard<std::mutex> lock(mutex);
+        if (error || next_job >= count) return;
+        job = next_job++;
+      }
+      Outcome outcome;
+      try {
+        outcome = work(job, worker_index);
+      } catch (...) {
+        std::lock_guard<std::mutex> lock(mutex);
+        if (!error) error = std::current_exception();
+        return;
+      }
+      std::unique_lock<std::mutex> lock(mutex);
+      ready.emplace(job, std::move(outcome));
+      if (delivering) continue;  // the thread delivering will take it in turn
+      delivering = true;
+      while (!error) {
+        const auto next = ready.find(next_delivery);
+        if (next == ready.end()) break;
+        Outcome item = std::move(next->second);
+        ready.erase(next);
+        const std::size_t index = next_delivery++;
+        lock.unlock();
+        try {
+          deliver(index, std::move(item));
+        } catch (...) {
+          lock.lock();
+          if (!error) error = std::current_exception();
+          break;
+        }
+        lock.lock();
+      }
+      delivering = false;
+    }
+  };
+
+  const int count_threads = threads < 1 ? 1 : threads;
+  std::vector<std::thread> pool;
+  for (int t = 1; t < count_threads; ++t) pool.emplace_back(worker, t);
+  worker(0);  // the calling thread is worker 0
+  for (std::thread& thread : pool) thread.join();
+  if (error) std::rethrow_exception(error);
+}
+
+}  // namespace wpg::engine

@@ -1,0 +1,64 @@
+// The input checks of a run beyond its scenario file (run_input_checks.hpp).
+#include "wpg/engine/run_input_checks.hpp"
+
+#include <exception>
+#include <set>
+#include <stdexcept>
+
+#include "wpg/datasets/input/input_error.hpp"
+#include "wpg/planning/goal_walk.hpp"
+#include "wpg/preview_control.hpp"
+
+namespace wpg::engine {
+
+void checkFilterSettings(const datasets::Scenario& scenario, const std::string& origin) {
+  try {
+    const PreviewController controller(scenario.walking.control_period,
+                                       scenario.walking.com_height, scenario.walking.gravity,
+                                       scenario.filter_settings);
+    (void)controller;
+  } catch (const std::exception& e) {
+    throw datasets::InputError(origin + ": key 'filter_settings': no preview controller for "
+                               "these weights (" + e.what() + ")");
+  }
+}
+
+void checkGoalRequest(const datasets::Scenario& scenario, const std::string& origin) {
+  if (!scenario.goal.enabled) return;
+  try {
+    planning::checkGoalRequest(scenario.walking, scenario.request, scenario.goal);
+  } catch (const std::invalid_argument& e) {
+    throw datasets::InputError(origin + ": " + e.what());
+  }
+}
+
+void checkFilterMode(const datasets::Scenario& scenario, const std::string& origin) {
+  if (!scenario.goal.enabled || !scenario.filter ||
+      scenario.filter_loop.mode == DynamicFilterMode::kOffline) {
+    return;
+  }
+  throw datasets::InputError(
+      origin + ": key 'filter_settings.mode': expected offline for a scenario with a goal (the "
+      "online filter loop runs velocity-command walks only), got " +
+      dynamicFilterModeName(scenario.filter_loop.mode));
+}
+
+void checkRunInput(const datasets::Scenario& scenario, const std::string& origin,
+                   RobotModelCache& models) {
+  if (scenario.replay) {
+    (void)models.model(scenario.robot);
+    if (scenario.filter) checkFilterSettings(scenario, origin);
+  }
+  checkGoalRequest(scenario, origin);
+  if (scenario.replay) checkFilterMode(scenario, origin);
+}
+
+void checkStudyRobotModels(const datasets::Study& study, const std::string& robots_directory) {
+  std::set<std::string> replayed_robots;
+  for (const datasets::StudyRun& run : study.runs) {
+    if (run.scenario.replay) replayed_robots.insert(run.scenario.robot);
+  }
+  for (const std::string& robot : replayed_robots) (void)loadRobotModel(robots_directory, robot);
+}
+
+}  // namespace wpg::engine

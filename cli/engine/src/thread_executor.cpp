@@ -1,0 +1,120 @@
+// A study on this process's worker threads (study_executor.hpp, makeThreadExecutor).
+#include <filesystem>
+#include <system_error>
+#include <utility>
+
+#include "batch_run_record.hpp"
+#include "wpg/datasets/input/input_error.hpp"
+#include "wpg/datasets/storage/batch_index.hpp"
+#include "wpg/engine/ordered_parallel.hpp"
+#include "wpg/engine/study_executor.hpp"
+
+namespace fs = std::filesystem;
+
+namespace wpg::engine {
+
+namespace {
+
+class ThreadExecutor : public StudyExecutor {
+ public:
+  ThreadExecutor(int threads, std::string robots_directory)
+      : threads_(threads < 1 ? 1 : threads), robots_directory_(std::move(robots_directory)) {}
+
+  bool run(const datasets::Study& study, const StudyOutput& output,
+           const StudyRunHandling& handling, StudyObserver& observer) override {
+    const ShardSlice slice = output.shard.value_or(ShardSlice{});
+    const std::string shard_label =
+        output.shard ? datasets::shardSliceLabel(slice.index, slice.count) : "";
+    std::unique_ptr<datasets::BatchDatasetWriter> writer =
+        openWriter(study, output, handling, shard_label, observer);
+
+    std::vector<const datasets::StudyRun*> todo;
+    std::size_t slice_runs = 0;
+    for (const datasets::StudyRun& run : study.runs) {
+      if (!datasets::inShardSlice(run.index, slice.index, slice.count)) continue;
+      ++slice_runs;
+      if (!writer->done()[run.index]) todo.push_back(&run);
+    }
+    if (todo.size() < slice_runs) observer.resuming(slice_runs - todo.size(), slice_runs, output.path);
+    observer.started(todo.size());
+    runInto(todo, handling, *writer, observer);
+    observer.finished();
+    writer->close();
+    return true;
+  }
+
+ private:
+  // The batch file to write: a new one, or with `resume` the one there (moved aside first when
+  // HDF5 cannot read it: killed inside a write).
+  std::unique_ptr<datasets::BatchDatasetWriter> openWriter(const datasets::Study& study,
+                                                           const StudyOutput& output,
+                                                           const StudyRunHandling& handling,
+                                                           const std::string& shard_label,
+                                                           StudyObserver& observer) {
+    std::error_code ec;
+    const std::string& path = output.path;
+    if (output.resume && fs::exists(path, ec) && !datasets::isDamagedHdf5File(path)) {
+      // A slice finishes its own shard only (and a whole batch is not finished as a slice).
+      const std::string label = datasets::readShardContents(path).label;
+      if (label != shard_label) {
+        throw datasets::InputError(
+            path + ": cannot resume: it is " +
+            (label.empty() ? std::string("not a shard") : "shard " + label) + ", not " +
+            (shard_label.empty() ? std::string("a whole batch") : "shard " + shard_label) +
+            " (file left as it is)");
+      }
+    }
+    if (output.resume && fs::exists(path, ec) && datasets::isDamagedHdf5File(path)) {
+      // Nothing of it can be trusted. Kept aside, not removed, and the study starts again (the
+      // same runs give the same file).
+      observer.movedDamagedFile(path, datasets::moveDamagedFileAside(path), false);
+    }
+    if (output.resume && fs::exists(path, ec)) {
+      return datasets::BatchDatasetWriter::resume(path, study, handling.columns);
+    }
+    const fs::path parent = fs::path(path).parent_path();
+    if (!parent.empty()) fs::create_directories(parent, ec);
+    return datasets::BatchDatasetWriter::create(path, study, handling.columns, shard_label);
+  }
+
+  // The runs on the workers, their datasets compressed there, written in study order.
+  void runInto(const std::vector<const datasets::StudyRun*>& runs,
+               const StudyRunHandling& handling, datasets::BatchDatasetWriter& writer,
+               StudyObserver& observer) {
+    std::vector<RobotModelCache> models;
+    for (int worker = 0; worker < threads_; ++worker) models.emplace_back(robots_directory_);
+    // Each slot is written by the worker of its run, then read by the writer: none is shared.
+    std::vector<datasets::PreparedRun> prepared(runs.size());
+    runOrdered<RunResult>(
+        runs.size(), threads_,
+        [&](std::size_t position, int worker) {
+          RunSettings settings{robots_directory_, &models[static_cast<std::size_t>(worker)]};
+          RunResult result = runScenario(runs[position]->scenario, settings);
+          BatchRunRecordOf record(*runs[position], result);
+          prepared[position] = datasets::BatchDatasetWriter::prepare(record.record());
+          return result;
+        },
+        [&](std::size_t position, RunResult&& result) {
+          const datasets::StudyRun& run = *runs[position];
+          BatchRunRecordOf record(run, result);
+          record.record().values = handling.summary_values(run, result);
+          writer.write(record.record(), &prepared[position]);
+          prepared[position] = datasets::PreparedRun{};  // free the chunks
+          if (handling.report && handling.collect) {
+            handling.collect(run.index, handling.report(run, result));
+          }
+          observer.runFinished(result.exitStatus() != 0);
+        });
+  }
+
+  int threads_;
+  std::string robots_directory_;
+};
+
+}  // namespace
+
+std::unique_ptr<StudyExecutor> makeThreadExecutor(int threads, std::string robots_directory) {
+  return std::make_unique<ThreadExecutor>(threads, std::move(robots_directory));
+}
+
+}  // namespace wpg::engine

@@ -1,0 +1,117 @@
+#pragma once
+// One HDF5 file for a whole study (`wpg batch`; layout: datasets/SCHEMA.md, "Batch files"):
+// a group /runs/<study>_<index> per finished run in the run schema, with the run's resolved
+// scenario and swept values as attributes, and the table /batch/summary, one row per run of
+// the study (row = index), its columns allocated when the file is created and filled as runs
+// finish. Each finished run is flushed (H5Fflush) before the next is written, so a killed
+// batch leaves a file that h5py opens, holding every run it had finished; `done` marks them.
+//
+// The writer is used from one thread at a time and holds hdf5Mutex() in each call.
+#include <cstddef>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "wpg/datasets/storage/run_dataset.hpp"
+#include "wpg/datasets/study_design/study.hpp"
+
+namespace wpg::datasets {
+
+// The schema version of the batch layout (root attribute `batch_schema_version`).
+constexpr int kBatchDatasetSchemaVersion = 1;
+
+// A column of /batch/summary filled from each run's results (the caller's metrics).
+struct SummaryColumn {
+  std::string name;         // dataset name under /batch/summary, e.g. "cop_margin_min"
+  std::string units;        // "m", "s", "1", ...
+  std::string description;  // one sentence
+  bool integer = false;     // int32 (fill -1) instead of float64 (fill NaN)
+};
+
+// A finished run as the batch file stores it.
+struct BatchRunRecord {
+  const StudyRun* run = nullptr;
+  const wpg::WalkResult* result = nullptr;
+  const FootstepClearances* clearances = nullptr;       // may be null
+  const MultibodyRecord* multibody = nullptr;  // may be null (not replayed)
+  const GoalOutcome* goal = nullptr;                     // a walk to a goal, else null
+  int exit_status = 0;                 // 0 the walk succeeded, 1 it failed (as `wpg run`)
+  std::vector<double> values;          // one per SummaryColumn, in the writer's order
+};
+
+// A run's datasets compressed ahead of writing (BatchDatasetWriter::prepare): the compression
+// (most of the writing time) then runs on the worker threads in parallel instead of inside the
+// writer, which HDF5 serializes.
+struct PreparedRun {
+  std::shared_ptr<void> recording;  // the chunks, in the writer's order (detail::ChunkRecording)
+};
+
+class BatchDatasetWriter {
+ public:
+  // Compresses the run's datasets for write(); makes no HDF5 call and touches no writer, so any
+  // thread may call it at any time. Throws std::invalid_argument as writeRunDataset.
+  static PreparedRun prepare(const BatchRunRecord& record);
+
+  // Creates `path` (replacing a file there) with the study's layout: root attributes, /batch,
+  // the summary table with its index, name and swept columns filled and its result columns
+  // at their fill values, and an empty /runs. A non-empty `shard_label` makes it a shard file
+  // (batch_index.hpp): root attribute `shard`. Throws std::runtime_error on I/O errors.
+  static std::unique_ptr<BatchDatasetWriter> create(const std::string& path, const Study& study,
+                                                    const std::vector<SummaryColumn>& columns,
+                                                    const std::string& shard_label = "");
+  // Opens an existing batch file of the same study to finish it. Throws InputError, leaving the
+  // file untouched, when it is not a batch file, holds another study (name or fingerprint
+  // differ) or has other summary columns. Runs found half-written (a group without its `done`
+  // row: the batch was killed while writing it) are removed, to be run again.
+  static std::unique_ptr<BatchDatasetWriter> resume(const std::string& path, const Study& study,
+                                                    const std::vector<SummaryColumn>& columns);
+  ~BatchDatasetWriter();
+  BatchDatasetWriter(const BatchDatasetWriter&) = delete;
+  BatchDatasetWriter& operator=(const BatchDatasetWriter&) = delete;
+
+  // done[i]: run i is in the file.
+  const std::vector<bool>& done() const { return done_; }
+
+  // Writes the run's group and its summary row, marks it done and flushes the file; with
+  // `prepared` (from prepare(record)), its chunks as they are.
+  void write(const BatchRunRecord& record, const PreparedRun* prepared = nullptr);
+
+  // Closes the file (also done by the destructor); throws on I/O errors.
+  void close();
+
+ private:
+  struct Handles;
+  BatchDatasetWriter(std::string path, std::vector<SummaryColumn> columns);
+  std::string path_;
+  std::vector<SummaryColumn> columns_;
+  std::vector<bool> done_;
+  std::unique_ptr<Handles> handles_;
+};
+
+// The table /batch/summary of a batch file, read back (for summary.csv/.md and `wpg analyze`).
+struct BatchSummaryTable {
+  std::string study;
+  std::vector<std::string> column_names;  // in the table's order (its `columns` attribute)
+  std::vector<std::string> column_units;
+  // cells[c][row] as text: numbers in shortest round-trip form, "nan" for missing values
+  std::vector<std::vector<std::string>> cells;
+  std::size_t rows = 0;
+};
+
+// Whether `path` is a batch file (has the root attribute `study`). Throws InputError when it
+// cannot be read as HDF5.
+bool isBatchFile(const std::string& path);
+
+// A file that starts like HDF5 (its signature) but whose objects HDF5 cannot all open: what a
+// SIGKILL inside HDF5's write or flush of a run leaves (HDF5 1.10 has no atomic commit; measured
+// on `tests/cli/studies/batch_small.yaml`: 4 of 75 kills at random times with the cores loaded,
+// 0 of 30 on idle cores). `wpg batch --resume` moves such a file aside and starts the study
+// again. Also true for a batch file killed before its summary table was complete. False for a
+// readable file and for a file that is not HDF5 at all.
+bool isDamagedHdf5File(const std::string& path);
+// Renames such a file to PATH.damaged (PATH.damaged-2, -3, ... when taken) and returns the new
+// name: kept for a post-mortem, never removed. Throws std::runtime_error when the rename fails.
+std::string moveDamagedFileAside(const std::string& path);
+BatchSummaryTable readBatchSummary(const std::string& path);
+
+}  // namespace wpg::datasets

@@ -1,0 +1,59 @@
+#pragma once
+// Output files that never destroy what is not theirs:
+//  * checkOutputPath refuses, before anything is computed or written, an output path that is
+//    a folder (or ends with '/'), that exists and is not a regular file (a device such as
+//    /dev/null, a FIFO, /proc/self/fd/1), that is the same file (device and inode, whatever the
+//    name) as one of the command's inputs, or that exists and holds another kind of data than
+//    the command writes there (an HDF5 output over a scenario or a figure, a figure over a
+//    dataset). Policy for an existing output of the same kind (an HDF5 file where wpg writes a
+//    dataset, a PNG where it draws a figure, a JSON file where it writes JSON): it is replaced,
+//    atomically. Empty files count as any kind.
+//  * TemporaryOutput is where the data is written before it replaces the target: a file created
+//    exclusively (O_EXCL, mkstemp) with an unpredictable name in the target's folder (a symlink
+//    planted there cannot redirect the write), renamed over the target by commit() (atomic on
+//    one file system), removed by the destructor otherwise, and removed too when the process
+//    gets SIGINT or SIGTERM while it exists.
+#include <string>
+#include <vector>
+
+namespace wpg::datasets {
+
+enum class OutputKind {
+  kHdf5,  // "\x89HDF\r\n\x1a\n" at offset 0, 512, 1024, ... (HDF5's superblock signature)
+  kPng,   // "\x89PNG\r\n\x1a\n" at offset 0
+  kJson,  // first non-blank character '{' or '['
+};
+const char* outputKindName(OutputKind kind);  // "an HDF5 file", "a PNG image", "a JSON file"
+
+// Throws InputError (one line naming `path`, e.g. "'/dev/null': expected a regular file to
+// write an HDF5 file to, got a character device") when `path` may not be written as `kind`
+// (above). `inputs`: the files the command reads (missing ones are skipped).
+void checkOutputPath(const std::string& path, OutputKind kind,
+                     const std::vector<std::string>& inputs = {});
+
+// Throws InputError ("cannot write output '<output>': '<folder>' is not a writable directory")
+// unless the nearest existing folder above `output` is a directory this process may write in.
+void checkWritableParent(const std::string& output);
+
+class TemporaryOutput {
+ public:
+  // Creates the target's folder if needed and the temporary file in it (empty, mode 0666 less
+  // the umask, like a file the program would create). Throws std::runtime_error naming the
+  // folder when it cannot.
+  explicit TemporaryOutput(const std::string& target);
+  ~TemporaryOutput();  // removes the temporary file unless committed
+  TemporaryOutput(const TemporaryOutput&) = delete;
+  TemporaryOutput& operator=(const TemporaryOutput&) = delete;
+
+  const std::string& path() const { return path_; }  // where to write
+  // Renames the temporary file over the target. Throws std::runtime_error naming both.
+  void commit();
+
+ private:
+  std::string target_;
+  std::string path_;
+  int slot_ = -1;  // in the signal handler's table
+  bool committed_ = false;
+};
+
+}  // namespace wpg::datasets

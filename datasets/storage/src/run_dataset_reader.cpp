@@ -1,0 +1,414 @@
+// Reading a run dataset back into a WalkResult (layout: datasets/SCHEMA.md). Strict like the
+// scenario reader: a missing dataset, a wrong shape, a size beyond the readers' limits (checked
+// before anything is allocated, read_limits.hpp), a number that is not finite, a time that does
+// not increase or an unknown code is an InputError naming the file, the dataset and the row,
+// never a silently shorter or corrupt walk.
+#include "wpg/datasets/storage/run_dataset_reader.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <optional>
+#include <filesystem>
+#include <fstream>
+#include <mutex>
+#include <string>
+#include <system_error>
+#include <vector>
+
+#include <H5Cpp.h>
+
+#include "hdf5_bounded_reading.hpp"
+#include "wpg/datasets/storage/read_limits.hpp"
+#include "wpg/datasets/storage/run_dataset.hpp"
+
+namespace wpg::datasets {
+namespace {
+
+namespace fs = std::filesystem;
+
+class Reader {
+ public:
+  Reader(std::string path, const H5::Group& run, std::string run_path)
+      : path_(std::move(path)), run_(run), run_path_(std::move(run_path)) {}
+
+  [[noreturn]] void fail(const std::string& message) const {
+    throw InputError(path_ + ": " + message);
+  }
+
+  // The dataset `name` (below the run group) with `columns` columns (0: 1-D), of type class
+  // `type_class`, at most kMaxStoredSamples rows; returns its rows. Only the dataspace is read.
+  H5::DataSet open(const std::string& name, hsize_t columns, H5T_class_t type_class,
+                   hsize_t* rows) const {
+    const std::string where = "dataset " + run_path_ + "/" + name;
+    if (!run_.nameExists(name)) fail(where + " is missing");
+    if (run_.childObjType(name) != H5O_TYPE_DATASET) fail(run_path_ + "/" + name + " is not a dataset");
+    H5::DataSet dataset = run_.openDataSet(name);
+    const std::string expected =
+        columns == 0 ? std::string("(n,)") : "(n, " + std::to_string(columns) + ")";
+    // The rank first, then the dimensions into a fixed array: nothing sized by the file.
+    const H5::DataSpace space = dataset.getSpace();
+    const int rank = columns == 0 ? 1 : 2;
+    hsize_t dims[2] = {0, 0};
+    if (space.getSimpleExtentType() != H5S_SIMPLE || space.getSimpleExtentNdims() != rank) {
+      fail(where + " has the wrong shape: expected " + expected);
+    }
+    space.getSimpleExtentDims(dims);
+    if (columns != 0 && dims[1] != columns) fail(where + " has the wrong shape: expected " + expected);
+    if (dims[0] > kMaxStoredSamples) {
+      fail(where + " declares " + std::to_string(dims[0]) + " rows: expected at most " +
+           std::to_string(kMaxStoredSamples) + " (3600 s at 5 ms, datasets/SCHEMA.md, Reading)");
+    }
+    if (dataset.getTypeClass() != type_class) {
+      fail(where + " has the wrong type: expected " +
+           (type_class == H5T_FLOAT ? "floating-point numbers" : "integers"));
+    }
+    *rows = dims[0];
+    return dataset;
+  }
+
+  // Finite numbers only: a NaN or an infinity would be copied into every later output.
+  std::vector<double> doubles(const std::string& name, hsize_t columns, hsize_t* rows) const {
+    H5::DataSet dataset = open(name, columns, H5T_FLOAT, rows);
+    const std::size_t width = columns == 0 ? 1 : static_cast<std::size_t>(columns);
+    std::vector<double> values(static_cast<std::size_t>(*rows) * width);
+    if (!values.empty()) dataset.read(values.data(), H5::PredType::NATIVE_DOUBLE);
+    for (std::size_t i = 0; i < values.size(); ++i) {
+      if (!std::isfinite(values[i])) {
+        fail("dataset " + run_path_ + "/" + name + " row " + std::to_string(i / width) +
+             (columns == 0 ? std::string() : " column " + std::to_string(i % width)) +
+             ": expected a finite number, got " + std::to_string(values[i]));
+      }
+    }
+    return values;
+  }
+
+  // A time column: finite (doubles) and strictly increasing.
+  std::vector<double> times(const std::string& name, hsize_t* rows) const {
+    std::vector<double> values = doubles(name, 0, rows);
+    for (std::size_t i = 1; i < values.size(); ++i) {
+      if (!(values[i] > values[i - 1])) {
+        fail("dataset " + run_path_ + "/" + name + " row " + std::to_string(i) +
+             ": expected strictly increasing times, got " + std::to_string(values[i]) +
+             " s after " + std::to_string(values[i - 1]) + " s");
+      }
+    }
+    return values;
+  }
+
+  std::vector<int> integers(const std::string& name, hsize_t* rows) const {
+    H5::DataSet dataset = open(name, 0, H5T_INTEGER, rows);
+    std::vector<int> values(static_cast<std::size_t>(*rows));
+    if (!values.empty()) dataset.read(values.data(), H5::PredType::NATIVE_INT);
+    return values;
+  }
+
+  // Counts: integers >= 0, exactly `expected_rows` of them.
+  std::vector<int> counts(const std::string& name, hsize_t expected_rows) const {
+    hsize_t rows = 0;
+    std::vector<int> values = integers(name, &rows);
+    expectRows(name, rows, expected_rows);
+    for (std::size_t i = 0; i < values.size(); ++i) {
+      if (values[i] < 0) {
+        fail("dataset " + run_path_ + "/" + name + " row " + std::to_string(i) +
+             ": expected a count >= 0, got " + std::to_string(values[i]));
+      }
+    }
+    return values;
+  }
+
+  // Integers in [low, high], one per row, exactly `expected_rows` of them.
+  std::vector<int> codes(const std::string& name, hsize_t expected_rows, int low, int high) const {
+    hsize_t rows = 0;
+    std::vector<int> values = integers(name, &rows);
+    expectRows(name, rows, expected_rows);
+    for (std::size_t i = 0; i < values.size(); ++i) {
+      if (values[i] < low || values[i] > high) {
+        fail("dataset " + run_path_ + "/" + name + " row " + std::to_string(i) +
+             " holds the code " + std::to_string(values[i]) + ", expected " +
+             std::to_string(low) + " to " + std::to_string(high));
+      }
+    }
+    return values;
+  }
+
+  void expectRows(const std::string& name, hsize_t rows, hsize_t expected) const {
+    if (rows != expected) {
+      fail("dataset " + run_path_ + "/" + name + " has " + std::to_string(rows) +
+           " rows, expected " + std::to_string(expected) + " (as its time)");
+    }
+  }
+
+  std::string stringAttribute(const H5::H5Object& object, const std::string& name,
+                              const std::string& where) const {
+    return detail::readStringAttribute(object, name, path_, where);
+  }
+
+  double numberAttribute(const H5::H5Object& object, const std::string& name,
+                         const std::string& where) const {
+    const double value = detail::readNumberAttribute(object, name, path_, where);
+    if (std::isnan(value)) return value;  // NaN: not measured (SCHEMA.md)
+    if (!std::isfinite(value)) {
+      fail("attribute " + where + name + ": expected a finite number or NaN, got " +
+           std::to_string(value));
+    }
+    return value;
+  }
+
+ private:
+  std::string path_;
+  const H5::Group& run_;
+  std::string run_path_;
+};
+
+template <int Size>
+std::vector<Eigen::Matrix<double, Size, 1>> rowsOf(const std::vector<double>& values) {
+  std::vector<Eigen::Matrix<double, Size, 1>> rows(values.size() / Size);
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    rows[i] = Eigen::Map<const Eigen::Matrix<double, Size, 1>>(values.data() + Size * i);
+  }
+  return rows;
+}
+
+// The groups under /runs, and the external links of the index of a sharded batch
+// (batch_index.hpp), taken for the runs they name without following them: following one opens
+// its shard; the run read is checked when it is opened. One pass of H5Literate: a group that
+// holds external links has HDF5's new-style link storage, where getObjnameByIdx sorts every
+// link again at each call (measured: `wpg analyze` of a 200-run index 6x slower than of the
+// same runs in one file, listing the runs at each run read).
+std::vector<std::string> runGroupNames(const H5::Group& runs) {
+  std::vector<std::string> names;
+  hsize_t position = 0;
+  H5Literate(
+      runs.getId(), H5_INDEX_NAME, H5_ITER_INC, &position,
+      [](hid_t group, const char* name, const H5L_info_t* link, void* data) -> herr_t {
+        H5O_info_t object;
+        if (link->type == H5L_TYPE_EXTERNAL ||
+            (H5Oget_info_by_name(group, name, &object, H5P_DEFAULT) >= 0 &&
+             object.type == H5O_TYPE_GROUP)) {
+          static_cast<std::vector<std::string>*>(data)->push_back(name);
+        }
+        return 0;
+      },
+      &names);
+  return names;
+}
+
+StoredRun readFile(const std::string& path, const std::string& run_name) {
+  if (!H5::H5File::isHdf5(path)) throw InputError(path + ": not an HDF5 file");
+  H5::H5File file(path, H5F_ACC_RDONLY);
+  StoredRun stored;
+  // A batch file (`wpg batch`) has no root `scenario`: each run group carries its own.
+  const bool root_scenario = file.attrExists("scenario");
+  if (!root_scenario && !file.attrExists("study")) {
+    throw InputError(path + ": root attribute 'scenario' is missing (not a run dataset?)");
+  }
+  if (root_scenario) stored.scenario_yaml = detail::readStringAttribute(file, "scenario", path, "/:");
+  if (!file.nameExists("runs") || file.childObjType("runs") != H5O_TYPE_GROUP) {
+    throw InputError(path + ": no group /runs (not a run dataset?)");
+  }
+  const H5::Group runs = file.openGroup("runs");
+  const std::vector<std::string> names = runGroupNames(runs);
+  std::string all;  // for messages: the first names
+  for (std::size_t i = 0; i < names.size() && i < 10; ++i) all += (i ? ", " : "") + names[i];
+  if (names.size() > 10) all += ", ...";
+  if (run_name.empty()) {
+    if (names.size() != 1) {
+      throw InputError(path + ": expected one run under /runs, got " +
+                       std::to_string(names.size()) + (all.empty() ? "" : " (" + all + ")"));
+    }
+    stored.name = names.front();
+  } else {
+    if (!runs.nameExists(run_name) || runs.childObjType(run_name) != H5O_TYPE_GROUP) {
+      throw InputError(path + ": no run /runs/" + run_name + " (runs: " +
+                       (all.empty() ? std::string("none") : all) + ")");
+    }
+    stored.name = run_name;
+  }
+  const std::string run_path = "/runs/" + stored.name;
+  const H5::Group run = runs.openGroup(stored.name);
+  const Reader reader(path, run, run_path);
+
+  if (run.attrExists("scenario")) {
+    stored.scenario_yaml = reader.stringAttribute(run, "scenario", run_path + ":");
+  } else if (!root_scenario) {
+    reader.fail("attribute " + run_path + ":scenario is missing (a batch file's run)");
+  }
+  stored.robot = reader.stringAttribute(run, "robot", run_path + ":");
+  if (run.nameExists("multibody") && run.childObjType("multibody") == H5O_TYPE_GROUP) {
+    const H5::Group multibody = run.openGroup("multibody");
+    const std::string where = run_path + "/multibody:";
+    const auto number = [&](const char* name) {
+      return multibody.attrExists(name) ? reader.numberAttribute(multibody, name, where)
+                                        : std::numeric_limits<double>::quiet_NaN();
+    };
+    StoredZmpError zmp;
+    zmp.filtered = multibody.attrExists("filtered") &&
+                   detail::readNumberAttribute(multibody, "filtered", path, where) != 0.0;
+    zmp.rms_before = number("zmp_error_rms_before");
+    zmp.max_before = number("zmp_error_max_before");
+    zmp.rms_after = number("zmp_error_rms_after");
+    zmp.max_after = number("zmp_error_max_after");
+    stored.zmp_error = zmp;
+  }
+  if (run.attrExists("message")) stored.result.message = reader.stringAttribute(run, "message", run_path + ":");
+  if (run.attrExists("success")) {
+    stored.result.success = detail::readNumberAttribute(run, "success", path, run_path + ":") != 0.0;
+  }
+
+  WalkTrajectory& t = stored.result.trajectory;
+  hsize_t n = 0, rows = 0;
+  t.time = reader.times("time", &n);
+  if (n < 1) reader.fail("dataset " + run_path + "/time is empty");
+  const auto samples = [&](const char* name, hsize_t columns) {
+    std::vector<double> values = reader.doubles(name, columns, &rows);
+    reader.expectRows(name, rows, n);
+    return values;
+  };
+  t.com = rowsOf<3>(samples("com", 3));
+  t.com_vel = rowsOf<3>(samples("com_vel", 3));
+  t.com_acc = rowsOf<3>(samples("com_acc", 3));
+  t.cop = rowsOf<2>(samples("cop", 2));
+  t.left_foot = rowsOf<4>(samples("left_foot", 4));
+  t.right_foot = rowsOf<4>(samples("right_foot", 4));
+  t.free_flyer_yaw = samples("free_flyer_yaw", 0);
+  for (const int code : reader.codes("support", n, 0, 2)) {
+    t.support.push_back(static_cast<SupportState>(code));
+  }
+
+  hsize_t m = 0;
+  const std::vector<double> footsteps = reader.doubles("footsteps", 4, &m);
+  const std::vector<int> sides = reader.codes("footstep_side", m, 1, 2);
+  for (hsize_t j = 0; j < m; ++j) {
+    Footstep step;
+    step.landing_time = footsteps[4 * j];
+    step.pose = Eigen::Vector3d(footsteps[4 * j + 1], footsteps[4 * j + 2], footsteps[4 * j + 3]);
+    step.side = static_cast<FootSide>(sides[j]);
+    t.footsteps.push_back(step);
+  }
+
+  if (!run.nameExists("mpc") || run.childObjType("mpc") != H5O_TYPE_GROUP) {
+    reader.fail("group " + run_path + "/mpc is missing");
+  }
+  const H5::Group mpc = run.openGroup("mpc");
+  const Reader log_reader(path, mpc, run_path + "/mpc");
+  hsize_t k = 0;
+  const std::vector<double> time = log_reader.times("time", &k);
+  const auto per_iteration = [&](const char* name) {
+    std::vector<double> values = log_reader.doubles(name, 0, &rows);
+    log_reader.expectRows(name, rows, k);
+    return values;
+  };
+  const std::vector<double> solve_time = per_iteration("solve_time");
+  const std::vector<double> cost = per_iteration("cost");
+  // slack: one column per constraint family, named by its `columns` attribute (with `units`
+  // and `groups` in the same order)
+  const auto split = [](const std::string& text) {
+    std::vector<std::string> items;
+    std::size_t start = 0;
+    while (start <= text.size()) {
+      const std::size_t end = std::min(text.find(", ", start), text.size());
+      items.push_back(text.substr(start, end - start));
+      start = end + 2;
+    }
+    return items;
+  };
+  if (!mpc.nameExists("slack") || mpc.childObjType("slack") != H5O_TYPE_DATASET) {
+    log_reader.fail("dataset " + run_path + "/mpc/slack is missing");
+  }
+  const H5::DataSet slack_set = mpc.openDataSet("slack");
+  const std::string where = run_path + "/mpc/slack ";
+  const std::vector<std::string> columns = split(log_reader.stringAttribute(slack_set, "columns", where));
+  const std::vector<std::string> units = split(log_reader.stringAttribute(slack_set, "units", where));
+  const std::vector<std::string> groups = split(log_reader.stringAttribute(slack_set, "groups", where));
+  if (columns.size() > static_cast<std::size_t>(kMaxConstraintFamilies) ||
+      units.size() != columns.size() || groups.size() != columns.size()) {
+    log_reader.fail("dataset " + run_path + "/mpc/slack: expected 1 to " +
+                    std::to_string(kMaxConstraintFamilies) +
+                    " columns with as many units and groups");
+  }
+  const std::size_t families = columns.size();
+  std::vector<double> slack = log_reader.doubles("slack", families, &rows);
+  log_reader.expectRows("slack", rows, k);
+  if (!(families == 1 && columns[0] == "unknown")) {
+    for (std::size_t f = 0; f < families; ++f)
+      t.constraint_families.push_back({columns[f], units[f], groups[f]});
+  }
+  const std::vector<int> relaxed = log_reader.codes("relaxed_families", k, 0, 255);
+  const std::vector<int> qp_iterations = log_reader.counts("qp_iterations", k);
+  const std::vector<int> sqp_iterations = log_reader.counts("sqp_iterations", k);
+  const std::vector<int> status = log_reader.codes("status", k, 0, 255);
+  for (hsize_t i = 0; i < k; ++i) {
+    if (std::strcmp(iterationStatusName(static_cast<IterationStatus>(status[i])), "unknown") == 0) {
+      log_reader.fail("dataset " + run_path + "/mpc/status row " + std::to_string(i) +
+                      " holds the unknown code " + std::to_string(status[i]));
+    }
+    MpcIterationLog row;
+    row.time = time[i];
+    row.solve_time = solve_time[i];
+    row.qp_iterations = qp_iterations[i];
+    row.sqp_iterations = sqp_iterations[i];
+    row.status = static_cast<IterationStatus>(status[i]);
+    row.cost = cost[i];
+    for (std::size_t f = 0; f < families; ++f) row.slack[f] = slack[i * families + f];
+    if (relaxed[i] >> families != 0) {
+      log_reader.fail("dataset " + run_path + "/mpc/relaxed_families row " + std::to_string(i) +
+                      ": expected bits of the " + std::to_string(families) +
+                      " slack columns only, got " + std::to_string(relaxed[i]));
+    }
+    row.relaxed_families = static_cast<std::uint32_t>(relaxed[i]);
+    t.mpc.push_back(row);
+  }
+  return stored;
+}
+
+}  // namespace
+
+namespace {
+
+void checkReadable(const std::string& path) {
+  std::error_code ec;
+  if (!fs::exists(path, ec)) throw InputError(path + ": cannot read the run file: no such file");
+  if (fs::is_directory(path, ec)) {
+    throw InputError(path + ": cannot read the run file: it is a directory");
+  }
+  if (!std::ifstream(path).good()) {
+    throw InputError(path + ": cannot read the run file: permission denied");
+  }
+}
+
+}  // namespace
+
+std::vector<std::string> listRuns(const std::string& path) {
+  checkReadable(path);
+  std::lock_guard<std::mutex> lock(hdf5Mutex());
+  H5::Exception::dontPrint();
+  try {
+    if (!H5::H5File::isHdf5(path)) throw InputError(path + ": not an HDF5 file");
+    H5::H5File file(path, H5F_ACC_RDONLY);
+    if (!file.nameExists("runs") || file.childObjType("runs") != H5O_TYPE_GROUP) {
+      throw InputError(path + ": no group /runs (not a run or batch dataset?)");
+    }
+    std::vector<std::string> names = runGroupNames(file.openGroup("runs"));
+    std::sort(names.begin(), names.end());
+    return names;
+  } catch (const H5::Exception& error) {
+    throw InputError(path + ": cannot read the file (" + error.getFuncName() + ": " +
+                     error.getDetailMsg() + ")");
+  }
+}
+
+StoredRun readRunDataset(const std::string& path, const std::string& run_name) {
+  checkReadable(path);
+  std::lock_guard<std::mutex> lock(hdf5Mutex());
+  H5::Exception::dontPrint();
+  try {
+    return readFile(path, run_name);
+  } catch (const H5::Exception& error) {
+    throw InputError(path + ": cannot read the run file (" + error.getFuncName() + ": " +
+                     error.getDetailMsg() + ")");
+  }
+}
+
+}  // namespace wpg::datasets

@@ -1,0 +1,307 @@
+// Study files: parsing, sweep expansion and the runs' scenarios
+// (wpg/datasets/study_design/study.hpp).
+#include "wpg/datasets/study_design/study.hpp"
+#include "wpg/datasets/input/input_limits.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <thread>
+
+#include <yaml-cpp/yaml.h>
+
+#include "wpg/datasets/input/yaml_input.hpp"
+
+namespace wpg::datasets {
+namespace {
+
+namespace fs = std::filesystem;
+using detail::Source;
+
+// A sweep key with its values, one per point of its section.
+struct KeyValues {
+  std::string key;
+  std::vector<SweptValue> values;
+};
+
+SweptValue sweptValue(const std::string& key, const YAML::Node& node) {
+  SweptValue value;
+  value.key = key;
+  YAML::Emitter out;
+  out.SetMapFormat(YAML::Flow);
+  out.SetSeqFormat(YAML::Flow);
+  out << node;
+  value.value = detail::oneLine(out.c_str());
+  if (node.IsScalar() && !detail::isQuoted(node)) {
+    try {
+      value.number = node.as<double>();
+      value.numeric = std::isfinite(value.number);
+    } catch (const YAML::Exception&) {
+      value.numeric = false;
+    }
+  }
+  return value;
+}
+
+SweptValue numberValue(const std::string& key, double number) {
+  SweptValue value;
+  value.key = key;
+  value.value = detail::formatNumber(number);
+  value.numeric = true;
+  value.number = number;
+  return value;
+}
+
+// The entries of a map in file order (readMap sorts them; the sweep's order matters).
+std::vector<std::pair<std::string, YAML::Node>> orderedEntries(const YAML::Node& node,
+                                                               const std::string& key,
+                                                               const std::string& expected,
+                                                               const Source& source) {
+  if (!node.IsDefined() || !node.IsMap()) source.fail(key, expected, node);
+  std::vector<std::pair<std::string, YAML::Node>> entries;
+  for (const auto& item : node) {
+    if (!item.first.IsScalar()) source.fail(key, "keys that are dotted paths", item.first);
+    entries.emplace_back(item.first.Scalar(), item.second);
+  }
+  if (entries.empty()) source.failWith(key, "expected at least one swept key, got an empty map");
+  return entries;
+}
+
+std::vector<KeyValues> readLists(const YAML::Node& node, const std::string& section,
+                                 const Source& source) {
+  std::vector<KeyValues> keys;
+  for (const auto& [key, list] : orderedEntries(
+           node, section, "a map of dotted scenario keys to lists of values", source)) {
+    const std::string where = detail::childKey(section, "\"" + key + "\"");
+    if (!list.IsSequence() || list.size() == 0) {
+      source.fail(where, "a non-empty list of values", list);
+    }
+    KeyValues values{key, {}};
+    for (const YAML::Node& item : list) values.values.push_back(sweptValue(key, item));
+    keys.push_back(std::move(values));
+  }
+  return keys;
+}
+
+// `random:` -> one KeyValues per key, `samples` values each, drawn sample by sample in the
+// keys' file order from one generator seeded with `seed`.
+std::vector<KeyValues> readRandom(const YAML::Node& node, const Source& source) {
+  const detail::Entries entries =
+      detail::readMap(node, "sweep.random", {"samples", "seed", "keys"},
+                      "a map with samples, seed and keys", source);
+  const int samples = detail::readInteger(detail::entry(entries, "samples"), "sweep.random.samples",
+                                          1, "a positive number of samples", source);
+  const int seed = detail::readInteger(detail::entry(entries, "seed"), "sweep.random.seed", 0,
+                                       "a non-negative integer seed", source);
+  struct Range {
+    std::string key;
+    double low, high;
+  };
+  std::vector<Range> ranges;
+  for (const auto& [key, law] : orderedEntries(detail::entry(entries, "keys"), "sweep.random.keys",
+                                               "a map of dotted scenario keys to {uniform: [low, high]}",
+                                               source)) {
+    const std::string where = detail::childKey("sweep.random.keys", "\"" + key + "\"");
+    const detail::Entries spec =
+        detail::readMap(law, where, {"uniform"}, "{uniform: [low, high]}", source);
+    const Eigen::Vector2d range = detail::readVector<2>(
+        detail::entry(spec, "uniform"), detail::childKey(where, "uniform"), "[low, high]", source);
+    if (!(range[0] <= range[1])) {
+      source.failWith(detail::childKey(where, "uniform"),
+                      "expected [low, high] with low <= high, got [" +
+                          detail::formatNumber(range[0]) + ", " + detail::formatNumber(range[1]) +
+                          "]");
+    }
+    ranges.push_back({key, range[0], range[1]});
+  }
+  std::vector<KeyValues> keys;
+  for (const Range& range : ranges) keys.push_back({range.key, {}});
+  std::uint64_t state = static_cast<std::uint64_t>(seed);
+  for (int s = 0; s < samples; ++s) {
+    for (std::size_t k = 0; k < ranges.size(); ++k) {
+      const double u = nextUniform(&state);
+      keys[k].values.push_back(
+          numberValue(ranges[k].key, ranges[k].low + (ranges[k].high - ranges[k].low) * u));
+    }
+  }
+  return keys;
+}
+
+// FNV-1a, 64 bits: a stable digest of text (not for security, for "same study?").
+std::uint64_t fnv1a(const std::string& text, std::uint64_t hash) {
+  for (const unsigned char c : text) {
+    hash ^= c;
+    hash *= 1099511628211ull;
+  }
+  return hash;
+}
+
+
+}  // namespace
+
+double nextUniform(std::uint64_t* state) {
+  // SplitMix64 (Steele, Lea, Flood 2014), then the top 53 bits as a double in [0, 1).
+  std::uint64_t z = (*state += 0x9e3779b97f4a7c15ull);
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+  z ^= z >> 31;
+  return static_cast<double>(z >> 11) * 0x1.0p-53;
+}
+
+void loadStudyScenarios(Study* study, int threads, const std::function<void(StudyRun&)>& load) {
+  const std::size_t total = study->runs.size();
+  std::vector<std::string> errors(total);
+  const auto loadRun = [&](std::size_t index) {
+    try {
+      load(study->runs[index]);
+    } catch (const std::exception& e) {
+      errors[index] = detail::oneLine(e.what());
+    }
+  };
+  const std::size_t workers =
+      std::max<std::size_t>(1, std::min<std::size_t>(threads < 1 ? 1 : static_cast<std::size_t>(threads), total));
+  std::vector<std::thread> pool;
+  for (std::size_t w = 1; w < workers; ++w) {
+    pool.emplace_back([&, w] {
+      for (std::size_t i = w; i < total; i += workers) loadRun(i);
+    });
+  }
+  for (std::size_t i = 0; i < total; i += workers) loadRun(i);
+  for (std::thread& thread : pool) thread.join();
+  std::uint64_t hash = 14695981039346656037ull;
+  for (std::size_t i = 0; i < total; ++i) {
+    if (!errors[i].empty()) throw InputError(errors[i]);
+    hash = fnv1a(study->runs[i].scenario.resolved_yaml, hash);
+  }
+  char hex[17];
+  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(hash));
+  study->fingerprint = hex;
+}
+
+Study loadStudy(const std::string& path, const BaseResolver& resolve_base,
+                const std::string& robots_dir, int threads) {
+  Study study;
+  study.source_path = path;
+  const Source source(path);
+  const YAML::Node root = detail::readYamlFile(path, "study file");
+  study.text = detail::readTextFile(path, "study file");
+  const detail::Entries top = detail::readMap(root, "", {"name", "base", "sweep"},
+                                              "a study: a map with name, base and sweep", source);
+  study.name = detail::readName(detail::entry(top, "name"), "name",
+                                "a study name (at most 32 letters, digits, _ - .)", source,
+                                kMaxStudyNameLength);
+
+  // The base scenario's text and where it came from.
+  const YAML::Node base = detail::entry(top, "base");
+  std::string base_text, base_origin;
+  if (base.IsDefined() && base.IsMap()) {
+    base_text = YAML::Dump(base) + "\n";
+    base_origin = path + ":base";
+  } else if (base.IsDefined() && base.IsScalar() && !base.Scalar().empty()) {
+    const fs::path beside = fs::path(path).parent_path() / base.Scalar();
+    std::error_code ec;
+    if (fs::path(base.Scalar()).is_relative() && fs::is_regular_file(beside, ec)) {
+      base_origin = beside.string();
+    } else {
+      try {
+        base_origin = resolve_base(base.Scalar());
+      } catch (const std::exception& e) {
+        source.failWith("base", e.what());
+      }
+    }
+    base_text = detail::readTextFile(base_origin, "base scenario");
+  } else {
+    source.fail("base", "a shipped scenario name, a scenario file or an inline scenario map", base);
+  }
+
+  // The sweep's sections, each a list of keys with one value per point of the section.
+  const detail::Entries sweep = detail::readMap(
+      detail::entry(top, "sweep"), "sweep", {"grid", "zip", "random"},
+      "a map with grid, zip and/or random", source);
+  if (sweep.empty()) source.failWith("sweep", "expected grid, zip and/or random, got an empty sweep");
+  std::vector<KeyValues> grid, zip, random;
+  if (detail::present(sweep, "grid")) grid = readLists(detail::entry(sweep, "grid"), "sweep.grid", source);
+  if (detail::present(sweep, "zip")) {
+    zip = readLists(detail::entry(sweep, "zip"), "sweep.zip", source);
+    for (const KeyValues& key : zip) {
+      if (key.values.size() != zip.front().values.size()) {
+        source.failWith("sweep.zip", "expected lists of the same length, got " +
+                                         std::to_string(zip.front().values.size()) + " for '" +
+                                         zip.front().key + "' and " +
+                                         std::to_string(key.values.size()) + " for '" + key.key + "'");
+      }
+    }
+  }
+  if (detail::present(sweep, "random")) random = readRandom(detail::entry(sweep, "random"), source);
+  if (grid.empty() && zip.empty() && random.empty()) {
+    source.failWith("sweep", "expected grid, zip and/or random with values, got an empty sweep");
+  }
+  for (const auto* section : {&grid, &zip, &random}) {
+    for (const KeyValues& key : *section) {
+      for (const std::string& known : study.keys) {
+        if (known == key.key) source.failWith("sweep", "key '" + key.key + "' is swept twice");
+      }
+      study.keys.push_back(key.key);
+    }
+  }
+
+  // Points: grid (first key slowest), then zip, then random (fastest).
+  std::size_t grid_points = 1;
+  for (const KeyValues& key : grid) grid_points *= key.values.size();
+  const std::size_t zip_points = zip.empty() ? 1 : zip.front().values.size();
+  const std::size_t random_points = random.empty() ? 1 : random.front().values.size();
+  const std::size_t total = grid_points * zip_points * random_points;
+  const std::size_t digits = std::to_string(total - 1).size();
+
+  for (std::size_t index = 0; index < total; ++index) {
+    StudyRun run;
+    run.index = index;
+    char number[32];
+    std::snprintf(number, sizeof number, "%0*zu", static_cast<int>(digits), index);
+    run.name = study.name + "_" + number;
+    std::size_t rest = index / (zip_points * random_points);
+    std::vector<SweptValue> grid_values(grid.size());
+    for (std::size_t k = grid.size(); k-- > 0;) {
+      grid_values[k] = grid[k].values[rest % grid[k].values.size()];
+      rest /= grid[k].values.size();
+    }
+    run.swept = grid_values;
+    const std::size_t zip_index = (index / random_points) % zip_points;
+    for (const KeyValues& key : zip) run.swept.push_back(key.values[zip_index]);
+    for (const KeyValues& key : random) run.swept.push_back(key.values[index % random_points]);
+
+    study.runs.push_back(std::move(run));
+  }
+
+  // Each run's scenario: the base with its values, loaded and validated as `wpg run` does.
+  loadStudyScenarios(&study, threads, [&](StudyRun& run) {
+    std::vector<std::string> overrides;
+    std::string described;
+    for (const SweptValue& value : run.swept) {
+      overrides.push_back(value.key + "=" + value.value);
+      described += (described.empty() ? "" : ", ") + value.key + "=" + value.value;
+    }
+    overrides.push_back("name=" + run.name);
+    try {
+      run.scenario = loadScenarioText(base_text, base_origin, overrides, robots_dir);
+      run.scenario.walking.validate();
+      run.scenario.request.validate();
+    } catch (const std::exception& e) {  // InputError, or invalid_argument of validate()
+      // The loader calls the swept values --set overrides; here they come from the sweep.
+      std::string message = detail::oneLine(e.what());
+      for (std::size_t at = message.find("--set '"); at != std::string::npos;
+           at = message.find("--set '", at)) {
+        message.replace(at, 5, "sweep");
+      }
+      throw InputError(path + ": run " + std::to_string(run.index) + " (" + described + "): " +
+                       message);
+    }
+  });
+  return study;
+}
+
+}  // namespace wpg::datasets

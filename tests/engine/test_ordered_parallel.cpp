@@ -1,0 +1,122 @@
+// The thread pool of the engine (wpg/engine/ordered_parallel.hpp): outcomes are delivered in job
+// order whatever order the jobs finish in, one delivery at a time, each job once; the worker
+// index names the worker; an exception of a job or of a delivery stops the hand-out and reaches
+// the caller.
+#include <atomic>
+#include <chrono>
+#include <set>
+#include <stdexcept>
+#include <thread>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "wpg/engine/ordered_parallel.hpp"
+
+using wpg::engine::runOrdered;
+
+namespace {
+
+// A job's duration that makes later jobs finish first: job j sleeps longer the smaller j is
+// within each group of four, so every worker count sees completions out of order.
+std::chrono::microseconds jobDuration(std::size_t job) {
+  return std::chrono::microseconds(200 * (4 - job % 4));
+}
+
+}  // namespace
+
+TEST(OrderedParallel, DeliversInJobOrderWhateverTheCompletionOrder) {
+  constexpr std::size_t kJobs = 40;
+  for (const int threads : {1, 2, 3, 8}) {
+    SCOPED_TRACE(threads);
+    std::mutex mutex;
+    std::vector<std::size_t> completed, delivered;
+    std::set<int> workers;
+    std::atomic<int> delivering{0};
+    bool overlapped = false;
+    runOrdered<std::size_t>(
+        kJobs, threads,
+        [&](std::size_t job, int worker) {
+          std::this_thread::sleep_for(jobDuration(job));
+          std::lock_guard<std::mutex> lock(mutex);
+          completed.push_back(job);
+          workers.insert(worker);
+          return job * job;  // the outcome travels with its job
+        },
+        [&](std::size_t job, std::size_t&& outcome) {
+          if (delivering.fetch_add(1) != 0) overlapped = true;
+          EXPECT_EQ(outcome, job * job);
+          delivered.push_back(job);
+          delivering.fetch_sub(1);
+        });
+    std::vector<std::size_t> in_order(kJobs);
+    for (std::size_t j = 0; j < kJobs; ++j) in_order[j] = j;
+    EXPECT_EQ(delivered, in_order);
+    EXPECT_FALSE(overlapped) << "two deliveries at once";
+    EXPECT_EQ(completed.size(), kJobs);
+    for (const int worker : workers) {
+      EXPECT_GE(worker, 0);
+      EXPECT_LT(worker, threads);
+    }
+    if (threads > 1) {
+      // The property is only tested when the jobs did finish out of order.
+      EXPECT_NE(completed, in_order) << "the jobs finished in order: the test proves nothing";
+      EXPECT_GT(workers.size(), 1u);
+    }
+  }
+}
+
+TEST(OrderedParallel, NoJobsCallsNothing) {
+  bool called = false;
+  runOrdered<int>(
+      0, 4, [&](std::size_t, int) { called = true; return 0; },
+      [&](std::size_t, int&&) { called = true; });
+  EXPECT_FALSE(called);
+}
+
+TEST(OrderedParallel, AJobsExceptionStopsTheHandOutAndReachesTheCaller) {
+  constexpr std::size_t kJobs = 200, kFailing = 5;
+  for (const int threads : {1, 3}) {
+    SCOPED_TRACE(threads);
+    std::atomic<std::size_t> started{0};
+    std::vector<std::size_t> delivered;
+    EXPECT_THROW(runOrdered<int>(
+                     kJobs, threads,
+                     [&](std::size_t job, int) {
+                       ++started;
+                       if (job == kFailing) throw std::runtime_error("job 5 failed");
+                       std::this_thread::sleep_for(std::chrono::microseconds(100));
+                       return 0;
+                     },
+                     [&](std::size_t job, int&&) { delivered.push_back(job); }),
+                 std::runtime_error);
+    // Nothing at or after the failed job is delivered in order past it, and the hand-out
+    // stopped: far fewer jobs started than there are.
+    for (const std::size_t job : delivered) EXPECT_LT(job, kFailing);
+    EXPECT_LT(started.load(), kJobs / 2);
+  }
+}
+
+TEST(OrderedParallel, ADeliverysExceptionStopsEverythingAndReachesTheCaller) {
+  constexpr std::size_t kJobs = 200;
+  std::atomic<std::size_t> started{0};
+  std::vector<std::size_t> delivered;
+  try {
+    runOrdered<int>(
+        kJobs, 3,
+        [&](std::size_t, int) {
+          ++started;
+          std::this_thread::sleep_for(std::chrono::microseconds(100));
+          return 0;
+        },
+        [&](std::size_t job, int&&) {
+          if (job == 3) throw std::logic_error("the writer failed at 3");
+          delivered.push_back(job);
+        });
+    ADD_FAILURE() << "no exception";
+  } catch (const std::logic_error& error) {
+    EXPECT_STREQ(error.what(), "the writer failed at 3");
+  }
+  EXPECT_EQ(delivered, (std::vector<std::size_t>{0, 1, 2}));
+  EXPECT_LT(started.load(), kJobs / 2);
+}
