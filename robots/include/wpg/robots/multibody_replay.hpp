@@ -105,10 +105,8 @@ class MultibodyReplay {
   std::unique_ptr<Simbody> simbody_;  // every joint a mobility (inverseDynamics, torques)
   std::unique_ptr<Simbody> welded_;   // the last run's constant joints welded (may be null)
   MultibodyReplayResult result_;
-  // differentiate() on transposed trajectories (nq x n in, nv x n out: one sample per column).
-  void differentiateSamples(const Eigen::MatrixXd& qt, double dt, Eigen::MatrixXd& vt,
-                            Eigen::MatrixXd& at) const;
   Eigen::MatrixXd qt_, vt_, at_;  // run(): q, velocity, acceleration, one sample per column
+  Eigen::VectorXd fd_before_, fd_after_;  // run(): the finite differences' scratch
   Eigen::VectorXd tau_;           // per-sample joint torques
 };
 
