@@ -4,27 +4,15 @@
 #include <vector>
 
 #include "wpg/convex_polygon.hpp"
+#include "wpg/support_polygon.hpp"
 
 namespace wpg {
 namespace {
 
-// Corners of a foot rectangle centred on the ankle (x, y, z, yaw), in the world frame.
-void footCorners(const Eigen::Vector4d& foot, double half_length, double half_width,
-                 std::vector<Eigen::Vector2d>* out) {
-  for (const Eigen::Vector2d& corner :
-       rectangleCorners(foot.head<2>(), foot(3), 2.0 * half_length, 2.0 * half_width))
-    out->push_back(corner);
-}
-
-// Distance outside the support polygon (<= 0 inside).
+// Distance outside the support polygon (<= 0 inside), soles of 2 half_length x 2 half_width.
 double supportViolation(const Eigen::Vector2d& p, SupportState support, const Eigen::Vector4d& left,
                         const Eigen::Vector4d& right, double half_length, double half_width) {
-  std::vector<Eigen::Vector2d> corners;
-  if (support != SupportState::kRight) footCorners(left, half_length, half_width, &corners);
-  if (support != SupportState::kLeft) footCorners(right, half_length, half_width, &corners);
-  ConvexPolygon polygon;
-  polygon.setVertices(support == SupportState::kDouble ? convexHull(corners) : corners);
-  return polygon.violation(p);
+  return supportPolygonViolation(p, support, left, right, 2.0 * half_length, 2.0 * half_width);
 }
 
 }  // namespace
