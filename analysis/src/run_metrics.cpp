@@ -75,7 +75,7 @@ void copMargin(const WalkingParameters& w, const WalkTrajectory& tr, RunMetrics*
 // The landed steps against the last footstep of the other side (eq. 14, eq. 16): checkWalk's
 // worst excursions, as margins.
 void stepMargins(const WalkingParameters& w, const WalkTrajectory& tr, RunMetrics* metrics) {
-  const WalkCheckReport report = checkWalk(w, tr);
+  const WalkCheckReport report = checkSteps(w, tr);
   const bool stepped = report.landed_steps > 0;
   metrics->step_feasibility_margin_min = stepped ? -report.feasibility_violation : kNaN;
   metrics->yaw_bound_margin_min = stepped ? w.max_step_yaw_change - report.max_step_yaw_change : kNaN;

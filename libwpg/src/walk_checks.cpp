@@ -18,11 +18,10 @@ double supportViolation(const Eigen::Vector2d& p, SupportState support, const Ei
 }  // namespace
 
 WalkCheckReport checkWalk(const WalkingParameters& w, const WalkTrajectory& tr) {
-  WalkCheckReport report;
+  WalkCheckReport report = checkSteps(w, tr);
   report.cop_sample_violation = -1.0;
   report.cop_control_violation = -1.0;
   report.cop_margin_excursion = -1.0;
-  report.feasibility_violation = -1.0;
   const std::size_t n = tr.size();
   const int per_sample = static_cast<int>(std::lround(w.sampling_period / w.control_period));
   for (std::size_t i = 0; i < n; ++i) {
@@ -52,7 +51,13 @@ WalkCheckReport checkWalk(const WalkingParameters& w, const WalkTrajectory& tr) 
       report.cop_sample_violation_time = tr.time[i];
     }
   }
+  return report;
+}
 
+WalkCheckReport checkSteps(const WalkingParameters& w, const WalkTrajectory& tr) {
+  WalkCheckReport report;
+  report.feasibility_violation = -1.0;
+  const std::size_t n = tr.size();
   // Each landed step against the last footstep of the other side (the support it left from).
   ConvexPolygon feasibility[2];
   feasibility[0].setVertices(w.feasibilityVertices(FootSide::kLeft));
