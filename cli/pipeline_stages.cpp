@@ -131,9 +131,10 @@ bool allFinite(const MultibodyValidation& v) {
 
 ReplayOutcome replayScenarioWalk(const robots::RobotModel& model,
                                  const datasets::Scenario& scenario, const WalkTrajectory& walk,
-                                 bool filter) {
+                                 bool filter, int threads) {
   robots::WalkReplaySettings settings;
   settings.filter = filter;
+  settings.threads = threads;
   settings.preview = scenario.filter_settings;
   ReplayOutcome outcome;
   const auto start = std::chrono::steady_clock::now();
@@ -163,7 +164,8 @@ void recordReplayFailure(WalkResult& result, const std::string& why) {
 
 }  // namespace
 
-ScenarioRun runScenario(const robots::RobotModel* model, const datasets::Scenario& scenario) {
+ScenarioRun runScenario(const robots::RobotModel* model, const datasets::Scenario& scenario,
+                        int replay_threads) {
   ScenarioRun run;
   const bool online = scenario.filter && model != nullptr &&
                       scenario.filter_loop.mode != DynamicFilterMode::kOffline;
@@ -180,7 +182,8 @@ ScenarioRun runScenario(const robots::RobotModel* model, const datasets::Scenari
       return run;
     }
     try {
-      run.replay = replayScenarioWalk(*model, scenario, result.trajectory, scenario.filter);
+      run.replay = replayScenarioWalk(*model, scenario, result.trajectory, scenario.filter,
+                                      replay_threads);
     } catch (const std::runtime_error& e) {
       recordReplayFailure(result, e.what());
     }

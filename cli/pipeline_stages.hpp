@@ -53,10 +53,11 @@ struct ReplayOutcome {
   double realTimeFactor() const;  // walk_duration / wall_time (analysis::realTimeFactor)
 };
 
-// replayWalk with the scenario's filter settings; `filter` false replays only.
+// replayWalk with the scenario's filter settings; `filter` false replays only. `threads`:
+// the validation replay's (WalkReplaySettings::threads; 1 on a batch's workers).
 ReplayOutcome replayScenarioWalk(const robots::RobotModel& model,
                                  const datasets::Scenario& scenario, const WalkTrajectory& walk,
-                                 bool filter);
+                                 bool filter, int threads = 1);
 
 // Stages walk + replay + filter as the scenario says (`scenario.replay`, `filter`,
 // `filter_settings.mode`): generateWalk then replayScenarioWalk (no filter, or mode offline),
@@ -70,7 +71,8 @@ struct ScenarioRun {
   WalkOutcome walk;
   std::optional<ReplayOutcome> replay;
 };
-ScenarioRun runScenario(const robots::RobotModel* model, const datasets::Scenario& scenario);
+ScenarioRun runScenario(const robots::RobotModel* model, const datasets::Scenario& scenario,
+                        int replay_threads = 1);
 
 // The least clearances of the landed footsteps to the scenario's obstacles (FCL world,
 // wpg/planning/obstacle_checks.hpp), minima over the steps [m].

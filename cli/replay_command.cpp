@@ -1,10 +1,12 @@
 // `wpg replay RUN.h5`: an existing run dataset -> its walk and scenario -> multibody replay
 // and dynamic filter -> the dataset again with the multibody fields (datasets/SCHEMA.md).
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
 #include <optional>
 #include <stdexcept>
 #include <system_error>
+#include <thread>
 
 #include "cli_common.hpp"
 #include "pipeline_stages.hpp"
@@ -76,7 +78,8 @@ int replayCommand(const ReplayOptions& options) {
   }
   ReplayOutcome replay;
   try {
-    replay = replayScenarioWalk(model, scenario, walk, scenario.filter);
+    replay = replayScenarioWalk(model, scenario, walk, scenario.filter,
+                                static_cast<int>(std::max(1u, std::thread::hardware_concurrency())));
   } catch (const std::runtime_error& e) {
     throw UsageError(options.input + ": " + e.what());
   }

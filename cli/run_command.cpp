@@ -1,9 +1,11 @@
 // `wpg run`: scenario file -> generateWalk, or the walk to a goal (-> multibody replay and
 // dynamic filter) -> HDF5 dataset (+ figure) and a short summary.
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
 #include <optional>
 #include <system_error>
+#include <thread>
 
 #include "cli_common.hpp"
 #include "pipeline_stages.hpp"
@@ -82,7 +84,9 @@ int runCommand(const RunOptions& options) {
 
   ScenarioRun run;
   try {
-    run = runScenario(model ? &*model : nullptr, scenario);
+    // One walk: the validation replay may use every core (its results do not depend on it).
+    run = runScenario(model ? &*model : nullptr, scenario,
+                      static_cast<int>(std::max(1u, std::thread::hardware_concurrency())));
   } catch (const std::invalid_argument& e) {
     throw UsageError(aboutFile(scenario_path, e.what()));
   }

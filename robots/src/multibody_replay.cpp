@@ -1,10 +1,14 @@
 // MultibodyReplay without Simbody: the loop over samples (the checks and finite differences
 // are finite_differences.cpp, the Simbody part, construction and one sample of inverse
 // dynamics, simbody_dynamics.cpp).
+#include <algorithm>
 #include <cmath>
+#include <exception>
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <thread>
+#include <vector>
 
 #include "wpg/robots/multibody_replay.hpp"
 
@@ -63,20 +67,49 @@ const MultibodyReplayResult& MultibodyReplay::runImpl(
   result_.joint_torques.resize(settings_.joint_torques ? n : 0, model_.jointCount());
   result_.zmp.resize(n, 2);
   result_.com.resize(n, 3);
-  InverseDynamicsSample sample;
-  for (Eigen::Index k = 0; k < n; ++k) {
-    sampleDynamics(simbody, qt_.col(k), vt_.col(k), at_.col(k), sample, tau_);
-    if (com_force != nullptr) {  // the ground's share: minus the wrench of the force at the CoM
-      const Eigen::Vector3d force = com_force->row(k).transpose();
-      sample.base_wrench.head<3>() -= sample.com.cross(force);
-      sample.base_wrench.tail<3>() -= force;
-      sample.zmp = zmpOfWrench(sample.base_wrench);
+  // Samples [begin, end) on one Simbody system; every sample is independent (q, v and a are
+  // known), so the rows do not depend on how the samples are shared among threads.
+  const auto replaySamples = [&](Simbody& system, Eigen::VectorXd& tau, Eigen::Index begin,
+                                 Eigen::Index end) {
+    InverseDynamicsSample sample;
+    for (Eigen::Index k = begin; k < end; ++k) {
+      sampleDynamics(system, qt_.col(k), vt_.col(k), at_.col(k), sample, tau);
+      if (com_force != nullptr) {  // the ground's share: minus the wrench of the force at the CoM
+        const Eigen::Vector3d force = com_force->row(k).transpose();
+        sample.base_wrench.head<3>() -= sample.com.cross(force);
+        sample.base_wrench.tail<3>() -= force;
+        sample.zmp = zmpOfWrench(sample.base_wrench);
+      }
+      result_.base_wrench.row(k) = sample.base_wrench.transpose();
+      if (settings_.joint_torques) result_.joint_torques.row(k) = tau.transpose();
+      result_.zmp.row(k) = sample.zmp.transpose();
+      result_.com.row(k) = sample.com.transpose();
     }
-    result_.base_wrench.row(k) = sample.base_wrench.transpose();
-    if (settings_.joint_torques) result_.joint_torques.row(k) = tau_.transpose();
-    result_.zmp.row(k) = sample.zmp.transpose();
-    result_.com.row(k) = sample.com.transpose();
+  };
+  // Short runs stay on this thread: starting one costs about what 10 samples do.
+  const Eigen::Index threads =
+      std::min<Eigen::Index>(std::max(1, settings_.threads), std::max<Eigen::Index>(1, n / 100));
+  std::vector<std::thread> pool;
+  std::vector<std::exception_ptr> errors(static_cast<std::size_t>(threads));
+  for (Eigen::Index t = 1; t < threads; ++t) {
+    Simbody& system = helperSystem(static_cast<std::size_t>(t - 1), simbody);
+    Eigen::VectorXd& tau = helper_tau_[static_cast<std::size_t>(t - 1)];
+    pool.emplace_back([&, t] {
+      try {
+        replaySamples(system, tau, n * t / threads, n * (t + 1) / threads);
+      } catch (...) {
+        errors[static_cast<std::size_t>(t)] = std::current_exception();
+      }
+    });
   }
+  try {
+    replaySamples(simbody, tau_, 0, n / threads);
+  } catch (...) {
+    errors[0] = std::current_exception();
+  }
+  for (std::thread& thread : pool) thread.join();
+  for (const std::exception_ptr& error : errors)
+    if (error) std::rethrow_exception(error);
   return result_;
 }
 

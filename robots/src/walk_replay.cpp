@@ -94,6 +94,7 @@ MultibodyValidation replayWalk(const RobotModel& model, const WalkingParameters&
   MultibodyReplaySettings replay_settings;
   replay_settings.gravity = w.gravity;
   replay_settings.joint_torques = false;
+  replay_settings.threads = settings.threads;
   MultibodyReplay replay(model, replay_settings);
 
   // The unfiltered motion: IK then its multibody ZMP, the filter's input: the momentum rate of
