@@ -246,11 +246,11 @@ bool WalkingIk::solveLegCosines(Side side, const Pose& waist, const Pose& sole,
 
 void WalkingIk::LegSolution::angles(LegAngles& q) const {
   q(0) = std::atan2(-m01, m11);
-  q(1) = std::atan2(m21, std::hypot(m01, m11));
+  q(1) = std::atan2(m21, std::sqrt(m01 * m01 + m11 * m11));
   q(2) = std::atan2(-m20, m22);
   q(3) = std::acos(c3);
   q(4) = std::atan2(-r_x, v_z) - std::atan2(b, a);
-  q(5) = std::remainder(std::acos(ratio) - std::atan2(r_z, r_y), 2.0 * M_PI);
+  q(5) = std::atan2(s[5], c[5]);  // acos(ratio) - atan2(r_z, r_y), in (-pi, pi]
 }
 
 Eigen::Vector3d WalkingIk::comForWaist(const Eigen::Vector3d& p, const Eigen::Matrix3d& waist_rotation,
@@ -467,7 +467,7 @@ WalkingIkResult WalkingIk::solveNext(const WalkingIkTarget& target, Eigen::Ref<E
 
 void WalkingIk::solveTrajectory(const WalkTrajectory& walk,
                                 const Eigen::Ref<const Eigen::MatrixXd>& com,
-                                WalkingIkTrajectory& out) const {
+                                WalkingIkTrajectory& out, bool timed) const {
   const std::size_t n = walk.size();
   if (walk.left_foot.size() != n || walk.right_foot.size() != n || walk.free_flyer_yaw.size() != n) {
     throw std::invalid_argument("walking IK: walk with inconsistent sample counts (time " +
@@ -502,10 +502,11 @@ void WalkingIk::solveTrajectory(const WalkTrajectory& walk,
     target.right_foot = walk.right_foot[i];
     target.com = com.row(row).transpose();
     target.waist_yaw = walk.free_flyer_yaw[i];
-    const auto start = std::chrono::steady_clock::now();
+    using Clock = std::chrono::steady_clock;
+    const Clock::time_point start = timed ? Clock::now() : Clock::time_point();
     const WalkingIkResult& r = out.samples[i] = solveNext(target, q, warm_start);
     out.solve_time[i] =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        timed ? std::chrono::duration<double>(Clock::now() - start).count() : 0.0;
     out.q.row(row) = q.transpose();
     if (r.status != WalkingIkStatus::kSolved) ++out.failures;
     out.max_com_error = std::max(out.max_com_error, r.com_error);

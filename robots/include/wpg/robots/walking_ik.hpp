@@ -123,9 +123,10 @@ class WalkingIk {
   WalkingIkTrajectory solveTrajectory(const WalkTrajectory& walk,
                                       const Eigen::Ref<const Eigen::MatrixXd>& com) const;
   // The same into `out`, whose buffers are reused: no allocation when they already have the
-  // walk's size (the filter's window at every NMPC iteration).
+  // walk's size (the filter's window at every NMPC iteration). Without `timed`, solve_time is
+  // 0 (two clock reads per sample spared, for a caller that times the whole).
   void solveTrajectory(const WalkTrajectory& walk, const Eigen::Ref<const Eigen::MatrixXd>& com,
-                       WalkingIkTrajectory& out) const;
+                       WalkingIkTrajectory& out, bool timed = true) const;
 
   // The warm start of solves 5 ms apart (solveTrajectory's): the CoM offset from the waist, in
   // the waist yaw frame, of the last solutions, most recent first.
