@@ -4,6 +4,7 @@
 // The agreement on every sample of the shipped walks: test_momentum_zmp_shipped_walks.cpp.
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -118,6 +119,60 @@ TEST(MomentumZmp, WeldsTheJointsConstantOverARun) {
   EXPECT_EQ(momentum.bodyCount(), 14);
   zmp = std::max(zmp, (result.zmp - expected.zmp).cwiseAbs().maxCoeff());
   EXPECT_LT(zmp, 1e-12);
+}
+
+// Joints that are not a turn about a coordinate axis of their parent's frame (rotated joint
+// frames, a tilted axis, a slider on a rotated frame): the general path, against Simbody.
+TEST(MomentumZmp, AgreesWithSimbodyOnRotatedJointFramesAndSliders) {
+  const std::string path = ::testing::TempDir() + "/wpg_momentum_zmp_robot.urdf";
+  {
+    std::ofstream out(path);
+    const char* inertia = "<inertia ixx='0.02' ixy='0.001' ixz='0' iyy='0.03' iyz='0.002' izz='0.04'/>";
+    out << "<robot name='arms'>"
+           "<link name='base'><inertial><origin xyz='0 0 0.1'/><mass value='5'/>" << inertia
+        << "</inertial></link>"
+           "<joint name='tilted' type='revolute'><parent link='base'/><child link='a'/>"
+           "<origin xyz='0.1 0 0.2' rpy='0.3 -0.2 0.5'/><axis xyz='0.6 0 0.8'/>"
+           "<limit lower='-2' upper='2' effort='10' velocity='5'/></joint>"
+           "<link name='a'><inertial><origin xyz='0.05 0.02 0'/><mass value='1.5'/>" << inertia
+        << "</inertial></link>"
+           "<joint name='pitch' type='continuous'><parent link='a'/><child link='b'/>"
+           "<origin xyz='0 0.1 0' rpy='0 0 0'/><axis xyz='0 1 0'/></joint>"
+           "<link name='b'><inertial><origin xyz='0 0 -0.1'/><mass value='1'/>" << inertia
+        << "</inertial></link>"
+           "<joint name='slide' type='prismatic'><parent link='b'/><child link='c'/>"
+           "<origin xyz='0 0 -0.2' rpy='0 0.4 0'/><axis xyz='1 0 0'/>"
+           "<limit lower='-1' upper='1' effort='10' velocity='1'/></joint>"
+           "<link name='c'><inertial><origin xyz='0.02 0 0'/><mass value='0.7'/>" << inertia
+        << "</inertial></link>"
+           "<joint name='roll' type='revolute'><parent link='base'/><child link='d'/>"
+           "<origin xyz='0 -0.1 0' rpy='0.7 0 0'/><axis xyz='1 0 0'/>"
+           "<limit lower='-2' upper='2' effort='10' velocity='5'/></joint>"
+           "<link name='d'><inertial><origin xyz='0 0 -0.05'/><mass value='0.8'/>" << inertia
+        << "</inertial></link></robot>";
+  }
+  const RobotModel model(path);
+  ASSERT_EQ(model.jointCount(), 4);
+  const int n = 61;
+  Eigen::MatrixXd q(n, model.nq());
+  for (int k = 0; k < n; ++k) {
+    const double t = kDt * k;
+    Eigen::VectorXd qk = model.neutralConfiguration();
+    RobotModel::setFreeFlyer(qk, Eigen::Vector3d(0.2 * t, 0.1 * t * t, 0.8 + 0.05 * std::sin(4 * t)),
+                             Eigen::Quaterniond(Eigen::AngleAxisd(
+                                 0.5 + 2.0 * t, Eigen::Vector3d(0.3, 0.5, 0.8).normalized())));
+    for (int j = 0; j < 4; ++j) qk(7 + j) = 0.4 * std::sin((3.0 + j) * t + j);
+    q.row(k) = qk.transpose();
+  }
+  MultibodyReplay simbody(model);
+  MomentumZmp momentum(model, kGravity);
+  const auto expected = simbody.run(q, kDt);
+  const auto& result = momentum.run(q, kDt);
+  EXPECT_EQ(momentum.bodyCount(), 5);
+  EXPECT_LT((result.base_wrench - expected.base_wrench).cwiseAbs().maxCoeff(), 1e-10);
+  EXPECT_LT((result.zmp - expected.zmp).cwiseAbs().maxCoeff(), 1e-12);
+  EXPECT_LT((result.com - expected.com).cwiseAbs().maxCoeff(), 1e-14);
+  EXPECT_GT((expected.zmp - expected.com.leftCols<2>()).cwiseAbs().maxCoeff(), 0.01);
 }
 
 // Standing still: the ZMP is the CoM's projection, the force the weight.
