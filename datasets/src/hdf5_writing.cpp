@@ -48,25 +48,36 @@ libdeflate_compressor* threadCompressor() {
   return compressor.get();
 }
 
-// The stored form of one chunk: HDF5's shuffle filter (the bytes of the same significance
+// The stored form of one chunk of `size` bytes whose first `valid` bytes are `bytes` (the rest
+// of an edge chunk is zero): HDF5's shuffle filter (the bytes of the same significance
 // together), then its deflate filter's format, a zlib stream (libdeflate writes it faster than
-// zlib; any inflate reads it: HDF5, h5py).
-std::vector<unsigned char> compressChunk(const unsigned char* bytes, std::size_t size,
-                                         std::size_t element_size) {
-  std::vector<unsigned char> shuffled(size);
-  const std::size_t elements = size / element_size;
-  for (std::size_t b = 0; b < element_size; ++b) {
-    unsigned char* out = shuffled.data() + b * elements;
-    const unsigned char* in = bytes + b;
-    for (std::size_t i = 0; i < elements; ++i) out[i] = in[i * element_size];
-  }
+// zlib; any inflate reads it: HDF5, h5py). The buffers are not zero-filled first (their every
+// byte is written).
+std::vector<unsigned char> compressChunk(const unsigned char* bytes, std::size_t valid,
+                                         std::size_t size, std::size_t element_size) {
+  thread_local std::unique_ptr<unsigned char[]> shuffled, compressed;
+  thread_local std::size_t shuffled_capacity = 0, compressed_capacity = 0;
   libdeflate_compressor* compressor = threadCompressor();
-  std::vector<unsigned char> compressed(libdeflate_zlib_compress_bound(compressor, size));
-  const std::size_t compressed_size = libdeflate_zlib_compress(
-      compressor, shuffled.data(), size, compressed.data(), compressed.size());
+  const std::size_t bound = libdeflate_zlib_compress_bound(compressor, size);
+  if (shuffled_capacity < size) {
+    shuffled.reset(new unsigned char[size]);
+    shuffled_capacity = size;
+  }
+  if (compressed_capacity < bound) {
+    compressed.reset(new unsigned char[bound]);
+    compressed_capacity = bound;
+  }
+  const std::size_t elements = size / element_size, valid_elements = valid / element_size;
+  for (std::size_t b = 0; b < element_size; ++b) {
+    unsigned char* out = shuffled.get() + b * elements;
+    const unsigned char* in = bytes + b;
+    for (std::size_t i = 0; i < valid_elements; ++i) out[i] = in[i * element_size];
+    std::fill(out + valid_elements, out + elements, static_cast<unsigned char>(0));
+  }
+  const std::size_t compressed_size =
+      libdeflate_zlib_compress(compressor, shuffled.get(), size, compressed.get(), bound);
   if (compressed_size == 0) throw std::runtime_error("libdeflate could not compress a chunk");
-  compressed.resize(compressed_size);
-  return compressed;
+  return std::vector<unsigned char>(compressed.get(), compressed.get() + compressed_size);
 }
 
 // The chunks of a dataset of `rows` rows of `row_bytes` bytes, `chunk_rows` rows per chunk,
@@ -76,12 +87,10 @@ RecordedDataset compressDataset(const void* data, hsize_t rows, hsize_t columns,
   RecordedDataset recorded{rows, columns, chunk_rows, element_size, {}};
   const hsize_t row_bytes = std::max<hsize_t>(1, columns) * element_size;
   const auto* bytes = static_cast<const unsigned char*>(data);
-  std::vector<unsigned char> chunk;
   for (hsize_t first = 0; first < rows; first += chunk_rows) {
     const hsize_t count = std::min(chunk_rows, rows - first);
-    chunk.assign(bytes + first * row_bytes, bytes + (first + count) * row_bytes);
-    chunk.resize(chunk_rows * row_bytes, 0);
-    recorded.chunks.push_back(compressChunk(chunk.data(), chunk.size(), element_size));
+    recorded.chunks.push_back(compressChunk(bytes + first * row_bytes, count * row_bytes,
+                                            chunk_rows * row_bytes, element_size));
   }
   return recorded;
 }
