@@ -28,11 +28,11 @@ done
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="$(realpath -m -- "${WPG_BUILD_DIR:-$repo/build}")"
 
-# ../shared/TOOLCHAIN.md: Eigen (libwpg), HDF5 + yaml-cpp (datasets), CLI11 (cli), FCL and
+# ../shared/TOOLCHAIN.md: Eigen (libwpg), HDF5 + yaml-cpp + libdeflate (datasets), CLI11 (cli), FCL and
 # OMPL with the Boost libraries its CMake configuration names (planning), Simbody + urdfdom (robots), GoogleTest + Google Benchmark (tests), h5py +
 # matplotlib + PyYAML (analysis figures, run by Debian's /usr/bin/python3; PyYAML reads the
 # scenario stored in the dataset: obstacles, command, foot size).
-packages=(build-essential cmake libeigen3-dev libhdf5-dev libcli11-dev libgtest-dev
+packages=(build-essential cmake libeigen3-dev libhdf5-dev libdeflate-dev libcli11-dev libgtest-dev
           libbenchmark-dev libyaml-cpp-dev libfcl-dev libsimbody-dev liburdfdom-dev
           libompl-dev libboost-serialization-dev libboost-filesystem-dev libboost-system-dev
           python3-h5py python3-matplotlib python3-yaml)

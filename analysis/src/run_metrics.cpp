@@ -9,7 +9,7 @@
 
 #include "wpg/analysis/run_summary.hpp"
 #include "wpg/analysis/sample_statistics.hpp"
-#include "wpg/convex_polygon.hpp"
+#include "wpg/support_polygon.hpp"
 #include "wpg/obstacles.hpp"
 #include "wpg/walk_checks.hpp"
 
@@ -17,25 +17,6 @@ namespace wpg::analysis {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-// The support polygon of a sample without security margins: the sole in single support, the
-// hull of both soles in double support (the polygon of checkWalk's cop_control_violation).
-ConvexPolygon supportPolygon(const WalkingParameters& w, SupportState support,
-                             const Eigen::Vector4d& left, const Eigen::Vector4d& right) {
-  std::vector<Eigen::Vector2d> corners;
-  for (const Eigen::Vector4d* foot : {&left, &right}) {
-    const bool on_ground = foot == &left ? support != SupportState::kRight
-                                         : support != SupportState::kLeft;
-    if (!on_ground) continue;
-    for (const Eigen::Vector2d& corner :
-         rectangleCorners(foot->head<2>(), (*foot)(3), w.foot_length, w.foot_width)) {
-      corners.push_back(corner);
-    }
-  }
-  ConvexPolygon polygon;
-  polygon.setVertices(support == SupportState::kDouble ? convexHull(corners) : corners);
-  return polygon;
-}
 
 // Velocity tracking over one gait cycle W (two steps): the CoM's mean velocity over the last W,
 // (c(t) - c(t - W)) / W, against the mean over the same samples of the reference turned into
@@ -78,8 +59,10 @@ void copMargin(const WalkingParameters& w, const WalkTrajectory& tr, RunMetrics*
   double sum = 0.0;
   for (std::size_t i = 0; i < tr.size(); ++i) {
     // violation() is minus the distance to the nearest edge inside a convex polygon
-    const double margin =
-        -supportPolygon(w, tr.support[i], tr.left_foot[i], tr.right_foot[i]).violation(tr.cop[i]);
+    // The support polygon without security margins: the sole in single support, the hull of
+    // both soles in double support (the polygon of checkWalk's cop_control_violation).
+    const double margin = -supportPolygonViolation(tr.cop[i], tr.support[i], tr.left_foot[i],
+                                                   tr.right_foot[i], w.foot_length, w.foot_width);
     margins.push_back(margin);
     sum += margin;
   }
@@ -92,7 +75,7 @@ void copMargin(const WalkingParameters& w, const WalkTrajectory& tr, RunMetrics*
 // The landed steps against the last footstep of the other side (eq. 14, eq. 16): checkWalk's
 // worst excursions, as margins.
 void stepMargins(const WalkingParameters& w, const WalkTrajectory& tr, RunMetrics* metrics) {
-  const WalkCheckReport report = checkWalk(w, tr);
+  const WalkCheckReport report = checkSteps(w, tr);
   const bool stepped = report.landed_steps > 0;
   metrics->step_feasibility_margin_min = stepped ? -report.feasibility_violation : kNaN;
   metrics->yaw_bound_margin_min = stepped ? w.max_step_yaw_change - report.max_step_yaw_change : kNaN;

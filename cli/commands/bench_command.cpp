@@ -141,17 +141,18 @@ void printTable(std::ostream& out, const std::vector<BenchRow>& rows) {
   });
   out << "(stages: " << kStageNames[0] << " = the generator's step, with the NMPC in these ticks, "
          "the interpolation and the preview of the plan; IK = the walking IK over the filter's "
-         "preview window and of the corrected CoM; multibody ZMP = Simbody inverse dynamics over "
-         "the window; filter = the error, one preview-control step, the WPG re-initialisation. "
+         "preview window and of the corrected CoM; multibody ZMP = the momentum rate of the window's "
+         "kinematics (Simbody's inverse dynamics within 1e-9 m); filter = the error, one preview-control step, the WPG re-initialisation. "
          "Real-time factor: walk duration / wall time of the whole loop, including the "
-         "validation replay after it)\n";
+         "validation replay after it, Simbody's inverse dynamics)\n";
   out << "machine   this run: " << cpuModel() << ", " << operatingSystem()
       << ", one thread\n";
   out << "          paper: Intel Core2 Duo E7500, 2.8 GHz, 3 MB cache, one core, Ubuntu 10.04 LTS "
          "(HRP-2's CPU board)\n";
   out << "differs   the paper times the complete control architecture on the robot (its one "
-         "tick over 5 ms came from the stabilizer); here no stabilizer nor robot, Simbody inverse "
-         "dynamics and an analytic leg IK, the filter's window replayed whole at each NMPC tick, "
+         "tick over 5 ms came from the stabilizer); here no stabilizer nor robot, the multibody "
+         "ZMP from the momentum rate and an analytic leg IK, the filter's window replayed whole "
+         "at each NMPC tick, "
          "one process on a machine other jobs may share\n";
 }
 

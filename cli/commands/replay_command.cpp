@@ -1,10 +1,12 @@
 // `wpg replay RUN.h5`: an existing run dataset -> its walk and scenario -> the engine's replay
 // on the multibody model with the dynamic filter -> the dataset again with the multibody fields
 // (datasets/SCHEMA.md).
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
 #include <stdexcept>
 #include <system_error>
+#include <thread>
 
 #include "command_options.hpp"
 #include "exit_codes.hpp"
@@ -42,7 +44,8 @@ int replayCommand(const ReplayOptions& options) {
   }
 
   // A stored walk the replay cannot follow is bad input: there is nothing to write.
-  const engine::RunResult result = engine::replayStoredRun(run, model);
+  const engine::RunResult result = engine::replayStoredRun(
+      run, model, static_cast<int>(std::max(1u, std::thread::hardware_concurrency())));
 
   std::error_code ec;
   if (dataset_path.has_parent_path()) {

@@ -1,9 +1,11 @@
 // `wpg run`: scenario file -> the engine's run (the walk, or the walk to a goal, -> multibody
 // replay and dynamic filter) -> HDF5 dataset (+ figure) and a short summary.
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
 #include <stdexcept>
 #include <system_error>
+#include <thread>
 
 #include "command_options.hpp"
 #include "error_messages.hpp"
@@ -69,7 +71,10 @@ int runCommand(const RunOptions& options) {
   if (options.plot) datasets::checkOutputPath(figure_path.string(), datasets::OutputKind::kPng, inputs);
   datasets::checkWritableParent(dataset_path.string());
 
-  const engine::RunResult result = engine::runScenario(scenario, {robotsDirectory(), &models});
+  // One walk: its validation replay may use every core (the results do not depend on it).
+  const engine::RunResult result = engine::runScenario(
+      scenario, {robotsDirectory(), &models,
+                 static_cast<int>(std::max(1u, std::thread::hardware_concurrency()))});
   const WalkResult& walk = result.walk.result;
 
   std::error_code ec;

@@ -4,37 +4,24 @@
 #include <vector>
 
 #include "wpg/convex_polygon.hpp"
+#include "wpg/support_polygon.hpp"
 
 namespace wpg {
 namespace {
 
-// Corners of a foot rectangle centred on the ankle (x, y, z, yaw), in the world frame.
-void footCorners(const Eigen::Vector4d& foot, double half_length, double half_width,
-                 std::vector<Eigen::Vector2d>* out) {
-  for (const Eigen::Vector2d& corner :
-       rectangleCorners(foot.head<2>(), foot(3), 2.0 * half_length, 2.0 * half_width))
-    out->push_back(corner);
-}
-
-// Distance outside the support polygon (<= 0 inside).
+// Distance outside the support polygon (<= 0 inside), soles of 2 half_length x 2 half_width.
 double supportViolation(const Eigen::Vector2d& p, SupportState support, const Eigen::Vector4d& left,
                         const Eigen::Vector4d& right, double half_length, double half_width) {
-  std::vector<Eigen::Vector2d> corners;
-  if (support != SupportState::kRight) footCorners(left, half_length, half_width, &corners);
-  if (support != SupportState::kLeft) footCorners(right, half_length, half_width, &corners);
-  ConvexPolygon polygon;
-  polygon.setVertices(support == SupportState::kDouble ? convexHull(corners) : corners);
-  return polygon.violation(p);
+  return supportPolygonViolation(p, support, left, right, 2.0 * half_length, 2.0 * half_width);
 }
 
 }  // namespace
 
 WalkCheckReport checkWalk(const WalkingParameters& w, const WalkTrajectory& tr) {
-  WalkCheckReport report;
+  WalkCheckReport report = checkSteps(w, tr);
   report.cop_sample_violation = -1.0;
   report.cop_control_violation = -1.0;
   report.cop_margin_excursion = -1.0;
-  report.feasibility_violation = -1.0;
   const std::size_t n = tr.size();
   const int per_sample = static_cast<int>(std::lround(w.sampling_period / w.control_period));
   for (std::size_t i = 0; i < n; ++i) {
@@ -64,7 +51,13 @@ WalkCheckReport checkWalk(const WalkingParameters& w, const WalkTrajectory& tr) 
       report.cop_sample_violation_time = tr.time[i];
     }
   }
+  return report;
+}
 
+WalkCheckReport checkSteps(const WalkingParameters& w, const WalkTrajectory& tr) {
+  WalkCheckReport report;
+  report.feasibility_violation = -1.0;
+  const std::size_t n = tr.size();
   // Each landed step against the last footstep of the other side (the support it left from).
   ConvexPolygon feasibility[2];
   feasibility[0].setVertices(w.feasibilityVertices(FootSide::kLeft));

@@ -12,6 +12,7 @@
 
 #include "wpg/dynamic_filter.hpp"
 #include "wpg/online_walking_generator.hpp"
+#include "wpg/robots/momentum_zmp.hpp"
 #include "wpg/robots/multibody_replay.hpp"
 #include "wpg/robots/walking_ik.hpp"
 #include "zmp_error_statistics.hpp"
@@ -47,7 +48,7 @@ class FilterLoop : public ControlLoopObserver {
         ik_(model),
         controller_(w.control_period, w.com_height, w.gravity, settings.preview),
         filter_(controller_),
-        replay_(model, zmpReplaySettings(w)),
+        momentum_(model, w.gravity),
         sub_samples_(static_cast<int>(std::lround(w.sampling_period / w.control_period))),
         // The error at offsets 0 .. sub_samples - 1 of the window and NL rows of preview after
         // each; one more row so that the last one used is not the window's extrapolated end.
@@ -55,11 +56,12 @@ class FilterLoop : public ControlLoopObserver {
         q_(model.nq()) {
     window_error_.resize(window_rows_, 2);
     window_zmp_.resize(window_rows_, 2);
+    window_com_.resize(window_rows_, 3);
   }
 
   // Room for a walk of `samples` samples (no allocation per control period for the records).
   void reserve(std::size_t samples) {
-    q_rows_.reserve(samples);
+    q_columns_.resize(model_.nq(), static_cast<Eigen::Index>(samples));
     com_filtered_.reserve(samples);
     zmp_before_.reserve(samples);
     stages_.reserve(samples);
@@ -131,7 +133,7 @@ class FilterLoop : public ControlLoopObserver {
     out.zmp_multibody.resize(n, 2);
     for (Eigen::Index i = 0; i < n; ++i) {
       const auto k = static_cast<std::size_t>(i);
-      out.q.row(i) = q_rows_[k].transpose();
+      out.q.row(i) = q_columns_.col(i).transpose();
       out.com_filtered.row(i) = com_filtered_[k].transpose();
       out.zmp_multibody.row(i) = zmp_before_[k].transpose();
     }
@@ -202,12 +204,16 @@ class FilterLoop : public ControlLoopObserver {
     Clock::time_point now = Clock::now();
     stage[kWpg] += seconds(mark, now);  // the preview is the WPG's interpolation
     mark = now;
-    const WalkingIkTrajectory ik = ik_.solveTrajectory(window_);
+    for (Eigen::Index i = 0; i < window_rows_; ++i)
+      window_com_.row(i) = window_.com[static_cast<std::size_t>(i)].transpose();
+    ik_.solveTrajectory(window_, window_com_, window_ik_, /*timed=*/false);  // timed as a stage
     now = Clock::now();
     stage[kIk] += seconds(mark, now);
     mark = now;
-    // Pushes are not previewed (nobody knows them in advance): the reference motion's ZMP.
-    const Eigen::MatrixXd& zmp = replay_.run(ik.q, w_.control_period).zmp;
+    // Pushes are not previewed (nobody knows them in advance): the reference motion's ZMP,
+    // from the momentum rate of its kinematics (Simbody's inverse dynamics within 1e-9 m,
+    // momentum_zmp.hpp), which allocates nothing here.
+    const Eigen::MatrixXd& zmp = momentum_.run(window_ik_.q, w_.control_period).zmp;
     now = Clock::now();
     stage[kZmp] += seconds(mark, now);
     mark = now;
@@ -230,7 +236,8 @@ class FilterLoop : public ControlLoopObserver {
     target.right_foot = right;
     target.com = com;
     target.waist_yaw = yaw;
-    const WalkingIkResult r = ik_.solve(target, q_);
+    // Newton from the previous ticks' solutions (5 ms apart, as solveTrajectory's samples).
+    const WalkingIkResult r = ik_.solveNext(target, q_, output_warm_start_);
     if (r.status != WalkingIkStatus::kSolved) ++ik_failures_;
     max_com_error_ = std::max(max_com_error_, r.com_error);
     max_foot_error_ = std::max(max_foot_error_, r.foot_position_error);
@@ -239,7 +246,10 @@ class FilterLoop : public ControlLoopObserver {
       limit_violations_ |= r.limit_violations;
       max_limit_violation_ = std::max(max_limit_violation_, r.max_limit_violation);
     }
-    q_rows_.push_back(q_);
+    const Eigen::Index column = static_cast<Eigen::Index>(com_filtered_.size());
+    if (column >= q_columns_.cols())  // more samples than reserved (never for a whole walk)
+      q_columns_.conservativeResize(Eigen::NoChange, 2 * column + 1);
+    q_columns_.col(column) = q_;
   }
 
   const RobotModel& model_;
@@ -248,19 +258,22 @@ class FilterLoop : public ControlLoopObserver {
   WalkingIk ik_;
   PreviewController controller_;
   OnlineDynamicFilter filter_;
-  MultibodyReplay replay_;
+  MomentumZmp momentum_;  // the window's multibody ZMP
   int sub_samples_;
   Eigen::Index window_rows_;
   Eigen::VectorXd q_;
 
   WalkTrajectory preview_, window_;
+  Eigen::MatrixXd window_com_;             // window_.com as a matrix, for the IK
+  WalkingIkTrajectory window_ik_;          // buffers reused at every NMPC iteration
+  WalkingIk::WarmStart output_warm_start_;  // the IK of the corrected motion, tick after tick
   Eigen::MatrixXd window_error_, window_zmp_;
   Eigen::Index window_offset_ = std::numeric_limits<int>::max();
   Clock::time_point step_start_;
   double reinit_time_ = 0.0;
 
   // Per sample (the output) and per control period (the timings).
-  std::vector<Eigen::VectorXd> q_rows_;
+  Eigen::MatrixXd q_columns_;  // the configurations sent, one per column (reserved)
   std::vector<Eigen::Vector3d> com_filtered_;
   std::vector<Eigen::Vector2d> zmp_before_;
   std::vector<std::array<double, 4>> stages_;

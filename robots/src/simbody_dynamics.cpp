@@ -191,6 +191,7 @@ MultibodyReplay::MultibodyReplay(const RobotModel& model, MultibodyReplaySetting
   if (!(settings_.gravity >= 0.0) || !std::isfinite(settings_.gravity)) {
     throw std::invalid_argument("multibody replay: gravity must be finite and >= 0");
   }
+  if (settings_.threads < 1) throw std::invalid_argument("multibody replay: threads must be >= 1");
   simbody_ = std::make_unique<Simbody>(model_, settings_.gravity,
                                        std::vector<bool>(model_.jointCount(), false),
                                        Eigen::VectorXd::Zero(model_.jointCount()));
@@ -216,6 +217,17 @@ MultibodyReplay::Simbody& MultibodyReplay::simbodyFor(const Eigen::Ref<const Eig
   }
   if (!same) welded_ = std::make_unique<Simbody>(model_, settings_.gravity, constant, values);
   return *welded_;
+}
+
+MultibodyReplay::Simbody& MultibodyReplay::helperSystem(std::size_t index, const Simbody& like) {
+  if (helpers_.size() <= index) {
+    helpers_.resize(index + 1);
+    helper_tau_.resize(index + 1, Eigen::VectorXd(model_.jointCount()));
+  }
+  std::unique_ptr<Simbody>& helper = helpers_[index];
+  if (!helper || helper->welded != like.welded || helper->weld_values != like.weld_values)
+    helper = std::make_unique<Simbody>(model_, settings_.gravity, like.welded, like.weld_values);
+  return *helper;
 }
 
 MultibodyReplay::~MultibodyReplay() = default;

@@ -163,6 +163,17 @@ Pose WalkingIk::legForwardKinematics(Side side, const Pose& waist, const LegAngl
 }
 
 bool WalkingIk::solveLeg(Side side, const Pose& waist, const Pose& sole, LegAngles& q) const {
+  LegSolution solution;
+  const bool reachable = solveLegCosines(side, waist, sole, solution);
+  solution.angles(q);
+  return reachable;
+}
+
+// The closed form of the leg IK without a trigonometric function: each angle's cosine and
+// sine from the vectors and matrix entries whose atan2 (or acos) it is, by the sum formulas;
+// the angles themselves (LegSolution::angles) only for the configuration solve() returns.
+bool WalkingIk::solveLegCosines(Side side, const Pose& waist, const Pose& sole,
+                                LegSolution& out) const {
   const Leg& leg = legs_[side];
   const double l1 = leg.thigh, l2 = leg.shank, d = leg.lateral;
   bool reachable = true;
@@ -172,16 +183,22 @@ bool WalkingIk::solveLeg(Side side, const Pose& waist, const Pose& sole, LegAngl
   // r = -Rx(-q5) Ry(-s) a, where a = ankle in the hip-roll frame = (x, d, z) (the lateral
   // offsets lie along the parallel pitch axes), so (Rx(q5) r)_y = -d fixes the ankle roll.
   const Eigen::Vector3d r = sole.rotation.transpose() * (hip - ankle);
-  const double rho = std::hypot(r.y(), r.z());
+  out.r_x = r.x();
+  out.r_y = r.y();
+  out.r_z = r.z();
+  const double rho = std::sqrt(r.y() * r.y() + r.z() * r.z());
   double ratio = rho > 0.0 ? -d / rho : 0.0;
   if (ratio > 1.0 || ratio < -1.0) {
     reachable = false;
     ratio = std::clamp(ratio, -1.0, 1.0);
   }
-  q(5) = std::acos(ratio) - std::atan2(r.z(), r.y());
-  q(5) = std::remainder(q(5), 2.0 * M_PI);
-  const double c5 = std::cos(q(5)), s5 = std::sin(q(5));
+  out.ratio = ratio;
+  // q5 = acos(ratio) - atan2(r_z, r_y)
+  const double c_phi = rho > 0.0 ? r.y() / rho : 1.0, s_phi = rho > 0.0 ? r.z() / rho : 0.0;
+  const double s_psi = std::sqrt(1.0 - ratio * ratio);
+  const double c5 = ratio * c_phi + s_psi * s_phi, s5 = s_psi * c_phi - ratio * s_phi;
   const double vz = s5 * r.y() + c5 * r.z();  // (Rx(q5) r)_z; (Rx(q5) r)_x = r_x
+  out.v_z = vz;
   // knee: planar two-link in the pitch plane, distance ell between hip and ankle
   const double ell2 = r.x() * r.x() + vz * vz;
   double c3 = (ell2 - l1 * l1 - l2 * l2) / (2.0 * l1 * l2);
@@ -189,23 +206,55 @@ bool WalkingIk::solveLeg(Side side, const Pose& waist, const Pose& sole, LegAngl
     reachable = false;
     c3 = std::clamp(c3, -1.0, 1.0);
   }
-  q(3) = std::acos(c3);  // knee bent forward (>= 0)
-  // ankle pitch: (vz, -r_x) is (l1 cos q3 + l2, l1 sin q3) rotated by q4
-  const double a = l1 * c3 + l2, b = l1 * std::sin(q(3));
-  q(4) = std::atan2(-r.x(), vz) - std::atan2(b, a);
+  out.c3 = c3;
+  const double s3 = std::sqrt(1.0 - c3 * c3);  // knee bent forward: q3 = acos(c3) >= 0
+  // ankle pitch q4 = atan2(-r_x, vz) - atan2(b, a): (vz, -r_x) is (l1 cos q3 + l2, l1 sin q3)
+  // rotated by q4
+  const double a = l1 * c3 + l2, b = l1 * s3;
+  out.a = a;
+  out.b = b;
+  const double n1 = std::sqrt(r.x() * r.x() + vz * vz), n2 = std::sqrt(a * a + b * b);
+  const double c_1 = n1 > 0.0 ? vz / n1 : 1.0, s_1 = n1 > 0.0 ? -r.x() / n1 : 0.0;
+  const double c_2 = n2 > 0.0 ? a / n2 : 1.0, s_2 = n2 > 0.0 ? b / n2 : 0.0;
+  const double c4 = c_1 * c_2 + s_1 * s_2, s4 = s_1 * c_2 - c_1 * s_2;
   // hip: Rz(q0) Rx(q1) Ry(q2) = Rw' Rf Rx(-q5) Ry(-(q3 + q4))
   Eigen::Matrix3d m = waist.rotation.transpose() * sole.rotation;
   rotateAboutAxis(m, 0, c5, -s5);  // Rx(-q5)
-  const double pitch = q(3) + q(4);
-  rotateAboutAxis(m, 1, std::cos(pitch), -std::sin(pitch));  // Ry(-(q3 + q4))
-  q(0) = std::atan2(-m(0, 1), m(1, 1));
-  q(1) = std::atan2(m(2, 1), std::hypot(m(0, 1), m(1, 1)));
-  q(2) = std::atan2(-m(2, 0), m(2, 2));
+  rotateAboutAxis(m, 1, c3 * c4 - s3 * s4, -(s3 * c4 + c3 * s4));  // Ry(-(q3 + q4))
+  out.m01 = m(0, 1);
+  out.m11 = m(1, 1);
+  out.m21 = m(2, 1);
+  out.m20 = m(2, 0);
+  out.m22 = m(2, 2);
+  const double h = std::sqrt(m(0, 1) * m(0, 1) + m(1, 1) * m(1, 1));
+  const double n_1 = std::sqrt(m(2, 1) * m(2, 1) + h * h);
+  const double n_2 = std::sqrt(m(2, 0) * m(2, 0) + m(2, 2) * m(2, 2));
+  out.c[0] = h > 0.0 ? m(1, 1) / h : 1.0;  // q0 = atan2(-m01, m11)
+  out.s[0] = h > 0.0 ? -m(0, 1) / h : 0.0;
+  out.c[1] = n_1 > 0.0 ? h / n_1 : 1.0;  // q1 = atan2(m21, h)
+  out.s[1] = n_1 > 0.0 ? m(2, 1) / n_1 : 0.0;
+  out.c[2] = n_2 > 0.0 ? m(2, 2) / n_2 : 1.0;  // q2 = atan2(-m20, m22)
+  out.s[2] = n_2 > 0.0 ? -m(2, 0) / n_2 : 0.0;
+  out.c[3] = c3;
+  out.s[3] = s3;
+  out.c[4] = c4;
+  out.s[4] = s4;
+  out.c[5] = c5;
+  out.s[5] = s5;
   return reachable;
 }
 
+void WalkingIk::LegSolution::angles(LegAngles& q) const {
+  q(0) = std::atan2(-m01, m11);
+  q(1) = std::atan2(m21, std::sqrt(m01 * m01 + m11 * m11));
+  q(2) = std::atan2(-m20, m22);
+  q(3) = std::acos(c3);
+  q(4) = std::atan2(-r_x, v_z) - std::atan2(b, a);
+  q(5) = std::atan2(s[5], c[5]);  // acos(ratio) - atan2(r_z, r_y), in (-pi, pi]
+}
+
 Eigen::Vector3d WalkingIk::comForWaist(const Eigen::Vector3d& p, const Eigen::Matrix3d& waist_rotation,
-                                       const Pose (&soles)[2], LegAngles (&angles)[2],
+                                       const Pose (&soles)[2], LegSolution (&legs)[2],
                                        bool& reachable, Eigen::Matrix3d* jacobian,
                                        Pose* reached_soles) const {
   const Pose waist{waist_rotation, p};
@@ -216,15 +265,15 @@ Eigen::Vector3d WalkingIk::comForWaist(const Eigen::Vector3d& p, const Eigen::Ma
   Eigen::Matrix3d leg_terms = Eigen::Matrix3d::Zero();
   for (int side = 0; side < 2; ++side) {
     const Leg& leg = legs_[side];
-    reachable &= solveLeg(static_cast<Side>(side), waist, soles[side], angles[side]);
+    const LegSolution& solution = legs[side];
+    reachable &= solveLegCosines(static_cast<Side>(side), waist, soles[side], legs[side]);
     Pose pose = waist;
     Eigen::Vector3d joint_origin[6], joint_axis[6], body_com[6];
     for (int i = 0; i < 6; ++i) {
       pose.position += pose.rotation * leg.origin[i];
       joint_origin[i] = pose.position;
       joint_axis[i] = pose.rotation.col(leg.axis[i]);  // the rotation about it keeps it
-      rotateAboutAxis(pose.rotation, leg.axis[i], std::cos(angles[side](i)),
-                      std::sin(angles[side](i)));
+      rotateAboutAxis(pose.rotation, leg.axis[i], solution.c[i], solution.s[i]);
       body_com[i] = pose * leg_mass_[side][i].com;
       moment += leg_mass_[side][i].mass * body_com[i];
     }
@@ -266,9 +315,9 @@ Eigen::Vector3d WalkingIk::comAtWaist(const WalkingIkTarget& target,
                                       const Eigen::Vector3d& waist_position,
                                       Eigen::Matrix3d* jacobian) const {
   const Pose soles[2] = {soleTarget(target.left_foot), soleTarget(target.right_foot)};
-  LegAngles angles[2];
+  LegSolution legs[2];
   bool reachable = true;
-  return comForWaist(waist_position, rotZ(target.waist_yaw), soles, angles, reachable, jacobian);
+  return comForWaist(waist_position, rotZ(target.waist_yaw), soles, legs, reachable, jacobian);
 }
 
 WalkingIkResult WalkingIk::solve(const WalkingIkTarget& target, Eigen::Ref<Eigen::VectorXd> q) const {
@@ -289,7 +338,7 @@ WalkingIkResult WalkingIk::solveFrom(const WalkingIkTarget& target,
   WalkingIkResult result;
   const Eigen::Matrix3d waist_rotation = rotZ(target.waist_yaw);
   const Pose soles[2] = {soleTarget(target.left_foot), soleTarget(target.right_foot)};
-  LegAngles angles[2];
+  LegSolution legs[2];
   bool reachable = true;
 
   // Newton on the waist position p: CoM(p) = target. Initial guess: the CoM offset from the
@@ -302,7 +351,7 @@ WalkingIkResult WalkingIk::solveFrom(const WalkingIkTarget& target,
   Eigen::Matrix3d jacobian;
   Pose reached[2];  // the soles by forward kinematics of the last evaluation's leg angles
   Eigen::Vector3d residual =
-      comForWaist(p, waist_rotation, soles, angles, reachable, &jacobian, reached) - target.com;
+      comForWaist(p, waist_rotation, soles, legs, reachable, &jacobian, reached) - target.com;
   bool jacobian_at_p = true;  // `jacobian` was evaluated at the current p
   Eigen::Matrix3d jacobian_inverse;
   bool have_jacobian = false;
@@ -315,12 +364,12 @@ WalkingIkResult WalkingIk::solveFrom(const WalkingIkTarget& target,
     }
     if (!have_jacobian) {
       if (!jacobian_at_p && reachable) {  // evaluate again, with the Jacobian
-        comForWaist(p, waist_rotation, soles, angles, reachable, &jacobian, reached);
+        comForWaist(p, waist_rotation, soles, legs, reachable, &jacobian, reached);
         jacobian_at_p = true;
         ++result.iterations;
       }
       if (!reachable || !jacobian.allFinite()) {
-        LegAngles scratch[2];
+        LegSolution scratch[2];
         bool scratch_reachable = true;
         for (int i = 0; i < 3; ++i) {
           Eigen::Vector3d shifted = p;
@@ -336,7 +385,7 @@ WalkingIkResult WalkingIk::solveFrom(const WalkingIkTarget& target,
     }
     p -= jacobian_inverse * residual;
     // Without the Jacobian: should the next step need a new one, p is evaluated again with it.
-    residual = comForWaist(p, waist_rotation, soles, angles, reachable, nullptr, reached) -
+    residual = comForWaist(p, waist_rotation, soles, legs, reachable, nullptr, reached) -
                target.com;
     jacobian_at_p = false;
     ++result.iterations;
@@ -350,7 +399,9 @@ WalkingIkResult WalkingIk::solveFrom(const WalkingIkTarget& target,
   q.head<3>() = p;  // free-flyer: position, then the yaw quaternion (w, x, y, z)
   q.segment<4>(3) << std::cos(0.5 * target.waist_yaw), 0.0, 0.0, std::sin(0.5 * target.waist_yaw);
   for (int side = 0; side < 2; ++side) {
-    for (int i = 0; i < 6; ++i) q(legs_[side].q_index[i]) = angles[side](i);
+    LegAngles angles;
+    legs[side].angles(angles);
+    for (int i = 0; i < 6; ++i) q(legs_[side].q_index[i]) = angles(i);
     const Pose& sole = reached[side];
     result.foot_position_error =
         std::max(result.foot_position_error, (sole.position - soles[side].position).norm());
@@ -385,6 +436,38 @@ WalkingIkTrajectory WalkingIk::solveTrajectory(const WalkTrajectory& walk) const
 
 WalkingIkTrajectory WalkingIk::solveTrajectory(const WalkTrajectory& walk,
                                                const Eigen::Ref<const Eigen::MatrixXd>& com) const {
+  WalkingIkTrajectory out;
+  solveTrajectory(walk, com, out);
+  return out;
+}
+
+WalkingIkResult WalkingIk::solveNext(const WalkingIkTarget& target, Eigen::Ref<Eigen::VectorXd> q,
+                                     WarmStart& warm_start) const {
+  // The CoM offset from the waist (in the waist yaw frame) extrapolated from the previous
+  // solutions: the walk is smooth at 5 ms, so this is much closer than the reference
+  // posture's offset and Newton needs one step instead of four.
+  const Eigen::Vector3d* offsets = warm_start.offsets;
+  const int solved = warm_start.solved_in_a_row;
+  const Eigen::Vector3d com_offset =
+      solved >= 3   ? Eigen::Vector3d(3.0 * (offsets[0] - offsets[1]) + offsets[2])
+      : solved == 2 ? Eigen::Vector3d(2.0 * offsets[0] - offsets[1])
+      : solved == 1 ? offsets[0]
+                    : reference_com_offset_;
+  const WalkingIkResult r = solveFrom(target, com_offset, q);
+  if (r.status == WalkingIkStatus::kSolved) {
+    warm_start.offsets[2] = warm_start.offsets[1];
+    warm_start.offsets[1] = warm_start.offsets[0];
+    warm_start.offsets[0] = rotZ(target.waist_yaw).transpose() * (target.com - q.head<3>());
+    ++warm_start.solved_in_a_row;
+  } else {
+    warm_start.solved_in_a_row = 0;
+  }
+  return r;
+}
+
+void WalkingIk::solveTrajectory(const WalkTrajectory& walk,
+                                const Eigen::Ref<const Eigen::MatrixXd>& com,
+                                WalkingIkTrajectory& out, bool timed) const {
   const std::size_t n = walk.size();
   if (walk.left_foot.size() != n || walk.right_foot.size() != n || walk.free_flyer_yaw.size() != n) {
     throw std::invalid_argument("walking IK: walk with inconsistent sample counts (time " +
@@ -398,48 +481,33 @@ WalkingIkTrajectory WalkingIk::solveTrajectory(const WalkTrajectory& walk,
                                 std::to_string(com.cols()) + ", expected " + std::to_string(n) +
                                 " x 3");
   }
-  WalkingIkTrajectory out;
   out.q.resize(static_cast<Eigen::Index>(n), model_.nq());
   out.samples.resize(n);
   out.solve_time.resize(n);
-  Eigen::VectorXd q(model_.nq());
+  out.failures = 0;
+  out.max_com_error = 0.0;
+  out.max_foot_position_error = 0.0;
+  out.limit_violations = 0;
+  out.samples_with_limit_violations = 0;
+  out.max_limit_violation = 0.0;
   WalkingIkTarget target;
-  // Warm start: the CoM offset from the waist (in the waist yaw frame) of each sample is
-  // extrapolated (quadratic) from the three previous solutions; the walk is smooth at 5 ms, so
-  // this is much closer than the reference posture's offset and Newton needs one step instead
-  // of four. After a sample that was not solved, the start is the reference again.
-  Eigen::Vector3d com_offset = reference_com_offset_;
-  // The last solutions' offsets, most recent first.
-  Eigen::Vector3d offsets[3] = {Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(),
-                                Eigen::Vector3d::Zero()};
-  int solved_in_a_row = 0;
+  WarmStart warm_start;  // after a sample that was not solved, the start is the reference again
+  // One configuration on the stack (at most 64 joints, checked at construction): this const
+  // function may run on several threads, and allocates nothing when `out` has its size.
+  Eigen::Matrix<double, Eigen::Dynamic, 1, 0, RobotModel::kFreeFlyerConfigurationSize + 64, 1> q(
+      model_.nq());
   for (std::size_t i = 0; i < n; ++i) {
     const auto row = static_cast<Eigen::Index>(i);
     target.left_foot = walk.left_foot[i];
     target.right_foot = walk.right_foot[i];
     target.com = com.row(row).transpose();
     target.waist_yaw = walk.free_flyer_yaw[i];
-    const auto start = std::chrono::steady_clock::now();
-    const WalkingIkResult& r = out.samples[i] = solveFrom(target, com_offset, q);
+    using Clock = std::chrono::steady_clock;
+    const Clock::time_point start = timed ? Clock::now() : Clock::time_point();
+    const WalkingIkResult& r = out.samples[i] = solveNext(target, q, warm_start);
     out.solve_time[i] =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        timed ? std::chrono::duration<double>(Clock::now() - start).count() : 0.0;
     out.q.row(row) = q.transpose();
-    if (r.status == WalkingIkStatus::kSolved) {
-      offsets[2] = offsets[1];
-      offsets[1] = offsets[0];
-      offsets[0] = rotZ(target.waist_yaw).transpose() * (target.com - q.head<3>());
-      ++solved_in_a_row;
-      if (solved_in_a_row >= 3) {
-        com_offset = 3.0 * (offsets[0] - offsets[1]) + offsets[2];
-      } else if (solved_in_a_row == 2) {
-        com_offset = 2.0 * offsets[0] - offsets[1];
-      } else {
-        com_offset = offsets[0];
-      }
-    } else {
-      solved_in_a_row = 0;
-      com_offset = reference_com_offset_;
-    }
     if (r.status != WalkingIkStatus::kSolved) ++out.failures;
     out.max_com_error = std::max(out.max_com_error, r.com_error);
     out.max_foot_position_error = std::max(out.max_foot_position_error, r.foot_position_error);
@@ -447,7 +515,6 @@ WalkingIkTrajectory WalkingIk::solveTrajectory(const WalkTrajectory& walk,
     if (r.limit_violations != 0) ++out.samples_with_limit_violations;
     out.max_limit_violation = std::max(out.max_limit_violation, r.max_limit_violation);
   }
-  return out;
 }
 
 }  // namespace wpg::robots

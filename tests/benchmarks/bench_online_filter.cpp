@@ -3,9 +3,11 @@
 //  * BM_OnlineLoopWalkForward: the whole loop on walk_forward (10 s, preview one step = 0.8 s as
 //    the paper), counters: the NMPC ticks' median and mean wall time [ms], every tick's mean,
 //    the real-time factor. The tick times are measured inside the loop, per stage.
-//  * BM_FilterWindow: what dominates an NMPC tick, the filter's walking IK + Simbody inverse
-//    dynamics over its window (the sampling period + the 0.8 s preview + 1 = 181 samples at
-//    5 ms), on a window of a steady forward walk.
+//  * BM_FilterWindow: what dominates an NMPC tick, the filter's walking IK + multibody ZMP
+//    (the momentum rate of the kinematics, momentum_zmp.hpp) over its window (the sampling
+//    period + the 0.8 s preview + 1 = 181 samples at 5 ms), on a window of a steady forward
+//    walk; BM_FilterWindowSimbody the same with Simbody's inverse dynamics (the previous
+//    version's window, for comparison).
 // Timings are quoted as medians of --benchmark_repetitions (STYLE.md).
 #include <benchmark/benchmark.h>
 
@@ -14,6 +16,7 @@
 #include <vector>
 
 #include "wpg/datasets/input/scenario.hpp"
+#include "wpg/robots/momentum_zmp.hpp"
 #include "wpg/robots/multibody_replay.hpp"
 #include "wpg/robots/online_filter_loop.hpp"
 #include "wpg/robots/robot_model.hpp"
@@ -71,15 +74,9 @@ void BM_OnlineLoopWalkForward(benchmark::State& state) {
 }
 BENCHMARK(BM_OnlineLoopWalkForward)->Unit(benchmark::kMillisecond)->UseRealTime();
 
-void BM_FilterWindow(benchmark::State& state) {
-  const wpg::datasets::Scenario scenario = walkForward();
+// The window of 181 samples from t = 5 s (steady walking).
+wpg::WalkTrajectory steadyWindow(const wpg::datasets::Scenario& scenario) {
   const wpg::WalkResult walk = wpg::generateWalk(scenario.walking, scenario.request);
-  const wpg::robots::RobotModel model(kSource + "/robots/hrp2/hrp2.urdf");
-  const wpg::robots::WalkingIk ik(model);
-  wpg::robots::MultibodyReplaySettings replay_settings;
-  replay_settings.joint_torques = false;
-  wpg::robots::MultibodyReplay replay(model, replay_settings);
-  // 181 samples from t = 5 s (steady walking).
   const std::size_t first = 1000, count = 181;
   wpg::WalkTrajectory window;
   const wpg::WalkTrajectory& w = walk.trajectory;
@@ -92,13 +89,43 @@ void BM_FilterWindow(benchmark::State& state) {
   slice(w.left_foot, window.left_foot);
   slice(w.right_foot, window.right_foot);
   slice(w.free_flyer_yaw, window.free_flyer_yaw);
+  return window;
+}
+
+void BM_FilterWindow(benchmark::State& state) {
+  const wpg::datasets::Scenario scenario = walkForward();
+  const wpg::WalkTrajectory window = steadyWindow(scenario);
+  const wpg::robots::RobotModel model(kSource + "/robots/hrp2/hrp2.urdf");
+  const wpg::robots::WalkingIk ik(model);
+  wpg::robots::MomentumZmp momentum(model, scenario.walking.gravity);
+  Eigen::MatrixXd com(static_cast<Eigen::Index>(window.size()), 3);
+  for (std::size_t i = 0; i < window.size(); ++i)
+    com.row(static_cast<Eigen::Index>(i)) = window.com[i].transpose();
+  wpg::robots::WalkingIkTrajectory q;
+  for (auto _ : state) {
+    ik.solveTrajectory(window, com, q);
+    const Eigen::MatrixXd& zmp = momentum.run(q.q, scenario.walking.control_period).zmp;
+    benchmark::DoNotOptimize(zmp.data());
+  }
+  state.counters["samples"] = static_cast<double>(window.size());
+}
+BENCHMARK(BM_FilterWindow)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+void BM_FilterWindowSimbody(benchmark::State& state) {
+  const wpg::datasets::Scenario scenario = walkForward();
+  const wpg::WalkTrajectory window = steadyWindow(scenario);
+  const wpg::robots::RobotModel model(kSource + "/robots/hrp2/hrp2.urdf");
+  const wpg::robots::WalkingIk ik(model);
+  wpg::robots::MultibodyReplaySettings replay_settings;
+  replay_settings.joint_torques = false;
+  wpg::robots::MultibodyReplay replay(model, replay_settings);
   for (auto _ : state) {
     const wpg::robots::WalkingIkTrajectory q = ik.solveTrajectory(window);
     const Eigen::MatrixXd& zmp = replay.run(q.q, scenario.walking.control_period).zmp;
     benchmark::DoNotOptimize(zmp.data());
   }
-  state.counters["samples"] = static_cast<double>(count);
+  state.counters["samples"] = static_cast<double>(window.size());
 }
-BENCHMARK(BM_FilterWindow)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_FilterWindowSimbody)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace

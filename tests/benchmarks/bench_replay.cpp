@@ -1,10 +1,10 @@
-// Multibody replay speed (issue acceptance 5): replay + dynamic filter of a 20 s walk_forward
-// walk on HRP-2 (walking IK, Simbody inverse dynamics, preview filter, IK and inverse dynamics
-// again to validate the corrected motion) must run at >= 150x real time. Measured (medians of
-// --benchmark_repetitions=5 on the shared 2-core machine): 140-185x when it is quiet, about
-// 100x when other jobs load both cores; callgrind counts 0.94e9 instructions per replay +
-// filter (IK 17 k and Simbody inverse dynamics 99 k per 5 ms sample). Reported: time per
-// replay, and the real-time factor (walk duration / wall time) as a counter.
+// Multibody replay speed: replay + dynamic filter of a 20 s walk_forward walk on HRP-2 (walking
+// IK, the multibody ZMP of the WPG's motion (the momentum rate, momentum_zmp.hpp), the preview
+// filter, IK again and Simbody's inverse dynamics to validate the corrected motion), on one
+// thread and with the validation's samples shared by two (WalkReplaySettings::threads, what
+// `wpg run` does on a 2-core machine); without the filter, IK and Simbody. Reported: time per
+// replay, and the real-time factor (walk duration / wall time) as a counter. Numbers:
+// docs/performance.md.
 #include <benchmark/benchmark.h>
 
 #include <chrono>
@@ -17,7 +17,7 @@
 
 namespace {
 
-void replay20sWalk(benchmark::State& state, bool filter) {
+void replay20sWalk(benchmark::State& state, bool filter, int threads = 1) {
   const std::string source = WPG_SOURCE_DIR;
   const wpg::datasets::Scenario scenario = wpg::datasets::loadScenario(
       source + "/datasets/scenarios/walk_forward.yaml", {"duration=20"}, source + "/robots");
@@ -26,6 +26,7 @@ void replay20sWalk(benchmark::State& state, bool filter) {
   wpg::robots::WalkReplaySettings settings;
   settings.filter = filter;
   settings.preview = scenario.filter_settings;
+  settings.threads = threads;
   const double walk_duration = walk.trajectory.time.back() - walk.trajectory.time.front();
   double wall_time = 0.0;
   for (auto _ : state) {
@@ -44,8 +45,12 @@ void replay20sWalk(benchmark::State& state, bool filter) {
 
 void BM_Replay20sWalkWithFilter(benchmark::State& state) { replay20sWalk(state, true); }
 void BM_Replay20sWalkWithoutFilter(benchmark::State& state) { replay20sWalk(state, false); }
+void BM_Replay20sWalkWithFilterTwoThreads(benchmark::State& state) {
+  replay20sWalk(state, true, 2);
+}
 
 BENCHMARK(BM_Replay20sWalkWithFilter)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_Replay20sWalkWithoutFilter)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_Replay20sWalkWithFilterTwoThreads)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace

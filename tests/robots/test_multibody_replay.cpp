@@ -407,3 +407,40 @@ TEST(MultibodyReplay, WeldingConstantJointsKeepsTheWrenchZmpAndCom) {
 }
 
 }  // namespace
+
+namespace {
+
+// Samples shared among threads (MultibodyReplaySettings::threads): every row is the one-thread
+// run's, to the last bit (each sample is independent), with and without an external force.
+TEST(MultibodyReplay, ThreadsGiveTheSameRows) {
+  const RobotModel& model = hrp2();
+  const int n = 450;
+  Eigen::MatrixXd q(n, model.nq()), force(n, 3);
+  const Eigen::VectorXd q0 = model.halfSitting();
+  for (int k = 0; k < n; ++k) {
+    const double t = kDt * k;
+    Eigen::VectorXd qk = q0;
+    RobotModel::setFreeFlyer(qk, q0.head<3>() + Eigen::Vector3d(0.2 * t, 0.03 * std::sin(5 * t), 0.0),
+                             Eigen::Quaterniond(Eigen::AngleAxisd(0.3 * t, Eigen::Vector3d::UnitZ())));
+    for (int i = 0; i < 12; ++i) qk(7 + i) += 0.2 * std::sin(3.0 * t + i);
+    q.row(k) = qk.transpose();
+    force.row(k) << 30.0 * std::sin(t), 0.0, 0.0;
+  }
+  wpg::robots::MultibodyReplaySettings settings;
+  settings.joint_torques = false;
+  MultibodyReplay one(model, settings);
+  const auto expected = one.run(q, kDt, force);
+  for (int threads : {2, 3}) {
+    settings.threads = threads;
+    MultibodyReplay shared(model, settings);
+    const auto& result = shared.run(q, kDt, force);
+    EXPECT_EQ(result.zmp, expected.zmp) << threads << " threads";
+    EXPECT_EQ(result.base_wrench, expected.base_wrench);
+    EXPECT_EQ(result.com, expected.com);
+    EXPECT_EQ(shared.run(q.topRows(50), kDt).zmp, one.run(q.topRows(50), kDt).zmp);  // one thread
+  }
+  settings.threads = 0;
+  EXPECT_THROW(MultibodyReplay(model, settings), std::invalid_argument);
+}
+
+}  // namespace

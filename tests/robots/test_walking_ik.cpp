@@ -236,6 +236,14 @@ TEST(WalkingIk, SolvesAWalkTrajectory) {
   const auto shifted = ik.solveTrajectory(walk, com);
   EXPECT_LT((model.centerOfMass(shifted.q.row(7).transpose()) - com.row(7).transpose()).norm(), 1e-10);
   EXPECT_THROW(ik.solveTrajectory(walk, com.topRows(3)), std::invalid_argument);
+  // Into a trajectory of the walk's size (the online filter's window): the same
+  // configurations, no allocation.
+  wpg::robots::WalkingIkTrajectory reused = out;
+  const long before = wpg_test::allocationCount();
+  ik.solveTrajectory(walk, com, reused);
+  EXPECT_EQ(wpg_test::allocationCount() - before, 0);
+  EXPECT_EQ(reused.q, shifted.q);
+  EXPECT_EQ(reused.failures, 0);
 }
 
 }  // namespace

@@ -78,9 +78,10 @@ bool allFinite(const MultibodyValidation& v) {
 
 ReplayOutcome replayScenarioWalk(const robots::RobotModel& model,
                                  const datasets::Scenario& scenario, const WalkTrajectory& walk,
-                                 bool filter) {
+                                 bool filter, int threads) {
   robots::WalkReplaySettings settings;
   settings.filter = filter;
+  settings.threads = threads;
   settings.preview = scenario.filter_settings;
   ReplayOutcome outcome;
   const auto start = std::chrono::steady_clock::now();
@@ -114,7 +115,7 @@ void recordReplayFailure(WalkAndReplay& run, const std::string& why) {
 }  // namespace
 
 WalkAndReplay runWalkAndReplay(const robots::RobotModel* model,
-                               const datasets::Scenario& scenario) {
+                               const datasets::Scenario& scenario, int replay_threads) {
   WalkAndReplay run;
   const bool online = scenario.filter && model != nullptr &&
                       scenario.filter_loop.mode != DynamicFilterMode::kOffline;
@@ -131,7 +132,8 @@ WalkAndReplay runWalkAndReplay(const robots::RobotModel* model,
       return run;
     }
     try {
-      run.replay = replayScenarioWalk(*model, scenario, result.trajectory, scenario.filter);
+      run.replay = replayScenarioWalk(*model, scenario, result.trajectory, scenario.filter,
+                                      replay_threads);
     } catch (const std::runtime_error& e) {
       recordReplayFailure(run, e.what());
     }

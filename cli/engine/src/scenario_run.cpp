@@ -30,7 +30,7 @@ RunResult runScenario(const datasets::Scenario& scenario, const RunSettings& set
   }
   WalkAndReplay run;
   try {
-    run = runWalkAndReplay(model, scenario);
+    run = runWalkAndReplay(model, scenario, settings.replay_threads);
   } catch (const std::invalid_argument& e) {  // parameters the generator rejects: bad input
     const std::string message = e.what();
     throw datasets::InputError(message.find(scenario.source_path) != std::string::npos

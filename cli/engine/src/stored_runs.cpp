@@ -56,7 +56,8 @@ StoredRunReplay loadRunForReplay(const std::string& path, bool filter,
   return run;
 }
 
-RunResult replayStoredRun(const StoredRunReplay& run, const robots::RobotModel& model) {
+RunResult replayStoredRun(const StoredRunReplay& run, const robots::RobotModel& model,
+                          int replay_threads) {
   const WalkTrajectory& walk = run.stored.result.trajectory;
   if (walk.size() < 3) {
     throw datasets::InputError(run.path + ": the run /runs/" + run.stored.name + " has " +
@@ -64,7 +65,8 @@ RunResult replayStoredRun(const StoredRunReplay& run, const robots::RobotModel& 
   }
   RunResult result;
   try {
-    result.replay = replayScenarioWalk(model, run.scenario, walk, run.scenario.filter);
+    result.replay =
+        replayScenarioWalk(model, run.scenario, walk, run.scenario.filter, replay_threads);
   } catch (const std::runtime_error& e) {
     throw datasets::InputError(run.path + ": " + e.what());
   }

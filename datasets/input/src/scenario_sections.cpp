@@ -259,8 +259,15 @@ std::vector<std::string> knownRobots(const std::string& robots_dir) {
 }
 
 Robot loadRobot(const std::string& robot_file) {
+  // A study loads its robot's file once per run, hundreds of times: each loading thread keeps
+  // the file it parsed last (parsing is what costs), keyed by its path and its text, so a file
+  // that changed is parsed again. Per thread: yaml-cpp's nodes are not shared across threads.
+  thread_local std::string cached_file, cached_text;
+  thread_local Robot cached;
+  const std::string text = readTextFile(robot_file, "robot walking parameters");
+  if (robot_file == cached_file && text == cached_text) return cached;
   const Source source(robot_file);
-  const YAML::Node root = readYamlFile(robot_file, "robot walking parameters");
+  const YAML::Node root = parseYamlText(text, robot_file);
   std::vector<std::string> keys = walkingFieldNames();
   keys.push_back("mass");
   const Entries entries =
@@ -270,6 +277,9 @@ Robot loadRobot(const std::string& robot_file) {
   robot.nodes = entries;
   robot.nodes.erase("mass");
   robot.mass = readPositive(entry(entries, "mass"), "mass", "a positive mass in kg", source);
+  cached_file = robot_file;
+  cached_text = text;
+  cached = robot;
   return robot;
 }
 

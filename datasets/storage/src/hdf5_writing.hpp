@@ -15,12 +15,14 @@ namespace wpg::datasets::detail {
 
 // --- compression off the HDF5 lock ----------------------------------------------------------
 // Debian's HDF5 is not thread-safe, so everything it does runs under hdf5Mutex(), one thread at
-// a time; its gzip filter is most of a run's writing time. A batch worker therefore runs the
-// writer of a run twice: first recording (on its own thread, without the lock, no HDF5 call:
-// writeDataset shuffles and deflates the chunks as the filters would and keeps them; attributes
-// and groups are skipped), then replaying under the lock (writeDataset creates each dataset
-// with the same filters and writes the recorded chunks as they are, H5Dwrite_chunk). The file
-// is the same as one written directly: h5py decompresses the chunks with the same filters.
+// a time; compressing the chunks is most of a run's writing time. writeDataset never lets HDF5
+// compress: it shuffles and deflates each chunk as HDF5's shuffle and deflate filters would
+// (a zlib stream, written by libdeflate) and writes the chunks as they are (H5Dwrite_chunk);
+// h5py and HDF5 read them with the same filters. A batch worker runs the writer of a run
+// twice: first recording (on its own thread, without the lock, no HDF5 call: writeDataset
+// compresses the chunks and keeps them; attributes and groups are skipped), then replaying
+// under the lock (writeDataset creates each dataset and writes the recorded chunks). The file
+// is the same as one written directly.
 
 struct RecordedDataset {
   hsize_t rows = 0, columns = 0, chunk_rows = 0;

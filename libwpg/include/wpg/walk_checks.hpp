@@ -31,5 +31,9 @@ struct WalkCheckReport {
 };
 
 WalkCheckReport checkWalk(const WalkingParameters& parameters, const WalkTrajectory& trajectory);
+// The footstep part of checkWalk alone (feasibility_violation, max_step_yaw_change,
+// landed_steps, speed_after_two_steps; the CoP fields stay 0): what does not need a pass over
+// the samples.
+WalkCheckReport checkSteps(const WalkingParameters& parameters, const WalkTrajectory& trajectory);
 
 }  // namespace wpg

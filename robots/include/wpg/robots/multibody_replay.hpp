@@ -20,6 +20,7 @@
 //   the CoM acceleration), run() subtracts its wrench: the ground's share remains.
 // The RobotModel must outlive the replay.
 #include <memory>
+#include <vector>
 
 #include <Eigen/Core>
 
@@ -34,6 +35,10 @@ struct MultibodyReplaySettings {
   // then has fewer bodies (HRP-2 walking: 13 instead of 31, the upper body held in its posture)
   // and gives the same base wrench, ZMP and CoM up to round-off, at about half the cost.
   bool joint_torques = true;
+  // Threads that share run()'s samples, each with its own Simbody system (built at the first
+  // run that uses it): the results are the same whatever the count (every sample is
+  // independent). 1 where the caller already runs one replay per core (a batch's workers).
+  int threads = 1;
 };
 
 struct MultibodyReplayResult {
@@ -95,6 +100,8 @@ class MultibodyReplay {
   // The system for a run of q: the full one, or (without joint torques) the one with the
   // joints constant over q welded, rebuilt only when that set or their values change.
   Simbody& simbodyFor(const Eigen::Ref<const Eigen::MatrixXd>& q);
+  // A copy of `like` (the same welded joints and values) for helper thread `index` of run().
+  Simbody& helperSystem(std::size_t index, const Simbody& like);
   void sampleDynamics(Simbody& simbody, const Eigen::Ref<const Eigen::VectorXd>& q,
                       const Eigen::Ref<const Eigen::VectorXd>& v,
                       const Eigen::Ref<const Eigen::VectorXd>& a, InverseDynamicsSample& out,
@@ -105,11 +112,11 @@ class MultibodyReplay {
   std::unique_ptr<Simbody> simbody_;  // every joint a mobility (inverseDynamics, torques)
   std::unique_ptr<Simbody> welded_;   // the last run's constant joints welded (may be null)
   MultibodyReplayResult result_;
-  // differentiate() on transposed trajectories (nq x n in, nv x n out: one sample per column).
-  void differentiateSamples(const Eigen::MatrixXd& qt, double dt, Eigen::MatrixXd& vt,
-                            Eigen::MatrixXd& at) const;
   Eigen::MatrixXd qt_, vt_, at_;  // run(): q, velocity, acceleration, one sample per column
+  Eigen::VectorXd fd_before_, fd_after_;  // run(): the finite differences' scratch
   Eigen::VectorXd tau_;           // per-sample joint torques
+  std::vector<std::unique_ptr<Simbody>> helpers_;  // the helper threads' systems
+  std::vector<Eigen::VectorXd> helper_tau_;        // and joint torques
 };
 
 }  // namespace wpg::robots

@@ -9,16 +9,20 @@
 // unstable here, wpg/dynamic_filter.hpp says why.)
 // At every NMPC iteration the filter takes what the NMPC previews of the coming motion (the
 // plan in force: OnlineWalkingGenerator::previewReference) over the current sampling period
-// plus the filter's preview (Sec. V-A: one step, 0.8 s), runs the walking IK and the inverse
-// dynamics over it, and gets the multibody ZMP error it will preview until the next
-// iteration. Every control period it advances the preview controller by one step
-// (OnlineDynamicFilter), adds its correction to the WPG's CoM and solves the IK of the
-// corrected motion (the q sent to the robot). Nothing of the walk after the current instant
-// is used but the NMPC's plan: the filter is causal (tested).
+// plus the filter's preview (Sec. V-A: one step, 0.8 s), runs the walking IK over it and
+// its multibody ZMP (the momentum rate of the kinematics, momentum_zmp.hpp: Simbody's inverse
+// dynamics within 1e-9 m), and gets the multibody ZMP error it will preview until the next
+// iteration; between two iterations the plan does not change, nor does the window. Every
+// control period it advances the preview controller by one step (OnlineDynamicFilter), adds
+// its correction to the WPG's CoM and solves the IK of the corrected motion (the q sent to the
+// robot; Newton from the previous ticks' solutions). Nothing of the walk after the current
+// instant is used but the NMPC's plan: the filter is causal (tested). Neither the window nor
+// the tick allocates once the first window has sized the buffers.
 //
 // Each stage is timed in its own control period (MultibodyValidation::tick_stage_time), as the
 // paper's Sec. V-C table measures the control loop. The motion sent to the robot is replayed
-// once more at the end (validation, not part of the loop) for the ZMP error after the filter.
+// once more at the end (validation, not part of the loop: Simbody's inverse dynamics) for the
+// ZMP error after the filter.
 #include "wpg/multibody_validation.hpp"
 #include "wpg/preview_control.hpp"
 #include "wpg/robots/robot_model.hpp"

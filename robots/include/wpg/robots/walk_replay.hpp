@@ -15,6 +15,9 @@ namespace wpg::robots {
 struct WalkReplaySettings {
   bool filter = true;                // run the dynamic filter (else replay only)
   PreviewControlSettings preview;    // Qe = 1, R = 1e-6, 1.6 s by default (Kajita 2003)
+  // Threads of the validation replay (Simbody, MultibodyReplaySettings::threads): the same
+  // results for any count; 1 where a caller runs one walk per core.
+  int threads = 1;
 };
 
 // Throws std::invalid_argument when the walk's sample counts are inconsistent or it has

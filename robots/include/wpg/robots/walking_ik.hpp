@@ -122,6 +122,24 @@ class WalkingIk {
   WalkingIkTrajectory solveTrajectory(const WalkTrajectory& walk) const;
   WalkingIkTrajectory solveTrajectory(const WalkTrajectory& walk,
                                       const Eigen::Ref<const Eigen::MatrixXd>& com) const;
+  // The same into `out`, whose buffers are reused: no allocation when they already have the
+  // walk's size (the filter's window at every NMPC iteration). Without `timed`, solve_time is
+  // 0 (two clock reads per sample spared, for a caller that times the whole).
+  void solveTrajectory(const WalkTrajectory& walk, const Eigen::Ref<const Eigen::MatrixXd>& com,
+                       WalkingIkTrajectory& out, bool timed = true) const;
+
+  // The warm start of solves 5 ms apart (solveTrajectory's): the CoM offset from the waist, in
+  // the waist yaw frame, of the last solutions, most recent first.
+  struct WarmStart {
+    Eigen::Vector3d offsets[3] = {Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(),
+                                  Eigen::Vector3d::Zero()};
+    int solved_in_a_row = 0;  // 0: start from the reference posture (first sample, a failure)
+  };
+  // solve() of the next sample of a sequence: Newton starts from the offset extrapolated
+  // (quadratic) from the last three solutions of `warm_start`, which it then updates. The
+  // same configuration as solve() within the CoM tolerance, in about half the evaluations.
+  WalkingIkResult solveNext(const WalkingIkTarget& target, Eigen::Ref<Eigen::VectorXd> q,
+                            WarmStart& warm_start) const;
 
  private:
   struct Leg {
@@ -136,15 +154,27 @@ class WalkingIk {
   };
   struct LegMassPoint { double mass; Eigen::Vector3d com; };  // in its body frame
 
+  // The analytic leg IK of solveLeg() as the forward kinematics needs it: the cosine and sine
+  // of each angle; angles() evaluates the angles from what their formulas take.
+  struct LegSolution {
+    double c[6] = {1, 1, 1, 1, 1, 1}, s[6] = {0, 0, 0, 0, 0, 0};
+    double r_x = 0, r_y = 0, r_z = 0, v_z = 0;  // hip - ankle in the foot frame, (Rx(q5) r)_z
+    double ratio = 0, c3 = 1, a = 0, b = 0;     // acos arguments; the knee's (a, b)
+    double m01 = 0, m11 = 1, m21 = 0, m20 = 0, m22 = 1;  // the hip's rotation entries
+    void angles(LegAngles& q) const;
+  };
+
   Leg makeLeg(const std::string& sole_frame) const;
+  bool solveLegCosines(Side side, const Pose& waist, const Pose& sole, LegSolution& out) const;
   // solve() with the initial waist position target.com - Rz(waist_yaw) com_offset.
   WalkingIkResult solveFrom(const WalkingIkTarget& target, const Eigen::Vector3d& com_offset,
                             Eigen::Ref<Eigen::VectorXd> q) const;
-  // Whole-body CoM for the waist at (p, yaw), legs by IK; also the leg angles, reachability
-  // and, when `jacobian` is not null, d CoM / d p (comAtWaist); when `reached_soles` is not
-  // null, the two sole poses (left, right) that the leg angles reach (forward kinematics).
+  // Whole-body CoM for the waist at (p, yaw), legs by IK; also the legs' solutions,
+  // reachability and, when `jacobian` is not null, d CoM / d p (comAtWaist); when
+  // `reached_soles` is not null, the two sole poses (left, right) that the leg angles reach
+  // (forward kinematics).
   Eigen::Vector3d comForWaist(const Eigen::Vector3d& p, const Eigen::Matrix3d& waist_rotation,
-                              const Pose (&soles)[2], LegAngles (&angles)[2], bool& reachable,
+                              const Pose (&soles)[2], LegSolution (&legs)[2], bool& reachable,
                               Eigen::Matrix3d* jacobian = nullptr,
                               Pose* reached_soles = nullptr) const;
   // pose <- pose * (joint i of the leg at `angle`): the joint origin, then the rotation.

@@ -36,12 +36,14 @@ struct ReplayOutcome {
   double realTimeFactor() const;  // walk_duration / wall_time (analysis::realTimeFactor)
 };
 
-// replayWalk with the scenario's filter settings; `filter` false replays only. Throws
-// std::runtime_error ("cannot replay the walk: ...") when the replay cannot follow the walk (too
-// short, or joint angles, filtered CoM or multibody ZMP that are not finite).
+// replayWalk with the scenario's filter settings; `filter` false replays only. `threads`: the
+// validation replay's (WalkReplaySettings::threads; 1 on a batch's workers; the results do not
+// depend on it). Throws std::runtime_error ("cannot replay the walk: ...") when the replay
+// cannot follow the walk (too short, or joint angles, filtered CoM or multibody ZMP that are
+// not finite).
 ReplayOutcome replayScenarioWalk(const robots::RobotModel& model,
                                  const datasets::Scenario& scenario, const WalkTrajectory& walk,
-                                 bool filter);
+                                 bool filter, int threads = 1);
 
 // Stages walk + replay + filter as the scenario says (`scenario.replay`, `filter`,
 // `filter_settings.mode`): runScenarioWalk then replayScenarioWalk (no filter, or mode
@@ -60,7 +62,8 @@ struct WalkAndReplay {
   std::string replay_failure;  // why the replay failed (one line); empty when it did not
   bool walk_succeeded = true;  // the walk's own success, before a failed replay was recorded
 };
-WalkAndReplay runWalkAndReplay(const robots::RobotModel* model, const datasets::Scenario& scenario);
+WalkAndReplay runWalkAndReplay(const robots::RobotModel* model, const datasets::Scenario& scenario,
+                               int replay_threads = 1);
 
 // The least clearances of the landed footsteps to the scenario's obstacles (FCL world,
 // wpg/planning/obstacle_checks.hpp), minima over the steps [m].

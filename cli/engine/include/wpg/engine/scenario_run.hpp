@@ -23,6 +23,9 @@ struct RunSettings {
   // Models already loaded (one cache per worker thread), used instead of loading them again;
   // may be null: runScenario then loads the model it needs from robots_directory.
   RobotModelCache* models = nullptr;
+  // Threads of the validation replay of this one walk (WalkReplaySettings::threads): a single
+  // run may use every core; a study's workers keep 1. The results do not depend on it.
+  int replay_threads = 1;
 };
 
 // How a run ended. Not kSucceeded: the walk and what was computed of it are still a result

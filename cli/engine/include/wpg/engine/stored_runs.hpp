@@ -38,6 +38,7 @@ StoredRunReplay loadRunForReplay(const std::string& path, bool filter,
 // The stored walk replayed (and filtered when the scenario says so): a result whose walk is the
 // stored one. Throws datasets::InputError when the replay cannot follow it (fewer than 3
 // samples, values that are not finite): there is nothing to write.
-RunResult replayStoredRun(const StoredRunReplay& run, const robots::RobotModel& model);
+RunResult replayStoredRun(const StoredRunReplay& run, const robots::RobotModel& model,
+                          int replay_threads = 1);
 
 }  // namespace wpg::engine
