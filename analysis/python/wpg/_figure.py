@@ -17,12 +17,15 @@ def _plot_module():
         sys.path.append(folder)  # plot_run.py imports its reading helpers from its folder
     spec = importlib.util.spec_from_file_location(name, os.path.join(folder, "plot_run.py"))
     module = importlib.util.module_from_spec(spec)
-    import matplotlib
-    backend = matplotlib.get_backend()
-    spec.loader.exec_module(module)  # selects the Agg backend for its command-line use
-    if matplotlib.get_backend() != backend:
+    # The module selects the Agg backend for its command-line use; a caller that already
+    # uses pyplot (a notebook's inline backend) keeps its own.
+    previous = sys.modules["matplotlib.pyplot"].get_backend() \
+        if "matplotlib.pyplot" in sys.modules else None
+    spec.loader.exec_module(module)
+    if previous is not None:
         import matplotlib.pyplot as plt
-        plt.switch_backend(backend)  # keep the caller's (a notebook's inline backend)
+        if plt.get_backend() != previous:
+            plt.switch_backend(previous)
     sys.modules[name] = module
     return module
 
