@@ -27,6 +27,27 @@ def test_steps_follow_the_offline_walk_of_the_same_command():
     np.testing.assert_array_equal(gen.command, command)
 
 
+def test_a_push_is_the_scenario_push_of_the_offline_walk():
+    # 60 N forward at 3 s while walking at 0.2 m/s: the robot falls at 4.2 s, online as offline.
+    offline = wpg.run("walk_forward", overrides={
+        "duration": 5, "reference": [{"t": 0.0, "v": [0.2, 0, 0]}],
+        "pushes": [{"t": 3.0, "force": [60, 0], "duration": 0.1}]})
+    assert offline.success is False and offline.mpc.status.iloc[-1] == "fallen"
+    gen = wpg.OnlineGenerator("walk_forward")
+    states = []
+    for k in range(len(offline.time) - 1):
+        if k == 600:
+            gen.push(force=(60, 0), duration=0.1)
+        states.append(gen.step(command=(0.2, 0.0, 0.0)))
+    assert np.array_equal(np.array([s.com for s in states]), offline.com[:len(states)])
+    assert not any(s.fallen for s in states)
+    # The offline walk ends at the fall (its closing sample): the next step falls, and stays.
+    assert offline.time[-1] == pytest.approx(4.2)
+    for _ in range(3):
+        s = gen.step(command=(0.2, 0.0, 0.0))
+        assert s.fallen and s.status == "fallen" and s.time == offline.time[-1]
+
+
 def test_a_push_moves_the_com_by_its_impulse():
     still, pushed = wpg.OnlineGenerator("walk_forward"), wpg.OnlineGenerator("walk_forward")
     for _ in range(20):

@@ -102,3 +102,16 @@ def test_compare_equals_the_cli(tmp_path, cli):
     assert list(frame["world"]) == ["field"] and list(frame["variant"]) == ["rrtconnect_nmpc"]
     assert frame.attrs["units"]["time_to_goal_median"] == "s"
     assert 0.0 <= frame["success_rate"][0] <= 1.0
+
+
+def test_a_run_is_found_by_its_unpadded_index(tmp_path):
+    study = tmp_path / "ten.yaml"
+    study.write_text("name: ten\nbase: walk_forward\nsweep:\n  grid:\n"
+                     "    duration: [1.0, 1.1, 1.2, 1.3, 1.4, 1.5, 1.6, 1.7, 1.8, 1.9, 2.0]\n")
+    table = wpg.batch(study, output=tmp_path / "ten.h5", jobs=2)
+    assert table["name"][3] == "ten_03"
+    run = wpg.io.load_run(tmp_path / "ten.h5", name="ten_3")
+    assert run.name == "ten_03" and run.time[-1] == pytest.approx(1.3)
+    assert wpg.io.load_run(tmp_path / "ten.h5", name="ten_03").name == "ten_03"
+    with pytest.raises(wpg.InputError, match="ten_11"):
+        wpg.io.load_run(tmp_path / "ten.h5", name="ten_11")

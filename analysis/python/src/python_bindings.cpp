@@ -4,6 +4,7 @@
 // C++ result's buffers (read-only, the run's core object as their base: nothing copied); the
 // small tables (footsteps, NMPC log) are copied once into columns. Walks, studies and saves
 // run without the GIL.
+#include <chrono>
 #include <cstdint>
 #include <stdexcept>
 #include <string>
@@ -240,6 +241,18 @@ void bindOnline(py::module_& m) {
              return state;
            },
            py::arg("command") = py::none())
+      // `steps` control periods with `command` entirely in C++ (what gen.step() costs without
+      // Python: benchmarks/bench_python_overhead.py); returns their wall time [s].
+      .def("run_steps",
+           [](OnlineSession& session, const std::vector<double>& command, int steps) {
+             if (command.size() != 3) throw datasets::InputError("command: expected 3 numbers");
+             const Eigen::Vector3d c(command[0], command[1], command[2]);
+             py::gil_scoped_release release;
+             const auto start = std::chrono::steady_clock::now();
+             for (int i = 0; i < steps; ++i) session.step(&c);
+             return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+           },
+           py::arg("command"), py::arg("steps"))
       .def("set_obstacles", &OnlineSession::setObstacles, py::arg("yaml"))
       .def("push",
            [](OnlineSession& s, double fx, double fy, double duration) {

@@ -5,6 +5,7 @@ Every function takes a run file (`wpg run`), a batch file (`wpg batch`), a merge
 followed here as everywhere).
 """
 import os
+import re
 
 from . import _wpg
 from ._wpg import InputError
@@ -17,7 +18,23 @@ def load_run(path, name=None):
     (q, zmp_multibody, ...) are read from the file when first used. Raises wpg.InputError (one
     line naming the file) for a missing or bad file or run."""
     from ._run import Run
-    return Run(_wpg.load_run(os.fspath(path), name or ""))
+    path = os.fspath(path)
+    return Run(_wpg.load_run(path, _run_name(path, name) if name else ""))
+
+
+def _run_name(path, name):
+    """`name`, or the run it numbers: a batch names its runs <study>_<index> with the index
+    zero-padded to the width of the largest ("study_007" of 200 runs), and "study_7" is taken
+    for it."""
+    numbered = re.fullmatch(r"(.*)_([0-9]+)", name)
+    if not numbered:
+        return name
+    names = run_names(path)
+    if name in names:
+        return name
+    pattern = re.compile(re.escape(numbered.group(1)) + "_0*" + str(int(numbered.group(2))))
+    matches = [candidate for candidate in names if pattern.fullmatch(candidate)]
+    return matches[0] if len(matches) == 1 else name
 
 
 def run_names(path):
