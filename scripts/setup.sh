@@ -7,6 +7,9 @@
 #   scripts/setup.sh --with-mpi      also Open MPI (openmpi-bin, libopenmpi-dev) and a build with
 #                                    WPG_WITH_MPI=ON: `mpirun -np R wpg batch ...` (README,
 #                                    "Running on a cluster")
+#   scripts/setup.sh --with-python   also pybind11, numpy, pandas and pytest (Debian's), and a
+#                                    build with WPG_BUILD_PYTHON=ON: the Python package wpg
+#                                    (docs/python.md) and its tests; scripts/test.sh passes it
 #   scripts/setup.sh --with-clang    also clang 14 and its sanitizer/libFuzzer runtimes
 #                                    (scripts/test-sanitizers.sh, scripts/fuzz.sh)
 #   scripts/setup.sh --packages-only install the packages, do not build build/
@@ -14,13 +17,15 @@ set -euo pipefail
 
 with_mpi=""
 with_clang=0
+with_python=0
 packages_only=0
 for argument in "$@"; do
   case "$argument" in
     --with-mpi) with_mpi=yes ;;
     --with-clang) with_clang=1 ;;
+    --with-python) with_python=1 ;;
     --packages-only) packages_only=1 ;;
-    *) echo "setup: error: unknown option '$argument' (expected --with-mpi, --with-clang, --packages-only)" >&2
+    *) echo "setup: error: unknown option '$argument' (expected --with-mpi, --with-python, --with-clang, --packages-only)" >&2
        exit 2 ;;
   esac
 done
@@ -38,6 +43,7 @@ packages=(build-essential cmake libeigen3-dev libhdf5-dev libdeflate-dev libcli1
           python3-h5py python3-matplotlib python3-yaml)
 if [[ -n "$with_mpi" ]]; then packages+=(openmpi-bin libopenmpi-dev); fi
 if ((with_clang)); then packages+=(clang-14 libclang-rt-14-dev); fi
+if ((with_python)); then packages+=(python3-dev python3-pybind11 python3-numpy python3-pandas python3-pytest); fi
 
 missing=()
 for package in "${packages[@]}"; do
@@ -78,6 +84,16 @@ if [[ -n "$with_mpi" ]]; then
       echo "setup: error: cmake configure with MPI failed (output above)" >&2
       exit 1
     fi
+  fi
+fi
+# A build tree configured before pybind11 was installed has WPG_BUILD_PYTHON=OFF in its cache.
+if ((with_python)) && [[ -f "$build/CMakeCache.txt" ]] &&
+   ! grep -q '^WPG_BUILD_PYTHON:BOOL=ON' "$build/CMakeCache.txt"; then
+  echo "setup: configuring $build with the Python package (WPG_BUILD_PYTHON=ON)"
+  if ! cmake -S "$repo" -B "$build" -DWPG_BUILD_PYTHON=ON >>"$log" 2>&1; then
+    cat "$log" >&2
+    echo "setup: error: cmake configure with the Python package failed (output above)" >&2
+    exit 1
   fi
 fi
 if [[ ! -f "$build/CMakeCache.txt" ]]; then

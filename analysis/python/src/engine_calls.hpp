@@ -1,0 +1,65 @@
+#pragma once
+// What the Python package asks of the engine, in plain C++ (no pybind11 here: it is heavy, and
+// python_bindings.cpp is the one file that includes it). Each call behaves like the `wpg`
+// subcommand of the same name: the same input checks before anything is written, the same
+// files, the same exit meaning; bad input is a datasets::InputError whose one-line message
+// names the file and the key.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "wpg/datasets/input/scenario.hpp"
+#include "wpg/engine/scenario_run.hpp"
+
+namespace wpg::python {
+
+// The folder holding robots/, datasets/scenarios/ and analysis/, found as `wpg` finds it:
+// $WPG_DATA_DIR when set and non-empty, else the source tree the module was built from when it
+// still exists, else the installed share/wpg.
+std::string dataDirectory();
+std::string robotsDirectory();
+std::vector<std::string> shippedScenarioNames();  // sorted file stems of datasets/scenarios/
+
+// A scenario argument (an existing file, or a shipped scenario's name with or without ".yaml")
+// -> its path; InputError naming the argument otherwise (as `wpg run`).
+std::string resolveScenarioPath(const std::string& argument);
+
+// A run held for Python: the scenario it ran and its result. A run read back from a file has
+// `stored_file` set and no replay (its multibody datasets stay in the file).
+struct RunSession {
+  datasets::Scenario scenario;
+  std::string scenario_path;  // the scenario file (empty for a run read back)
+  engine::RunResult result;
+  std::string stored_file, stored_name;
+};
+
+// `wpg run SCENARIO --set KEY=VALUE... [--replay] [--filter]` without its files: loads and
+// checks the scenario (InputError, nothing run), then runScenario. Call without the GIL.
+std::shared_ptr<RunSession> runScenarioFile(const std::string& scenario,
+                                            std::vector<std::string> overrides, bool replay,
+                                            bool filter);
+
+// The run's dataset at `path`, as `wpg run -o PATH` writes it: the output path checked first
+// (never over an input, a folder, a device or a file that is not HDF5: InputError), its folder
+// created, the file written atomically.
+void saveRun(const RunSession& run, const std::string& path);
+
+// The run `name` of a run, batch, merged or MPI index file (empty name: the file's only run),
+// checked against its stored scenario, with the metrics `wpg analyze` computes from it.
+std::shared_ptr<RunSession> loadStoredRun(const std::string& path, const std::string& name);
+std::vector<std::string> storedRunNames(const std::string& path);
+
+// `wpg batch STUDY -o OUTPUT -j JOBS [--resume]` without the figure: OUTPUT and
+// OUTPUT.summary.csv/.md. Returns the number of failed runs (exit status 1 when not 0).
+// Call without the GIL.
+struct StudyFiles {
+  std::string batch_file;
+  std::size_t runs = 0, failed_runs = 0;
+};
+StudyFiles runBatch(const std::string& study, const std::string& output, int jobs, bool resume);
+
+// `wpg compare STUDY -o FOLDER -j JOBS` without the figures: FOLDER/study.h5, summary.csv and
+// summary.md. Call without the GIL.
+StudyFiles runCompare(const std::string& study, const std::string& folder, int jobs);
+
+}  // namespace wpg::python

@@ -1,0 +1,336 @@
+// The extension module wpg._wpg: the engine's runs, studies and stored runs, and libwpg's online
+// generator, for the Python package analysis/python/wpg/ (which builds the public API on it).
+// The one file that includes pybind11 (a heavy header). Arrays of a run are numpy views of the
+// C++ result's buffers (read-only, the run's core object as their base: nothing copied); the
+// small tables (footsteps, NMPC log) are copied once into columns. Walks, studies and saves
+// run without the GIL.
+#include <chrono>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <pybind11/pybind11.h>
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include "engine_calls.hpp"
+#include "online_session.hpp"
+#include "wpg/analysis/run_metrics.hpp"
+#include "wpg/datasets/input/input_error.hpp"
+#include "wpg/walk_trajectory.hpp"
+
+namespace py = pybind11;
+
+namespace wpg::python {
+namespace {
+
+// A read-only view of rows x cols doubles at `data` (strides in bytes) kept alive by `base`.
+template <typename T>
+py::array view(const py::handle& base, const T* data, py::ssize_t rows, py::ssize_t cols,
+               py::ssize_t row_stride, py::ssize_t col_stride) {
+  static const T empty{};
+  py::array array =
+      cols == 0 ? py::array_t<T>({rows}, {row_stride}, rows ? data : &empty, base)
+                : py::array_t<T>({rows, cols}, {row_stride, col_stride}, rows ? data : &empty, base);
+  py::detail::array_proxy(array.ptr())->flags &= ~py::detail::npy_api::NPY_ARRAY_WRITEABLE_;
+  return array;
+}
+
+template <typename Vector>
+py::array rowsView(const py::handle& base, const std::vector<Vector>& rows) {
+  return view<double>(base, rows.empty() ? nullptr : rows.front().data(),
+                      static_cast<py::ssize_t>(rows.size()), Vector::RowsAtCompileTime,
+                      sizeof(Vector), sizeof(double));
+}
+
+py::object matrixView(const py::handle& base, const Eigen::MatrixXd& m) {
+  if (m.size() == 0) return py::none();
+  return view<double>(base, m.data(), m.rows(), m.cols(), sizeof(double),
+                      m.rows() * static_cast<py::ssize_t>(sizeof(double)));
+}
+
+const char* supportName(SupportState support) {
+  switch (support) {
+    case SupportState::kLeft: return "left";
+    case SupportState::kRight: return "right";
+    default: return "double";
+  }
+}
+
+py::array walkArray(const py::object& self, const std::string& name) {
+  const RunSession& run = self.cast<const RunSession&>();
+  const WalkTrajectory& w = run.result.walk.result.trajectory;
+  const auto n = static_cast<py::ssize_t>(w.size());
+  if (name == "time") return view<double>(self, w.time.data(), n, 0, sizeof(double), 0);
+  if (name == "com") return rowsView(self, w.com);
+  if (name == "com_vel") return rowsView(self, w.com_vel);
+  if (name == "com_acc") return rowsView(self, w.com_acc);
+  if (name == "cop") return rowsView(self, w.cop);
+  if (name == "left_foot") return rowsView(self, w.left_foot);
+  if (name == "right_foot") return rowsView(self, w.right_foot);
+  if (name == "free_flyer_yaw") {
+    return view<double>(self, w.free_flyer_yaw.data(), n, 0, sizeof(double), 0);
+  }
+  if (name == "support") {
+    static_assert(sizeof(SupportState) == 1, "support codes are stored as u1");
+    return view<std::uint8_t>(self, reinterpret_cast<const std::uint8_t*>(w.support.data()), n,
+                              0, 1, 0);
+  }
+  throw std::invalid_argument("no walk array '" + name + "'");
+}
+
+py::object replayArray(const py::object& self, const std::string& name) {
+  const RunSession& run = self.cast<const RunSession&>();
+  if (!run.result.replay) return py::none();
+  const MultibodyValidation& v = run.result.replay->validation;
+  if (name == "q") return matrixView(self, v.q);
+  if (name == "zmp_multibody") return matrixView(self, v.zmp_multibody);
+  if (name == "com_filtered") return matrixView(self, v.com_filtered);
+  if (name == "zmp_multibody_filtered") return matrixView(self, v.zmp_multibody_filtered);
+  throw std::invalid_argument("no replay array '" + name + "'");
+}
+
+py::dict replaySummary(const RunSession& run) {
+  py::dict out;
+  if (!run.result.replay) return out;
+  const MultibodyValidation& v = run.result.replay->validation;
+  out["configuration_names"] = v.configuration_names;
+  out["zmp_error_rms_before"] = v.before.rms;
+  out["zmp_error_max_before"] = v.before.max;
+  out["zmp_error_rms_after"] = v.after.rms;
+  out["zmp_error_max_after"] = v.after.max;
+  out["ik_failures"] = v.ik_failures;
+  out["filter_mode"] = v.filter_mode;
+  out["wall_time"] = run.result.replay->wall_time;
+  return out;
+}
+
+// Footsteps as columns (one copy): landing_time, x, y, yaw, side.
+py::dict footstepColumns(const RunSession& run) {
+  const std::vector<Footstep>& steps = run.result.walk.result.trajectory.footsteps;
+  const auto m = static_cast<py::ssize_t>(steps.size());
+  py::array_t<double> landing(m), x(m), y(m), yaw(m);
+  py::list side;
+  for (py::ssize_t i = 0; i < m; ++i) {
+    landing.mutable_at(i) = steps[i].landing_time;
+    x.mutable_at(i) = steps[i].pose.x();
+    y.mutable_at(i) = steps[i].pose.y();
+    yaw.mutable_at(i) = steps[i].pose.z();
+    side.append(steps[i].side == FootSide::kLeft ? "left" : "right");
+  }
+  py::dict out;
+  out["landing_time"] = landing;
+  out["x"] = x;
+  out["y"] = y;
+  out["yaw"] = yaw;
+  out["side"] = side;
+  return out;
+}
+
+// The NMPC log as columns (one copy), with one slack column per constraint family.
+py::dict mpcColumns(const RunSession& run) {
+  const WalkTrajectory& w = run.result.walk.result.trajectory;
+  const auto k = static_cast<py::ssize_t>(w.mpc.size());
+  py::array_t<double> time(k), solve_time(k), cost(k);
+  py::array_t<std::int32_t> qp(k), sqp(k);
+  py::array_t<std::uint8_t> code(k), relaxed(k);
+  const auto families = static_cast<py::ssize_t>(w.constraint_families.size());
+  std::vector<py::array_t<double>> slack;
+  for (py::ssize_t f = 0; f < families; ++f) slack.emplace_back(k);
+  py::list status;
+  for (py::ssize_t i = 0; i < k; ++i) {
+    const MpcIterationLog& log = w.mpc[i];
+    time.mutable_at(i) = log.time;
+    solve_time.mutable_at(i) = log.solve_time;
+    cost.mutable_at(i) = log.cost;
+    qp.mutable_at(i) = log.qp_iterations;
+    sqp.mutable_at(i) = log.sqp_iterations;
+    code.mutable_at(i) = static_cast<std::uint8_t>(log.status);
+    relaxed.mutable_at(i) = static_cast<std::uint8_t>(log.relaxed_families);
+    status.append(iterationStatusName(log.status));
+    for (py::ssize_t f = 0; f < families && f < kMaxConstraintFamilies; ++f) {
+      slack[f].mutable_at(i) = log.slack[f];
+    }
+  }
+  py::dict out;
+  out["time"] = time;
+  out["status"] = status;
+  out["status_code"] = code;
+  out["solve_time"] = solve_time;
+  out["qp_iterations"] = qp;
+  out["sqp_iterations"] = sqp;
+  out["cost"] = cost;
+  out["relaxed_families"] = relaxed;
+  for (py::ssize_t f = 0; f < families; ++f) {
+    out[py::str("slack_" + w.constraint_families[f].name)] = slack[f];
+  }
+  return out;
+}
+
+py::list constraintFamilies(const RunSession& run) {
+  py::list out;
+  for (const ConstraintFamilyInfo& family : run.result.walk.result.trajectory.constraint_families) {
+    out.append(py::make_tuple(family.name, family.unit, family.group));
+  }
+  return out;
+}
+
+// (name, value, unit, integer, wall_time) per metric of datasets/METRICS.md, in table order.
+py::list metricRows(const analysis::RunMetrics* metrics) {
+  py::list out;
+  for (const analysis::MetricDefinition& metric : analysis::runMetricTable()) {
+    out.append(py::make_tuple(metric.name, metrics ? py::object(py::float_(metrics->*metric.field))
+                                                   : py::object(py::none()),
+                              metric.unit, metric.integer, metric.wall_time));
+  }
+  return out;
+}
+
+// A control sample with the status of the last NMPC iteration, copied out of the generator.
+struct OnlineState {
+  ControlSample sample;
+  IterationStatus status = IterationStatus::kSolved;
+  bool fallen = false, landed = false;
+};
+
+py::array vectorCopy(const double* data, py::ssize_t n) { return py::array_t<double>(n, data); }
+
+void bindOnline(py::module_& m) {
+  py::class_<OnlineState>(m, "OnlineState")
+      .def_property_readonly("time", [](const OnlineState& s) { return s.sample.time; })
+      .def_property_readonly("com", [](const OnlineState& s) { return vectorCopy(s.sample.com_position.data(), 3); })
+      .def_property_readonly("com_vel", [](const OnlineState& s) { return vectorCopy(s.sample.com_velocity.data(), 3); })
+      .def_property_readonly("com_acc", [](const OnlineState& s) { return vectorCopy(s.sample.com_acceleration.data(), 3); })
+      .def_property_readonly("cop", [](const OnlineState& s) { return vectorCopy(s.sample.cop.data(), 2); })
+      .def_property_readonly("left_foot", [](const OnlineState& s) { return vectorCopy(s.sample.left_foot.data(), 4); })
+      .def_property_readonly("right_foot", [](const OnlineState& s) { return vectorCopy(s.sample.right_foot.data(), 4); })
+      .def_property_readonly("support", [](const OnlineState& s) { return supportName(s.sample.support); })
+      .def_property_readonly("free_flyer_yaw", [](const OnlineState& s) { return s.sample.free_flyer_yaw; })
+      .def_property_readonly("nmpc_sample", [](const OnlineState& s) { return s.sample.nmpc_sample; })
+      .def_property_readonly("status", [](const OnlineState& s) { return iterationStatusName(s.status); })
+      .def_property_readonly("fallen", [](const OnlineState& s) { return s.fallen; })
+      .def_property_readonly("landed", [](const OnlineState& s) { return s.landed; });
+
+  py::class_<OnlineSession>(m, "OnlineCore")
+      .def(py::init([](const std::string& scenario, std::vector<std::string> overrides) {
+             const std::string path = resolveScenarioPath(scenario);
+             return std::make_unique<OnlineSession>(
+                 datasets::loadScenario(path, overrides, robotsDirectory()));
+           }),
+           py::arg("scenario"), py::arg("overrides"))
+      .def("step",
+           [](OnlineSession& session, py::object command) {
+             OnlineState state;
+             if (command.is_none()) {
+               state.sample = session.step(nullptr);
+             } else {
+               const auto values = command.cast<std::vector<double>>();
+               if (values.size() != 3) {
+                 throw datasets::InputError("command: expected (vx, vy, omega), 3 numbers, got " +
+                                            std::to_string(values.size()));
+               }
+               const Eigen::Vector3d c(values[0], values[1], values[2]);
+               py::gil_scoped_release release;
+               state.sample = session.step(&c);
+             }
+             const OnlineWalkingGenerator& g = session.generator();
+             state.status = g.lastIteration().status;
+             state.fallen = g.fallen();
+             state.landed = g.landed();
+             return state;
+           },
+           py::arg("command") = py::none())
+      // `steps` control periods with `command` entirely in C++ (what gen.step() costs without
+      // Python: benchmarks/bench_python_overhead.py); returns their wall time [s].
+      .def("run_steps",
+           [](OnlineSession& session, const std::vector<double>& command, int steps) {
+             if (command.size() != 3) throw datasets::InputError("command: expected 3 numbers");
+             const Eigen::Vector3d c(command[0], command[1], command[2]);
+             py::gil_scoped_release release;
+             const auto start = std::chrono::steady_clock::now();
+             for (int i = 0; i < steps; ++i) session.step(&c);
+             return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+           },
+           py::arg("command"), py::arg("steps"))
+      .def("set_obstacles", &OnlineSession::setObstacles, py::arg("yaml"))
+      .def("push",
+           [](OnlineSession& s, double fx, double fy, double duration) {
+             s.push(Eigen::Vector2d(fx, fy), duration);
+           })
+      .def("reset", [](OnlineSession& s, double x, double y, double yaw) { s.reset({x, y, yaw}); })
+      .def_property_readonly("time", [](const OnlineSession& s) { return s.generator().time(); })
+      .def_property_readonly("control_period",
+                             [](const OnlineSession& s) { return s.scenario().walking.control_period; })
+      .def_property_readonly("command", [](const OnlineSession& s) {
+        return vectorCopy(s.generator().command().data(), 3);
+      });
+}
+
+void bindRun(py::module_& m) {
+  py::class_<RunSession, std::shared_ptr<RunSession>>(m, "RunCore")
+      .def_property_readonly("name", [](const RunSession& r) { return r.scenario.name; })
+      .def_property_readonly("success", [](const RunSession& r) { return r.result.exitStatus() == 0; })
+      .def_property_readonly("exit_code", [](const RunSession& r) { return r.result.exitStatus(); })
+      .def_property_readonly("outcome", [](const RunSession& r) { return engine::runOutcomeName(r.result.outcome); })
+      .def_property_readonly("message", [](const RunSession& r) { return r.result.walk.result.message; })
+      .def_property_readonly("scenario_yaml", [](const RunSession& r) { return r.scenario.resolved_yaml; })
+      .def_property_readonly("scenario_path", [](const RunSession& r) { return r.scenario_path; })
+      .def_property_readonly("stored_file", [](const RunSession& r) { return r.stored_file; })
+      .def_property_readonly("replayed", [](const RunSession& r) { return r.result.replay.has_value(); })
+      .def("walk_array", &walkArray)
+      .def("replay_array", &replayArray)
+      .def("replay_summary", &replaySummary)
+      .def("footstep_columns", &footstepColumns)
+      .def("mpc_columns", &mpcColumns)
+      .def("constraint_families", &constraintFamilies)
+      .def("metric_rows", [](const RunSession& r) { return metricRows(&r.result.metrics); })
+      .def("save", &saveRun, py::arg("path"), py::call_guard<py::gil_scoped_release>());
+}
+
+}  // namespace
+}  // namespace wpg::python
+
+PYBIND11_MODULE(_wpg, m) {
+  using namespace wpg::python;
+  m.doc() = "The C++ side of the wpg package (see the package wpg for the documented API).";
+  static py::exception<wpg::datasets::InputError> input_error(m, "InputError", PyExc_ValueError);
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const wpg::datasets::InputError& e) {
+      input_error(e.what());
+    }
+  });
+  bindRun(m);
+  bindOnline(m);
+  m.def("run", &runScenarioFile, py::arg("scenario"), py::arg("overrides"), py::arg("replay"),
+        py::arg("filter"), py::call_guard<py::gil_scoped_release>());
+  m.def("load_run", &loadStoredRun, py::arg("path"), py::arg("name"),
+        py::call_guard<py::gil_scoped_release>());
+  m.def("run_names", &storedRunNames, py::arg("path"));
+  m.def("batch",
+        [](const std::string& study, const std::string& output, int jobs, bool resume) {
+          StudyFiles files;
+          {
+            py::gil_scoped_release release;
+            files = runBatch(study, output, jobs, resume);
+          }
+          return py::make_tuple(files.batch_file, files.runs, files.failed_runs);
+        },
+        py::arg("study"), py::arg("output"), py::arg("jobs"), py::arg("resume"));
+  m.def("compare",
+        [](const std::string& study, const std::string& folder, int jobs) {
+          StudyFiles files;
+          {
+            py::gil_scoped_release release;
+            files = runCompare(study, folder, jobs);
+          }
+          return py::make_tuple(files.batch_file, files.runs);
+        },
+        py::arg("study"), py::arg("folder"), py::arg("jobs"));
+  m.def("scenarios", &shippedScenarioNames);
+  m.def("resolve_scenario", &resolveScenarioPath, py::arg("scenario"));
+  m.def("data_directory", &dataDirectory);
+  m.def("metric_table", [] { return metricRows(nullptr); });
+}

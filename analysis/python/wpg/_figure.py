@@ -1,0 +1,37 @@
+"""The figure of a run: the CLI's own drawing code (`wpg plot`), called through run_figure() so
+that wherever that code lives, only this file follows it."""
+import importlib.util
+import os
+import sys
+
+from . import _wpg
+
+
+def _plot_module():
+    """analysis/plot_run.py of the data directory (as `wpg plot` finds it), imported once."""
+    name = "wpg_plot_run"
+    if name in sys.modules:
+        return sys.modules[name]
+    folder = os.path.join(_wpg.data_directory(), "analysis")
+    if folder not in sys.path:
+        sys.path.append(folder)  # plot_run.py imports its reading helpers from its folder
+    spec = importlib.util.spec_from_file_location(name, os.path.join(folder, "plot_run.py"))
+    module = importlib.util.module_from_spec(spec)
+    # The module selects the Agg backend for its command-line use; a caller that already
+    # uses pyplot (a notebook's inline backend) keeps its own.
+    previous = sys.modules["matplotlib.pyplot"].get_backend() \
+        if "matplotlib.pyplot" in sys.modules else None
+    spec.loader.exec_module(module)
+    if previous is not None:
+        import matplotlib.pyplot as plt
+        if plt.get_backend() != previous:
+            plt.switch_backend(previous)
+    sys.modules[name] = module
+    return module
+
+
+def run_figure(path, name=None):
+    """The matplotlib Figure `wpg plot PATH [--run NAME]` draws."""
+    plot = _plot_module()
+    runs = plot.read_runs(path, name)
+    return plot.draw(runs, path)

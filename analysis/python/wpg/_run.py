@@ -1,0 +1,170 @@
+"""Run: one walk (its samples, footsteps, NMPC log, metrics and replay) as numpy and pandas."""
+import os
+import tempfile
+
+from . import _wpg
+from ._figure import run_figure
+
+_REPLAY_ARRAYS = ("q", "zmp_multibody", "com_filtered", "zmp_multibody_filtered")
+
+
+class Run:
+    """One walk, from wpg.run() or read back by wpg.io.load_run().
+
+    The per-sample arrays (time, com, cop, ...) are read-only numpy views of the C++ result
+    (nothing copied; the run keeps them alive), in the units and frames of the dataset
+    (datasets/SCHEMA.md). A failed walk is a run too: success False, exit_code 1.
+    """
+
+    def __init__(self, core):
+        self._core = core
+        self._cache = {}
+
+    def __repr__(self):
+        return "<wpg.Run %s: %s, %d samples>" % (self.name, self.outcome, len(self.time))
+
+    # --- outcome ------------------------------------------------------------------------
+    @property
+    def name(self):
+        """The scenario's name (the dataset's group /runs/<name>)."""
+        return self._core.name
+
+    @property
+    def success(self):
+        """True when the walk (and its replay) succeeded: `wpg run` exits 0."""
+        return self._core.success
+
+    @property
+    def exit_code(self):
+        """`wpg run`'s exit status for this run: 0 succeeded, 1 the walk (or replay) failed."""
+        return self._core.exit_code
+
+    @property
+    def outcome(self):
+        """"succeeded", "walk_failed" or "replay_failed"."""
+        return self._core.outcome
+
+    @property
+    def message(self):
+        """What went wrong first (one line); empty on success."""
+        return self._core.message
+
+    @property
+    def scenario(self):
+        """The resolved scenario (YAML text: every key explicit, the overrides merged)."""
+        return self._core.scenario_yaml
+
+    # --- samples at the control period ---------------------------------------------------
+    def _walk(self, name):
+        if name not in self._cache:
+            self._cache[name] = self._core.walk_array(name)
+        return self._cache[name]
+
+    time = property(lambda self: self._walk("time"), doc="(N,) time of each sample [s].")
+    com = property(lambda self: self._walk("com"), doc="(N, 3) CoM position x, y, z [m], world.")
+    com_vel = property(lambda self: self._walk("com_vel"), doc="(N, 3) CoM velocity [m/s].")
+    com_acc = property(lambda self: self._walk("com_acc"), doc="(N, 3) CoM acceleration [m/s^2].")
+    cop = property(lambda self: self._walk("cop"), doc="(N, 2) CoP of the LIPM, x, y [m] (eq. 3).")
+    left_foot = property(lambda self: self._walk("left_foot"),
+                         doc="(N, 4) left ankle x, y, z [m], yaw [rad].")
+    right_foot = property(lambda self: self._walk("right_foot"),
+                          doc="(N, 4) right ankle x, y, z [m], yaw [rad].")
+    free_flyer_yaw = property(lambda self: self._walk("free_flyer_yaw"),
+                              doc="(N,) waist yaw, mean of the foot yaws [rad].")
+    support = property(lambda self: self._walk("support"),
+                       doc="(N,) support phase codes: 0 double, 1 left, 2 right.")
+
+    # --- tables --------------------------------------------------------------------------
+    @property
+    def footsteps(self):
+        """pandas.DataFrame of the landed footsteps (the two initial feet first, landing_time
+        0): landing_time [s], x, y [m], yaw [rad], side ("left"/"right")."""
+        if "footsteps" not in self._cache:
+            import pandas as pd
+            frame = pd.DataFrame(self._core.footstep_columns())
+            frame.attrs["units"] = {"landing_time": "s", "x": "m", "y": "m", "yaw": "rad",
+                                    "side": "1"}
+            self._cache["footsteps"] = frame
+        return self._cache["footsteps"].copy()
+
+    @property
+    def mpc(self):
+        """pandas.DataFrame, one row per NMPC iteration: time, status (text, e.g. "solved"),
+        status_code, solve_time [s, wall time], qp_iterations, sqp_iterations, cost,
+        relaxed_families (bit mask), then slack_<family> per constraint family (its unit in
+        df.attrs["units"])."""
+        if "mpc" not in self._cache:
+            import pandas as pd
+            frame = pd.DataFrame(self._core.mpc_columns())
+            units = {"time": "s", "status": "1", "status_code": "1", "solve_time": "s",
+                     "qp_iterations": "1", "sqp_iterations": "1", "cost": "1",
+                     "relaxed_families": "1"}
+            groups = {}
+            for family, unit, group in self._core.constraint_families():
+                units["slack_" + family] = unit
+                groups["slack_" + family] = group
+            frame.attrs["units"] = units
+            frame.attrs["groups"] = groups
+            self._cache["mpc"] = frame
+        return self._cache["mpc"].copy()
+
+    @property
+    def metrics(self):
+        """dict of the metrics of datasets/METRICS.md: the names and values `wpg analyze`
+        gives (counts as int; NaN where a metric does not apply)."""
+        out = {}
+        for name, value, _unit, integer, _wall in self._core.metric_rows():
+            out[name] = int(value) if integer and value == value else value
+        return out
+
+    # --- multibody replay ----------------------------------------------------------------
+    def _replay(self, name):
+        if name not in self._cache:
+            array = self._core.replay_array(name)
+            if array is None and self._core.stored_file:
+                array = _stored_dataset(self._core.stored_file, self.name, name)
+            self._cache[name] = array
+        return self._cache[name]
+
+    q = property(lambda self: self._replay("q"),
+                 doc="(N, nq) configuration sent to the robot (replayed runs; else None).")
+    zmp_multibody = property(lambda self: self._replay("zmp_multibody"),
+                             doc="(N, 2) multibody ZMP before the filter [m] (replayed runs).")
+    com_filtered = property(lambda self: self._replay("com_filtered"),
+                            doc="(N, 3) CoM corrected by the dynamic filter [m] (filtered runs).")
+    zmp_multibody_filtered = property(lambda self: self._replay("zmp_multibody_filtered"),
+                                      doc="(N, 2) multibody ZMP after the filter [m].")
+
+    @property
+    def replay(self):
+        """dict of the replay's summary (configuration_names, zmp_error_*, ik_failures,
+        filter_mode, wall_time) for a run replayed by wpg.run(); empty otherwise."""
+        return dict(self._core.replay_summary())
+
+    # --- files ---------------------------------------------------------------------------
+    def save(self, path):
+        """Writes the run's dataset at `path`: the file `wpg run -o PATH` writes (`wpg diff`
+        finds them identical but for wall times). Raises wpg.InputError (nothing written) for
+        a path that is a folder, a device, an input or a file that is not HDF5."""
+        self._core.save(os.fspath(path))
+
+    def figure(self):
+        """The run's figure as `wpg plot` draws it (a matplotlib Figure)."""
+        if self._core.stored_file:
+            return run_figure(self._core.stored_file, self.name)
+        with tempfile.TemporaryDirectory(prefix="wpg-figure-") as folder:
+            path = os.path.join(folder, "run.h5")
+            self.save(path)
+            return run_figure(path, self.name)
+
+
+def _stored_dataset(path, run_name, name):
+    """/runs/<run_name>/<name> of a file read back (None when absent), one copy."""
+    import h5py
+    with h5py.File(path, "r") as handle:
+        group = handle["runs"][run_name]
+        if name not in group:
+            return None
+        array = group[name][()]
+    array.flags.writeable = False
+    return array

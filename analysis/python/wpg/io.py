@@ -1,0 +1,131 @@
+"""Reading wpg's files (datasets/SCHEMA.md) into numpy and pandas: runs and study summaries.
+
+Every function takes a run file (`wpg run`), a batch file (`wpg batch`), a merged index
+(`wpg merge`) or the index an MPI batch writes (its runs are HDF5 external links to the shards,
+followed here as everywhere).
+"""
+import os
+import re
+
+from . import _wpg
+from ._wpg import InputError
+
+
+def load_run(path, name=None):
+    """The run `name` of the file at `path` as a wpg.Run (any run, batch, merged or MPI index
+    file); `name` may be left out when the file holds one run. The walk is checked against its
+    stored scenario and its metrics recomputed as `wpg analyze` does; the multibody datasets
+    (q, zmp_multibody, ...) are read from the file when first used. Raises wpg.InputError (one
+    line naming the file) for a missing or bad file or run."""
+    from ._run import Run
+    path = os.fspath(path)
+    return Run(_wpg.load_run(path, _run_name(path, name) if name else ""))
+
+
+def _run_name(path, name):
+    """`name`, or the run it numbers: a batch names its runs <study>_<index> with the index
+    zero-padded to the width of the largest ("study_007" of 200 runs), and "study_7" is taken
+    for it."""
+    numbered = re.fullmatch(r"(.*)_([0-9]+)", name)
+    if not numbered:
+        return name
+    names = run_names(path)
+    if name in names:
+        return name
+    pattern = re.compile(re.escape(numbered.group(1)) + "_0*" + str(int(numbered.group(2))))
+    matches = [candidate for candidate in names if pattern.fullmatch(candidate)]
+    return matches[0] if len(matches) == 1 else name
+
+
+def run_names(path):
+    """The names of the runs under /runs of the file (sorted)."""
+    return _wpg.run_names(os.fspath(path))
+
+
+def _open(path):
+    import h5py
+    path = os.fspath(path)
+    if not os.path.isfile(path):
+        raise InputError("%s: cannot read: no such file" % path)
+    try:
+        return h5py.File(path, "r")
+    except OSError as error:
+        raise InputError("%s: cannot read it as HDF5 (%s)" % (path, " ".join(str(error).split())))
+
+
+def _text(values):
+    return [value.decode() if isinstance(value, bytes) else str(value) for value in values]
+
+
+def _table(path, group_name):
+    """The columns of a table group (one 1-D dataset per column, `columns` in order)."""
+    import numpy as np
+    with _open(path) as handle:
+        if group_name not in handle:
+            raise InputError("%s: /%s: expected a table, missing (not a %s file)"
+                             % (os.fspath(path), group_name,
+                                "batch" if group_name == "batch/summary" else "comparison"))
+        group = handle[group_name]
+        names = _text(group.attrs["columns"]) if "columns" in group.attrs else sorted(group)
+        columns, units = {}, {}
+        for name in names:
+            dataset = group[name]
+            if dataset.dtype.kind in "SOU":
+                columns[name] = np.array(_text(dataset[()]), dtype=object)
+            else:
+                columns[name] = dataset[()]
+            unit = dataset.attrs.get("units", "")
+            units[name] = unit.decode() if isinstance(unit, bytes) else str(unit)
+    return columns, units
+
+
+def load_summary(path):
+    """/batch/summary of a batch file (or index) as a pandas.DataFrame, one row per run of the
+    study (row = index), columns in the file's order. Swept values are typed: a number as
+    float, a swept vector (stored as YAML text, e.g. "[0.2, 0, 0]") as a column of tuples of
+    floats plus one float column per component, `sweep.<key>[i]`; other swept texts as their
+    parsed YAML. `done` is bool. df.attrs["units"] gives each column's unit, and
+    df.attrs["swept_keys"] the swept keys."""
+    import pandas as pd
+    import yaml
+    columns, units = _table(path, "batch/summary")
+    out, out_units, swept = {}, {}, []
+    for name, values in columns.items():
+        if name.startswith("sweep.") and values.dtype == object:
+            parsed = [yaml.safe_load(text) for text in values]
+            swept.append(name[len("sweep."):])
+            if parsed and all(_is_vector(item) and len(item) == len(parsed[0]) for item in parsed):
+                out[name] = [tuple(float(x) for x in item) for item in parsed]
+                out_units[name] = units[name]
+                for i in range(len(parsed[0])):
+                    out["%s[%d]" % (name, i)] = [float(item[i]) for item in parsed]
+                    out_units["%s[%d]" % (name, i)] = units[name]
+                continue
+            out[name] = parsed
+        else:
+            if name.startswith("sweep."):
+                swept.append(name[len("sweep."):])
+            out[name] = values.astype(bool) if name == "done" else values
+        out_units[name] = units[name]
+    frame = pd.DataFrame(out)
+    frame.attrs["units"] = out_units
+    frame.attrs["swept_keys"] = swept
+    return frame
+
+
+def load_compare_summary(path):
+    """/compare/summary of a comparison study's study.h5 (or of its folder) as a
+    pandas.DataFrame, one row per world x variant; units in df.attrs["units"]."""
+    import pandas as pd
+    path = os.fspath(path)
+    if os.path.isdir(path):
+        path = os.path.join(path, "study.h5")
+    columns, units = _table(path, "compare/summary")
+    frame = pd.DataFrame(columns)
+    frame.attrs["units"] = units
+    return frame
+
+
+def _is_vector(item):
+    return isinstance(item, list) and all(
+        isinstance(x, (int, float)) and not isinstance(x, bool) for x in item)

@@ -1,0 +1,101 @@
+"""wpg.OnlineGenerator: the online API, one control period per step()."""
+import numpy as np
+import pytest
+
+import wpg
+
+
+def test_steps_follow_the_offline_walk_of_the_same_command():
+    # generateWalk is a loop over the same online generator: a constant command from t = 0
+    # gives, step by step, the samples of the offline walk with that reference.
+    command = (0.2, 0.0, 0.05)
+    offline = wpg.run("walk_forward", overrides={
+        "duration": 3, "reference": [{"t": 0.0, "v": list(command)}]})
+    gen = wpg.OnlineGenerator("walk_forward")
+    assert gen.time == 0.0 and gen.control_period == 0.005
+    n = len(offline.time) - 1  # the last sample of a walk is its closing sample
+    states = [gen.step(command=command) for _ in range(n)]
+    assert np.array_equal(np.array([s.time for s in states]), offline.time[:n])
+    assert np.array_equal(np.array([s.com for s in states]), offline.com[:n])
+    assert np.array_equal(np.array([s.cop for s in states]), offline.cop[:n])
+    assert np.array_equal(np.array([s.left_foot for s in states]), offline.left_foot[:n])
+    assert np.array_equal(np.array([s.right_foot for s in states]), offline.right_foot[:n])
+    codes = {"double": 0, "left": 1, "right": 2}
+    assert np.array_equal(np.array([codes[s.support] for s in states]), offline.support[:n])
+    assert {s.status for s in states} == {"solved"}
+    assert sum(s.nmpc_sample for s in states) == len(offline.mpc)
+    np.testing.assert_array_equal(gen.command, command)
+
+
+def test_a_push_is_the_scenario_push_of_the_offline_walk():
+    # 60 N forward at 3 s while walking at 0.2 m/s: the robot falls at 4.2 s, online as offline.
+    offline = wpg.run("walk_forward", overrides={
+        "duration": 5, "reference": [{"t": 0.0, "v": [0.2, 0, 0]}],
+        "pushes": [{"t": 3.0, "force": [60, 0], "duration": 0.1}]})
+    assert offline.success is False and offline.mpc.status.iloc[-1] == "fallen"
+    gen = wpg.OnlineGenerator("walk_forward")
+    states = []
+    for k in range(len(offline.time) - 1):
+        if k == 600:
+            gen.push(force=(60, 0), duration=0.1)
+        states.append(gen.step(command=(0.2, 0.0, 0.0)))
+    assert np.array_equal(np.array([s.com for s in states]), offline.com[:len(states)])
+    assert not any(s.fallen for s in states)
+    # The offline walk ends at the fall (its closing sample): the next step falls, and stays.
+    assert offline.time[-1] == pytest.approx(4.2)
+    for _ in range(3):
+        s = gen.step(command=(0.2, 0.0, 0.0))
+        assert s.fallen and s.status == "fallen" and s.time == offline.time[-1]
+
+
+def test_a_push_moves_the_com_by_its_impulse():
+    still, pushed = wpg.OnlineGenerator("walk_forward"), wpg.OnlineGenerator("walk_forward")
+    for _ in range(20):
+        still.step()
+        pushed.step()
+    pushed.push(force=(60, 0), duration=0.1)
+    a = [still.step() for _ in range(21)]
+    b = [pushed.step() for _ in range(21)]
+    # 60 N on 56.037 kg (the scenario's robot_mass) during the 20 periods of 0.1 s, then
+    # nothing: the CoM velocity gains the impulse over the mass, 6 N s / m (the NMPC's own
+    # reaction starts at the sampling instant after the push).
+    accelerations = np.array([s.com_acc[0] - r.com_acc[0] for s, r in zip(b, a)])
+    assert accelerations[:20] == pytest.approx(60 / 56.037, rel=1e-12)
+    assert b[19].com_vel[0] - a[19].com_vel[0] == pytest.approx(60 / 56.037 * 0.095, rel=1e-9)
+    assert b[-1].com_vel[0] - a[-1].com_vel[0] == pytest.approx(6 / 56.037, rel=1e-9)
+    assert b[-1].com[0] > a[-1].com[0]
+
+
+def test_obstacles_are_checked_as_a_scenario_list():
+    gen = wpg.OnlineGenerator("walk_forward")
+    gen.set_obstacles([{"type": "circle", "center": np.array([1.5, 0.0]), "radius": 0.3,
+                        "margin": 0.2}])
+    with pytest.raises(wpg.InputError, match=r"obstacles\[0\]\.radius"):
+        gen.set_obstacles([{"type": "circle", "center": [1.5, 0.0], "radius": -0.3}])
+    gen.set_obstacles([])
+    with pytest.raises(wpg.InputError, match="command"):
+        gen.step(command=(0.1, 0.0))
+    with pytest.raises(wpg.InputError, match="duration"):
+        gen.push(force=(10, 0), duration=0)
+
+
+def test_walking_into_an_obstacle_keeps_the_steps_outside_it():
+    gen = wpg.OnlineGenerator("walk_forward")
+    gen.set_obstacles([{"type": "circle", "center": [1.0, 0.0], "radius": 0.2, "margin": 0.1}])
+    feet = []
+    for _ in range(int(12 / gen.control_period)):
+        s = gen.step(command=(0.25, 0.0, 0.0))
+        feet.append(s.left_foot[:2])
+        feet.append(s.right_foot[:2])
+    distance = np.linalg.norm(np.array(feet) - [1.0, 0.0], axis=1)
+    assert distance.min() > 0.2  # no ankle ever inside the obstacle
+
+
+def test_reset():
+    gen = wpg.OnlineGenerator("walk_forward")
+    for _ in range(100):
+        gen.step(command=(0.2, 0, 0))
+    gen.reset((1.0, 2.0, 0.0))
+    s = gen.step()
+    assert gen.time == pytest.approx(0.005)
+    assert s.com[:2] == pytest.approx([1.0, 2.0])

@@ -1,0 +1,154 @@
+"""wpg.run and wpg.Run: the contract, against the files and numbers of the `wpg` CLI."""
+import json
+
+import numpy as np
+import pandas as pd
+import pytest
+
+import wpg
+
+OVERRIDES = {"duration": 6, "reference[1].v": [0.3, 0, 0]}
+CLI_SET = ["--set", "duration=6", "--set", "reference[1].v=[0.3, 0, 0]"]
+
+
+@pytest.fixture(scope="module")
+def walk():
+    return wpg.run("walk_forward", overrides=OVERRIDES)
+
+
+def owner_of(array):
+    while isinstance(array.base, np.ndarray):
+        array = array.base
+    return array.base
+
+
+def test_arrays_have_the_contract_shapes_and_view_the_run(walk):
+    assert walk.success is True and walk.exit_code == 0 and walk.outcome == "succeeded"
+    n = len(walk.time)
+    assert n == 6 / 0.005 + 1
+    assert walk.com.shape == (n, 3) and walk.cop.shape == (n, 2)
+    assert walk.left_foot.shape == (n, 4) and walk.right_foot.shape == (n, 4)
+    assert walk.com.dtype == np.float64 and walk.support.dtype == np.uint8
+    # Views of the C++ result, not copies: owned by the run's core, read-only.
+    for array in (walk.time, walk.com, walk.cop, walk.left_foot, walk.support):
+        assert owner_of(array) is walk._core
+        assert not array.flags.writeable
+    with pytest.raises(ValueError):
+        walk.com[0, 0] = 1.0
+    # Physical sense: the CoM height is the walking parameter, time runs at 5 ms.
+    assert np.allclose(np.diff(walk.time), 0.005)
+    assert np.all(walk.com[:, 2] == walk.com[0, 2]) and 0.7 < walk.com[0, 2] < 0.9
+    assert walk.com[-1, 0] > 0.8  # walked forward at 0.3 m/s for ~4 s
+
+
+def test_the_views_outlive_the_run_object():
+    com = wpg.run("walk_forward", overrides={"duration": 2}).com
+    import gc
+    gc.collect()
+    assert com.shape[1] == 3 and np.all(np.isfinite(com))
+
+
+def test_tables(walk):
+    steps = walk.footsteps
+    assert list(steps.columns) == ["landing_time", "x", "y", "yaw", "side"]
+    assert set(steps.side) == {"left", "right"}
+    assert (steps.landing_time.iloc[:2] == 0).all() and steps.landing_time.is_monotonic_increasing
+    mpc = walk.mpc
+    assert len(mpc) == walk.metrics["nmpc_iterations"]
+    assert mpc.status.dtype == object and set(mpc.status) <= {"solved", "relaxed_obstacle"}
+    for column in ("solve_time", "qp_iterations", "sqp_iterations", "cost", "slack_cop",
+                   "slack_obstacle"):
+        assert column in mpc.columns
+    assert mpc.attrs["units"]["slack_yaw_bound"] == "rad"
+    assert mpc.qp_iterations.sum() == walk.metrics["qp_iterations_total"]
+
+
+def test_save_writes_the_cli_dataset_and_metrics_match_analyze(walk, cli, tmp_path):
+    mine, theirs = tmp_path / "python.h5", tmp_path / "cli.h5"
+    walk.save(mine)
+    cli("run", "walk_forward", *CLI_SET, "-o", theirs, "--no-plot")
+    done = cli("diff", "--rtol", "0", "--atol", "0", theirs, mine)
+    assert done.returncode == 0, done.stdout + done.stderr
+    analyzed = json.loads(cli("analyze", "--format", "json", theirs).stdout)["walk_forward"]
+    metrics = walk.metrics
+    assert list(metrics) == list(analyzed)
+    wall = {name for name, *_rest in wpg._wpg.metric_table() if _rest[-1]}
+    assert wall == {"nmpc_time_mean", "nmpc_time_std", "nmpc_time_min", "nmpc_time_max",
+                    "nmpc_time_p99"}
+    for name, value in analyzed.items():
+        if name in wall:
+            continue
+        if value is None:
+            assert np.isnan(metrics[name]), name
+        else:
+            assert metrics[name] == value, name
+
+
+def test_a_failed_walk_is_a_result(cli, tmp_path):
+    # A 600 N push for 0.3 s knocks the standing robot over: the NMPC reports the fall.
+    over = {"duration": 4, "pushes": [{"t": 1.0, "force": [600, 0], "duration": 0.3}]}
+    run = wpg.run("push_standing", overrides=over)
+    assert run.success is False and run.exit_code == 1 and run.outcome == "walk_failed"
+    assert run.message and (run.mpc.status != "solved").any()
+    run.save(tmp_path / "failed.h5")
+    done = cli("run", "push_standing", "--set", "duration=4", "--set",
+               "pushes=[{t: 1.0, force: [600, 0], duration: 0.3}]", "-o", tmp_path / "cli.h5",
+               "--no-plot")
+    assert done.returncode == 1  # the CLI's exit status for the same walk
+    assert cli("diff", tmp_path / "cli.h5", tmp_path / "failed.h5").returncode == 0
+
+
+def test_replay_and_filter_add_the_multibody_arrays(cli, tmp_path):
+    run = wpg.run("walk_forward", overrides={"duration": 3}, replay=True, filter=True)
+    n = len(run.time)
+    assert run.success
+    assert run.q.shape == (n, 37) and run.zmp_multibody.shape == (n, 2)
+    assert run.com_filtered.shape == (n, 3) and run.zmp_multibody_filtered.shape == (n, 2)
+    assert owner_of(run.q) is run._core
+    assert len(run.replay["configuration_names"]) == 37
+    # The filter brings the multibody ZMP closer to the reference CoP (paper Fig. 6).
+    before = np.sqrt(np.mean(np.sum((run.zmp_multibody - run.cop) ** 2, axis=1)))
+    after = np.sqrt(np.mean(np.sum((run.zmp_multibody_filtered - run.cop) ** 2, axis=1)))
+    assert np.isclose(before, run.metrics["zmp_error_rms_before"], rtol=1e-12)
+    assert after < before
+    plain = wpg.run("walk_forward", overrides={"duration": 3})
+    assert plain.q is None and plain.replay == {}
+    run.save(tmp_path / "filtered.h5")
+    cli("run", "walk_forward", "--set", "duration=3", "--filter", "-o", tmp_path / "cli.h5",
+        "--no-plot")
+    done = cli("diff", tmp_path / "cli.h5", tmp_path / "filtered.h5")
+    assert done.returncode == 0, done.stdout
+
+
+def test_a_scenario_file_and_overrides_of_every_kind(tmp_path):
+    path = tmp_path / "mine.yaml"
+    path.write_text("name: mine\nrobot: hrp2\nduration: 2.0\n"
+                    "reference:\n  - {t: 0.0, v: [0.0, 0.0, 0.0]}\n")
+    run = wpg.run(path, overrides={"walking.com_height": np.float64(0.8), "replay": False,
+                                   "reference": [{"t": 0.0, "v": np.array([0.1, 0.0, 0.0])}]})
+    assert run.name == "mine" and run.com[0, 2] == 0.8
+    assert "com_height: 0.8" in run.scenario
+
+
+def test_the_figure_is_the_cli_figure(walk):
+    import matplotlib.figure
+    figure = walk.figure()
+    assert isinstance(figure, matplotlib.figure.Figure)
+    titles = [text.get_text() for ax in figure.axes for text in ax.texts]
+    assert any("run walk_forward" in title for title in titles)
+
+
+def test_scenarios_are_the_shipped_files():
+    import os
+    names = wpg.scenarios()
+    shipped = sorted(f[:-5] for f in os.listdir(os.path.join(wpg.data_directory(), "datasets",
+                                                             "scenarios")) if f.endswith(".yaml"))
+    assert names == shipped and "walk_forward" in names
+
+
+def test_docstrings():
+    for function in (wpg.run, wpg.batch, wpg.compare, wpg.scenarios, wpg.io.load_run,
+                     wpg.io.load_summary, wpg.OnlineGenerator.step, wpg.Run.save,
+                     wpg.Run.figure, wpg.OnlineGenerator.push, wpg.OnlineGenerator.set_obstacles):
+        assert function.__doc__ and len(function.__doc__) > 40, function
+    assert issubclass(wpg.InputError, ValueError) and isinstance(pd.DataFrame(), pd.DataFrame)
