@@ -30,7 +30,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 from matplotlib.patches import Circle, Polygon  # noqa: E402
 
-from plot_run import convex_hull  # noqa: E402  (one hull for every figure)
+from run_figure.geometry import convex_hull  # noqa: E402  (one hull for every figure)
 
 OBSTACLE_COLOUR = "0.35"
 # Figures drawn per world, boxes per world x variant: a study's file may declare any number.
