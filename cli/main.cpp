@@ -11,6 +11,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cli_common.hpp"
+#include "view_command.hpp"
 #include "wpg/datasets/input_error.hpp"
 
 namespace {
@@ -241,6 +242,19 @@ int main(int argc, char** argv) {
       ->default_str("RUN.png next to RUN.h5")
       ->type_name("FIG.png");
 
+  ViewOptions view;
+  CLI::App* view_app = app.add_subcommand(
+      "view", "Write an HTML page to watch a run (robot, footsteps, obstacles, plots) or to explore "
+              "a study (a batch file, or the folder of `wpg compare`); docs/viewer.md.");
+  view_app->add_option("input", view.input, "Run or batch file, or the folder of `wpg compare`")
+      ->required()
+      ->type_name("FILE.h5|DIR");
+  view_app->add_option("--run", view.run, "One run of a batch file (its page instead of the dashboard)")
+      ->type_name("NAME");
+  view_app->add_option("-o,--output", view.output, "Page to write")
+      ->default_str("FILE.html beside FILE.h5, DIR/view.html")
+      ->type_name("PAGE.html");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {  // --help, --version
@@ -281,6 +295,7 @@ int main(int argc, char** argv) {
       push_sweep.plot = !push_sweep_no_plot;
       return pushSweepCommand(push_sweep);
     }
+    if (view_app->parsed()) return viewCommand(view);
     return plotCommand(plot);
   } catch (const UsageError& e) {
     printError(e.what());
