@@ -2,6 +2,7 @@
 #include "view_page.hpp"
 
 #include <cmath>
+#include <cstdlib>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -41,10 +42,15 @@ void replaceOnce(std::string& text, const std::string& marker, const std::string
 }  // namespace
 
 ViewerAssets loadViewerAssets() {
-  // The build tree first (a rebuilt bundle is seen at once), then the installed data folder.
+  // $WPG_VIEWER_DIR alone when set; else the build tree first (a rebuilt bundle is seen at
+  // once), then the installed data folder.
   std::vector<fs::path> places;
-  if (std::strlen(WPG_VIEWER_BUILD_DIR) > 0) places.emplace_back(WPG_VIEWER_BUILD_DIR);
-  places.push_back(fs::path(dataDirectory()) / "analysis" / "viewer");
+  if (const char* from_env = std::getenv("WPG_VIEWER_DIR"); from_env && *from_env) {
+    places.emplace_back(from_env);
+  } else {
+    if (std::strlen(WPG_VIEWER_BUILD_DIR) > 0) places.emplace_back(WPG_VIEWER_BUILD_DIR);
+    places.push_back(fs::path(dataDirectory()) / "analysis" / "viewer");
+  }
   for (const fs::path& folder : places) {
     ViewerAssets assets;
     if (readWhole(folder / "wpg_viewer.js", &assets.script) &&

@@ -4,11 +4,12 @@
 // of runs. Every run opens its page (PAGE_runs/<run>.html, written beside the dashboard).
 import { VARIANT_COLOURS, element, format } from './data.js';
 import { Chart, drawBoxPlots, drawRates, drawScatter } from './charts.js';
-import { topView } from './top_views.js';
+import { boundsOf, topView } from './top_views.js';
 
 // Columns that are bookkeeping, not metrics of a run.
 const NOT_METRICS = new Set(['index', 'done']);
-const FIRST_METRICS = ['time_to_goal', 'steps', 'step_centre_clearance_min', 'path_length', 'nmpc_time_p99'];
+const FIRST_METRICS = ['time_to_goal', 'path_length', 'distance', 'velocity_error_rms', 'cop_margin_min',
+  'step_centre_clearance_min', 'steps', 'nmpc_time_p99'];
 const SHOWN_TOP_VIEWS = 240;  // more are drawn on request: a canvas each
 
 function card(title, note) {
@@ -56,7 +57,10 @@ export function dashboardPage(app, data) {
     ? 'Every run is a point (a click opens it); the box spans the quartiles, the whiskers 1.5 IQR.'
     : 'Every run is a point (a click opens it).');
   dashboard.append(metricCard);
-  const preferred = FIRST_METRICS.find((name) => columns[name] && columns[name].values.some((v) => Number.isFinite(v)));
+  // The first metric of FIRST_METRICS that varies between the runs, else the first that does.
+  const varies = (c) => new Set(c.values.filter((v) => Number.isFinite(v))).size > 1;
+  const preferred = FIRST_METRICS.find((name) => columns[name] && varies(columns[name])) ||
+    (metrics.find(varies) || {}).name;
   const state = {
     metric: preferred || (metrics[0] && metrics[0].name),
     axis: comparison ? 'cells' : (swept[0] ? swept[0].name : 'index'),
@@ -177,8 +181,10 @@ export function dashboardPage(app, data) {
       }
     }
   } else {
-    const grid = element('div', { class: 'tops' });
+    const grid = element('div', { class: 'tops small' });
     topBody.append(grid);
+    // One scale for every run: their lengths compare at a glance.
+    const bounds = boundsOf(runs.filter((r) => r).map((r) => ({ top: r.top })));
     let shown = 0;
     const more = element('button', { class: 'link' });
     const showMore = () => {
@@ -187,7 +193,7 @@ export function dashboardPage(app, data) {
         if (!runs[shown]) continue;
         const caption = [names[shown], ...swept.map((c) => `${c.name.slice(6)} ${format(c.values[shown], 3)}`)];
         topView(grid, [{ top: runs[shown].top, colour: runs[shown].top.success ? '#2563eb' : '#d62728', run: shown, name: names[shown] }],
-          element('div', { class: 'caption' }, caption.map((t) => element('span', { text: t }))), open);
+          element('div', { class: 'caption', title: caption.join('\n') }, [element('span', { text: caption[0] })]), open, bounds);
         published.topViews += 1;
       }
       more.textContent = shown < rows ? `show ${Math.min(SHOWN_TOP_VIEWS, rows - shown)} more of ${rows - shown}` : '';

@@ -4,11 +4,11 @@
 // Hovering names the nearest path, a click opens its run.
 import { COLOURS, element, floats } from './data.js';
 
-function boundsOf(items) {
+export function boundsOf(items) {
   let [x0, x1, y0, y1] = [Infinity, -Infinity, Infinity, -Infinity];
   const add = (x, y) => { x0 = Math.min(x0, x); x1 = Math.max(x1, x); y0 = Math.min(y0, y); y1 = Math.max(y1, y); };
   for (const item of items) {
-    const path = item.path;
+    const path = item.path || floats(item.top.path);
     for (let i = 0; i < path.length; i += 2) add(path[i], path[i + 1]);
     const top = item.top;
     for (const o of top.obstacles) {
@@ -24,7 +24,8 @@ function boundsOf(items) {
 
 // items: [{top, colour, run, name}]; the obstacles and goal are those of the first item
 // (the runs of one world and seed share them).
-export function topView(container, items, caption, onOpen) {
+// `bounds` [x0, x1, y0, y1]: a scale shared by several views (default: fitted to the items).
+export function topView(container, items, caption, onOpen, bounds = null) {
   const canvas = element('canvas');
   const box = element('div', { class: 'top-view' }, [canvas, caption]);
   container.append(box);
@@ -39,7 +40,7 @@ export function topView(container, items, caption, onOpen) {
     g.setTransform(ratio, 0, 0, ratio, 0, 0);
     g.fillStyle = '#f8fafc';
     g.fillRect(0, 0, width, height);
-    const [x0, x1, y0, y1] = boundsOf(items);
+    const [x0, x1, y0, y1] = bounds || boundsOf(items);
     const scale = Math.min(width / (x1 - x0), height / (y1 - y0));
     const ox = (width - scale * (x1 - x0)) / 2;
     const oy = (height - scale * (y1 - y0)) / 2;
