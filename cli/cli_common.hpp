@@ -102,6 +102,7 @@ struct CompareOptions {
   int threads = 1;
   bool plot = true;
   bool threads_given = false;  // -j on the command line (under MPI the default is 1 per rank)
+  std::string ompl_log;        // --ompl-log DIR: OMPL benchmark logs, one per world
 };
 int compareCommand(const CompareOptions& options);
 

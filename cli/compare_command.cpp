@@ -6,6 +6,7 @@
 // analysis/plot_compare.py. Under an MPI launcher the ranks share the runs
 // (distributed_study.hpp): DIR/study.h5 is then the index of DIR/study.shards/.
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -16,6 +17,7 @@
 #include <system_error>
 
 #include "batch_progress.hpp"
+#include "compare_ompl_log.hpp"
 #include "cli_common.hpp"
 #include "distributed_study.hpp"
 #include "mpi_world.hpp"
@@ -173,6 +175,7 @@ analysis::ComparisonRunSample deserializeSample(const std::vector<double>& value
 int compareCommand(const CompareOptions& options) {
   if (options.threads < 1) throw UsageError("-j: expected a number of worker threads >= 1");
   if (options.output.empty()) throw UsageError("-o: expected the folder to write (DIR)");
+  const auto started = std::chrono::steady_clock::now();
   std::error_code ec;
   if (!fs::is_regular_file(options.study, ec)) {
     throw UsageError(options.study + ": cannot read the study file: no such file");
@@ -202,6 +205,7 @@ int compareCommand(const CompareOptions& options) {
       if (run.scenario.replay) replayed_robots.insert(run.scenario.robot);
     }
     for (const std::string& robot : replayed_robots) (void)loadRobotModel(robot);
+    if (!options.ompl_log.empty()) checkOmplLogOutputs(options.ompl_log, comparison.worlds);
   });
   const datasets::Study& study = comparison.study;
 
@@ -304,6 +308,13 @@ int compareCommand(const CompareOptions& options) {
     } else {
       std::cout.flush();
       printWarning("the study's figures could not be drawn (Python with h5py and matplotlib?)");
+    }
+  }
+  if (!options.ompl_log.empty()) {
+    const std::chrono::duration<double> seconds = std::chrono::steady_clock::now() - started;
+    std::cout << ", OMPL logs";
+    for (const std::string& log : writeOmplLogs(batch_file.string(), options.ompl_log, seconds.count())) {
+      std::cout << " " << log;
     }
   }
   std::cout << "\n";

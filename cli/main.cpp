@@ -166,6 +166,10 @@ int main(int argc, char** argv) {
       ->type_name("N");
   bool compare_no_plot = false;
   compare_app->add_flag("--no-plot", compare_no_plot, "Do not draw the figures");
+  compare_app->add_option("--ompl-log", compare.ompl_log,
+                          "Also write OMPL benchmark logs into DIR, one per world (OMPL's "
+                          "ompl_benchmark_statistics.py and Planner Arena read them)")
+      ->type_name("DIR");
 
   AnalyzeOptions analyze;
   CLI::App* analyze_app = app.add_subcommand(

@@ -150,6 +150,22 @@ std::vector<StoredRoutePlan> readPlans(const std::string& path, const H5::Group&
   const std::vector<int> counts = reader.integers(plans, "route_count", p);
   std::vector<double> planning_times(static_cast<std::size_t>(p), 0.0);
   if (plans.nameExists("planning_time")) planning_times = reader.doubles(plans, "planning_time", p, 0);
+  // The OMPL statistics: optional (NaN / -1 when absent).
+  const auto optional_doubles = [&](const char* name) {
+    return plans.nameExists(name) ? reader.doubles(plans, name, p, 0)
+                                  : std::vector<double>(static_cast<std::size_t>(p), StoredRoutePlan::kUnknown);
+  };
+  const auto optional_counts = [&](const char* name) {
+    return plans.nameExists(name) ? reader.integers(plans, name, p)
+                                  : std::vector<int>(static_cast<std::size_t>(p), -1);
+  };
+  const std::vector<double> route_length = optional_doubles("route_length");
+  const std::vector<double> solution_length = optional_doubles("solution_length");
+  const std::vector<double> simplified_length = optional_doubles("simplified_solution_length");
+  const std::vector<double> clearance = optional_doubles("solution_clearance");
+  const std::vector<double> simplification_time = optional_doubles("simplification_time");
+  const std::vector<int> graph_states = optional_counts("graph_states");
+  const std::vector<int> graph_motions = optional_counts("graph_motions");
   hsize_t r = 0;
   const std::vector<double> routes = reader.doubles(plans, "routes", 0, 3, nullptr, &r);
   const std::string trigger_codes = codesOf(path, plans, "trigger", where);
@@ -168,6 +184,13 @@ std::vector<StoredRoutePlan> readPlans(const std::string& path, const H5::Group&
     plan.trigger_name = codeName(trigger_codes, triggers[i]);
     plan.status_name = codeName(status_codes, statuses[i]);
     plan.planning_time = planning_times[i];
+    plan.route_length = route_length[i];
+    plan.solution_length = solution_length[i];
+    plan.simplified_solution_length = simplified_length[i];
+    plan.solution_clearance = clearance[i];
+    plan.simplification_time = simplification_time[i];
+    plan.graph_states = graph_states[i];
+    plan.graph_motions = graph_motions[i];
     for (int k = 0; k < counts[i]; ++k) {
       const std::size_t row = static_cast<std::size_t>(starts[i] + k);
       plan.route.emplace_back(routes[3 * row], routes[3 * row + 1], routes[3 * row + 2]);
@@ -207,7 +230,29 @@ StoredRunScene readScene(const std::string& path, const std::string& run_name, s
   return scene;
 }
 
+std::vector<StoredRoutePlan> readPlansOf(const std::string& path, const std::string& run_name) {
+  const H5::H5File file(path, H5F_ACC_RDONLY);
+  const std::string run_path = "/runs/" + run_name;
+  if (!file.nameExists("runs") || !file.openGroup("runs").nameExists(run_name)) {
+    throw InputError(path + ": no run " + run_path);
+  }
+  const H5::Group run = file.openGroup("runs").openGroup(run_name);
+  if (!run.nameExists("plans") || run.childObjType("plans") != H5O_TYPE_GROUP) return {};
+  return readPlans(path, run.openGroup("plans"), run_path + "/plans/");
+}
+
 }  // namespace
+
+std::vector<StoredRoutePlan> readRoutePlans(const std::string& path, const std::string& run_name) {
+  std::lock_guard<std::mutex> lock(hdf5Mutex());
+  H5::Exception::dontPrint();
+  try {
+    return readPlansOf(path, run_name);
+  } catch (const H5::Exception& error) {
+    throw InputError(path + ": cannot read the run file (" + error.getFuncName() + ": " +
+                     error.getDetailMsg() + ")");
+  }
+}
 
 StoredRunScene readRunScene(const std::string& path, const std::string& run_name,
                             std::size_t samples) {

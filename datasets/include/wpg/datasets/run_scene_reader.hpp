@@ -3,6 +3,7 @@
 // angles of the multibody replay, the multibody ZMP, the goal's outcome and the planner's
 // routes (layout: datasets/SCHEMA.md). Read by `wpg view`; as strict as readRunDataset: sizes
 // checked before anything is allocated, numbers finite, row counts consistent.
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -20,7 +21,15 @@ struct StoredRoutePlan {
   int status = 0;        // 0=exact_solution ... 5=invalid_goal (the dataset's `codes`)
   std::string trigger_name, status_name;  // by the datasets' `codes` ("start", "exact_solution")
   double planning_time = 0.0;  // wall time of solve() [s]
+  // The statistics named as ompl::tools::Benchmark names its run properties (NaN, or -1 for
+  // the counts, when the file does not hold them).
+  double route_length = kUnknown, solution_length = kUnknown,
+         simplified_solution_length = kUnknown, solution_clearance = kUnknown,
+         simplification_time = kUnknown;
+  long long graph_states = -1, graph_motions = -1;
   std::vector<Eigen::Vector3d> route;  // x, y, yaw waypoints (empty: no route)
+
+  static constexpr double kUnknown = std::numeric_limits<double>::quiet_NaN();
 };
 
 // The goal attributes of a walk to a goal (/runs/<name>: goal_x, ..., goal_outcome).
@@ -51,5 +60,8 @@ struct StoredRunScene {
 // dataset or attribute and what was expected.
 StoredRunScene readRunScene(const std::string& path, const std::string& run_name,
                             std::size_t samples);
+
+// The plans of /runs/<run_name> alone (empty without a plans/ group), checked as above.
+std::vector<StoredRoutePlan> readRoutePlans(const std::string& path, const std::string& run_name);
 
 }  // namespace wpg::datasets
