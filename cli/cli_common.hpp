@@ -137,13 +137,15 @@ int pushSweepCommand(const PushSweepOptions& options);
 
 struct PlotOptions {
   std::string input;
-  std::string output;  // empty: the input with its extension replaced by .png
+  std::string output;  // empty: the input with its extension replaced by .png (.RUN.png with --run)
+  std::string run;     // --run NAME: that run of a file with several
 };
 int plotCommand(const PlotOptions& options);
 
 // Runs /usr/bin/python3 <plot script> run_file -o figure_file; returns its exit status
 // (kExitBadInput with a message on stderr when Python or its modules are missing).
-int drawFigure(const std::string& run_file, const std::string& figure_file);
+int drawFigure(const std::string& run_file, const std::string& figure_file,
+               const std::string& run = "");
 // Runs /usr/bin/python3 script arguments... (the same checks and messages as drawFigure).
 int runAnalysisScript(const std::string& script, const std::vector<std::string>& arguments);
 

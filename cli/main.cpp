@@ -239,12 +239,14 @@ int main(int argc, char** argv) {
 
   PlotOptions plot;
   CLI::App* plot_app = app.add_subcommand("plot", "Draw the figure of a run dataset (PNG).");
-  plot_app->add_option("run_file", plot.input, "HDF5 dataset written by `wpg run`")
+  plot_app->add_option("run_file", plot.input, "Run or batch file (`wpg run`, `wpg batch`)")
       ->required()
       ->type_name("RUN.h5");
   plot_app->add_option("-o,--output", plot.output, "PNG to write")
-      ->default_str("RUN.png next to RUN.h5")
+      ->default_str("RUN.png next to RUN.h5 (RUN.NAME.png with --run)")
       ->type_name("FIG.png");
+  plot_app->add_option("--run", plot.run, "Draw only this run of the file (a batch file holds many)")
+      ->type_name("NAME");
 
   ViewOptions view;
   CLI::App* view_app = app.add_subcommand(

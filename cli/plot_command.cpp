@@ -44,8 +44,10 @@ void printWarning(const std::string& message) {
   std::cerr << "wpg: warning: " << oneLine(message) << '\n';
 }
 
-int drawFigure(const std::string& run_file, const std::string& figure_file) {
-  return runAnalysisScript(plotScriptPath(), {run_file, "-o", figure_file});
+int drawFigure(const std::string& run_file, const std::string& figure_file, const std::string& run) {
+  std::vector<std::string> arguments = {run_file, "-o", figure_file};
+  if (!run.empty()) arguments.insert(arguments.end(), {"--run", run});
+  return runAnalysisScript(plotScriptPath(), arguments);
 }
 
 int runAnalysisScript(const std::string& script, const std::vector<std::string>& arguments) {
@@ -93,7 +95,9 @@ int plotCommand(const PlotOptions& options) {
     throw UsageError("cannot read run file '" + options.input + "'");
   }
   fs::path figure = options.output;
-  if (figure.empty()) figure = fs::path(options.input).replace_extension(".png");
+  if (figure.empty()) {
+    figure = fs::path(options.input).replace_extension(options.run.empty() ? ".png" : "." + options.run + ".png");
+  }
   // Never over the run file, a device, a folder or a file that is not a PNG (output_file.hpp).
   try {
     datasets::checkOutputPath(figure.string(), datasets::OutputKind::kPng, {options.input});
@@ -108,7 +112,7 @@ int plotCommand(const PlotOptions& options) {
   }
   // The script checks the file and reports a bad one in one line (exit 2); any failure of it
   // is the input's (no walk ran): exit 2, as every other bad input.
-  const int status = drawFigure(options.input, figure.string());
+  const int status = drawFigure(options.input, figure.string(), options.run);
   if (status != kExitSuccess) return kExitBadInput;
   std::cout << "figure: " << figure.string() << '\n';
   return kExitSuccess;

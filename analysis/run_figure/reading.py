@@ -36,7 +36,8 @@ def read_runs(path, only=None):
             names = [only]
         if len(names) > MAX_RUNS_IN_FIGURE:
             raise BadFile("%s: /runs: expected at most %d runs in one figure, got %d (draw one "
-                          "with --run NAME)" % (path, MAX_RUNS_IN_FIGURE, len(names)))
+                          "with --run NAME, e.g. --run %s)" % (path, MAX_RUNS_IN_FIGURE, len(names),
+                                                               names[0]))
         runs = []
         for name in names:
             group = reader.group(runs_group, name, optional=True)
