@@ -218,6 +218,7 @@ def main():
             first_seed = min(s for s, w in zip(run_seed, run_world) if w == world)
             fig, ax = plt.subplots(figsize=(8.0, 5.0))
             drawn_world = False
+            missed = False
             for name, w, v, s, r in zip(run_names, run_world, run_variant, run_seed, reached):
                 if w != world or (not fixed and s != first_seed):
                     continue
@@ -231,11 +232,13 @@ def main():
                 ax.plot(com[:, 0], com[:, 1], color=colours[v], linestyle=styles[v], linewidth=0.9,
                         alpha=0.75)
                 if r != 1:
+                    missed = True
                     ax.plot([com[-1, 0]], [com[-1, 1]], marker="x", color=colours[v],
                             markersize=8, markeredgewidth=2, linestyle="none")
             for variant in variants:
                 ax.plot([], [], color=colours[variant], linestyle=styles[variant], label=variant)
-            ax.plot([], [], marker="x", color="black", linestyle="none", label="goal missed")
+            if missed:  # only when a run drawn here missed the goal
+                ax.plot([], [], marker="x", color="black", linestyle="none", label="goal missed")
             ax.set_aspect("equal")
             ax.autoscale_view()
             ax.set_xlabel("x [m]")
@@ -243,9 +246,11 @@ def main():
             ax.grid(alpha=0.3)
             which = "every seed" if fixed else "seed %d (the world is drawn per seed)" % first_seed
             ax.set_title("%s / %s: CoM paths, %s" % (study, world, which), fontsize=10)
-            ax.legend(fontsize=8, loc="best")
+            # Beside the axes: inside, "best" can cover obstacles.
+            ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.02, 1.0))
             fig.tight_layout()
-            fig.savefig(os.path.join(args.output, "top_%s.png" % world), dpi=110)
+            fig.savefig(os.path.join(args.output, "top_%s.png" % world), dpi=110,
+                        bbox_inches="tight")
             plt.close(fig)
     return 0
 

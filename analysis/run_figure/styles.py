@@ -9,6 +9,8 @@ RIGHT_COLOUR = "tab:red"
 COM_COLOUR = "black"
 COP_COLOUR = "tab:green"
 PUSH_COLOUR = "tab:purple"
+# The planner's routes, one colour per (re)plan: none of them the CoP's green or the CoM's black.
+ROUTE_COLOURS = ["tab:purple", "tab:cyan", "tab:brown", "tab:olive", "tab:pink"]
 
 # mpc/status values (libwpg IterationStatus) and how they are drawn.
 STATUS_STYLE = {
@@ -23,6 +25,11 @@ STATUS_STYLE = {
 }
 # fallback, iteration limit, fallen, relaxed kinematics / balance: the walk failed
 FAILED_STATUSES = (2, 3, 4, 6, 7)
+# The solve-time panel's scale when an iteration is more than twice the 98th percentile: this
+# factor times the 98th percentile, so that one slow iteration (10 ms) does not squash the
+# typical ones (~10 µs); the iterations above it are drawn on the top edge and named.
+SOLVE_SCALE_PERCENTILE = 98
+SOLVE_SCALE_FACTOR = 2.0
 OBSTACLE_COLOUR = "0.35"
 # Fig. 6 of the paper: reference CoP solid blue, ZMP before the filter dash-dot red, after the
 # filter dashed green.

@@ -3,7 +3,7 @@ its status, over the support phases."""
 import numpy as np
 
 from .styles import (COM_COLOUR, COP_COLOUR, FAILED_STATUSES, LEFT_COLOUR, PUSH_COLOUR,
-                     RIGHT_COLOUR, STATUS_STYLE)
+                     RIGHT_COLOUR, SOLVE_SCALE_FACTOR, SOLVE_SCALE_PERCENTILE, STATUS_STYLE)
 
 
 def support_spans(time, support):
@@ -38,6 +38,22 @@ def first_failure(run):
     if len(bad) == 0:
         return None
     return float(mpc["time"][bad[0]]), STATUS_STYLE[int(status[bad[0]])][0]
+
+
+def duration_text(microseconds):
+    return "%.1f ms" % (1e-3 * microseconds) if microseconds >= 1000 else "%.0f µs" % microseconds
+
+
+def scale_top(solve_us):
+    """The top of the solve-time scale [µs]: 1.5 times the largest iteration (headroom for the
+    legend), or, when that iteration is more than twice the 98th percentile,
+    SOLVE_SCALE_FACTOR times the 98th percentile: one slow iteration does not squash the
+    typical ones."""
+    largest = max(float(np.max(solve_us)), 1e-9)
+    typical = float(np.percentile(solve_us, SOLVE_SCALE_PERCENTILE))
+    if largest <= 2.0 * typical:
+        return 1.5 * largest
+    return max(SOLVE_SCALE_FACTOR * typical, 1e-9)
 
 
 def draw_time_panels(axes, run, pushes):
@@ -78,11 +94,20 @@ def draw_time_panels(axes, run, pushes):
         if np.any(unknown):
             ax.plot(mpc_time[unknown], solve_us[unknown], "k*", markersize=6,
                     label="other status (%d)" % int(np.count_nonzero(unknown)))
-        ax.set_title("NMPC solve time per iteration: median %.0f µs, max %.0f µs"
-                     % (np.median(solve_us), np.max(solve_us)), fontsize=9)
+        title = "NMPC solve time per iteration: median %.0f µs, max %.0f µs" % (
+            np.median(solve_us), np.max(solve_us))
         ax.set_ylabel("solve [µs]")
-        # headroom above the data for the legend
-        ax.set_ylim(0, 1.5 * max(float(np.max(solve_us)), 1e-9))
+        top = scale_top(solve_us)
+        above = solve_us > top
+        if np.any(above):
+            # The iterations beyond the scale: triangles on the top edge, counted in the title
+            # with the largest value.
+            ax.plot(mpc_time[above], np.full(int(np.count_nonzero(above)), 0.97 * top), "^",
+                    color="tab:red", markersize=6, clip_on=False, zorder=4)
+            title += "\n%d above the scale (red ▲), the largest %s" % (
+                int(np.count_nonzero(above)), duration_text(float(np.max(solve_us))))
+        ax.set_title(title, fontsize=9)
+        ax.set_ylim(0, top)
         ax.legend(loc="upper right", fontsize=7, framealpha=0.85, ncol=3)
     else:
         ax.step(time, run["support"], where="post", color="black", linewidth=1.0)

@@ -6,12 +6,13 @@ from matplotlib.lines import Line2D
 from matplotlib.patches import Circle, Patch, Polygon
 
 from .geometry import grown_outline, sole_corners
-from .styles import COM_COLOUR, COP_COLOUR, LEFT_COLOUR, OBSTACLE_COLOUR, RIGHT_COLOUR
+from .styles import (COM_COLOUR, COP_COLOUR, LEFT_COLOUR, OBSTACLE_COLOUR, RIGHT_COLOUR,
+                     ROUTE_COLOURS)
 
 
 def draw_goal(ax, goal):
     """The goal (its tolerance circle, its yaw) and every route the planner gave."""
-    colours = ["tab:green", "tab:purple", "tab:olive", "tab:cyan", "tab:brown"]
+    colours = ROUTE_COLOURS
     handles = []
     for index, (route, time, trigger) in enumerate(goal["routes"]):
         if len(route) < 2:
@@ -82,4 +83,6 @@ def draw_top_view(ax, run, foot_length, foot_width, obstacles=()):
         handles.append(Patch(facecolor="white", hatch="///", edgecolor=OBSTACLE_COLOUR,
                              label="unknown to the planner until sensed"))
     handles += goal_handles
-    ax.legend(handles=handles, loc="best", fontsize=8, framealpha=0.85)
+    # Below the axes: inside, "best" still covered obstacles (goal_u_trap's wall).
+    ax.legend(handles=handles, loc="upper center", bbox_to_anchor=(0.5, -0.09), ncol=3,
+              fontsize=8, framealpha=0.85)
