@@ -100,7 +100,7 @@ export function scenePage(app, data) {
     view.followPoint(new THREE.Vector3(walk.com[3 * i], walk.com[3 * i + 1], 0));
     const pushing = walk.pushes.some((p) => t >= p.t && t < p.t + p.duration);
     if (text) status.textContent = `${supportNames[walk.support[i]] || ''}${pushing ? ' · pushed' : ''}`;
-    for (const plot of plotList) plot.setCursor(t, false, text);
+    if (text) for (const plot of plotList) plot.setCursor(t, false, text);
     view.requestRender();
   };
   const start = walk.time[0];

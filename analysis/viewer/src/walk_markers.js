@@ -64,21 +64,54 @@ export class WalkMarkers {
     this.addPushes();
   }
 
+  // Every sole in one instanced mesh and every outline in one line set: two draw calls for
+  // the footsteps, whatever their number (a software renderer pays for each call). A sole is
+  // pale until it lands, then deeper (its instance colour).
   addSoles() {
     const w = this.walk;
-    this.soles = w.footsteps.map(([landing, x, y, yaw, side]) => {
-      const colour = side === 1 ? COLOURS.left : COLOURS.right;
-      const mesh = new THREE.Mesh(new THREE.BoxGeometry(w.footLength, w.footWidth, 0.004),
-        new THREE.MeshBasicMaterial({ color: colour, transparent: true, opacity: 0.2, depthWrite: false }));
-      mesh.position.set(x, y, 0.002);
-      mesh.rotation.z = yaw;
-      mesh.receiveShadow = true;
-      const edge = new THREE.LineSegments(new THREE.EdgesGeometry(mesh.geometry),
-        new THREE.LineBasicMaterial({ color: colour }));
-      mesh.add(edge);
-      this.group.add(mesh);
-      return { landing, mesh };
+    const steps = w.footsteps;
+    const plane = new THREE.PlaneGeometry(w.footLength, w.footWidth);
+    this.soleMesh = new THREE.InstancedMesh(plane,
+      new THREE.MeshBasicMaterial({ transparent: true, opacity: 0.55, depthWrite: false }), Math.max(1, steps.length));
+    this.soleMesh.count = steps.length;
+    const outline = [];
+    const matrix = new THREE.Matrix4();
+    const corners = [[0.5, 0.5], [-0.5, 0.5], [-0.5, -0.5], [0.5, -0.5]];
+    steps.forEach(([, x, y, yaw, side], i) => {
+      matrix.makeRotationZ(yaw).setPosition(x, y, 0.002);
+      this.soleMesh.setMatrixAt(i, matrix);
+      const c = new THREE.Color(side === 1 ? COLOURS.left : COLOURS.right);
+      const points = corners.map(([a, b]) => new THREE.Vector3(
+        x + Math.cos(yaw) * a * w.footLength - Math.sin(yaw) * b * w.footWidth,
+        y + Math.sin(yaw) * a * w.footLength + Math.cos(yaw) * b * w.footWidth, 0.003));
+      for (let k = 0; k < 4; ++k) outline.push(points[k], points[(k + 1) % 4], c, c);
     });
+    const positions = [];
+    const colours = [];
+    for (let k = 0; k < outline.length; k += 4) {
+      positions.push(outline[k].x, outline[k].y, outline[k].z, outline[k + 1].x, outline[k + 1].y, outline[k + 1].z);
+      colours.push(outline[k + 2].r, outline[k + 2].g, outline[k + 2].b, outline[k + 3].r, outline[k + 3].g, outline[k + 3].b);
+    }
+    const edges = new THREE.BufferGeometry();
+    edges.setAttribute('position', new THREE.Float32BufferAttribute(positions, 3));
+    edges.setAttribute('color', new THREE.Float32BufferAttribute(colours, 3));
+    this.group.add(this.soleMesh, new THREE.LineSegments(edges, new THREE.LineBasicMaterial({ vertexColors: true })));
+    this.soleColours = steps.map(([, , , , side]) => new THREE.Color(side === 1 ? COLOURS.left : COLOURS.right));
+    this.soleLanded = steps.map(() => null);
+    this.soleLandings = steps.map(([landing]) => landing);
+  }
+
+  showSoles(t) {
+    const pale = new THREE.Color('#ffffff');
+    let changed = false;
+    this.soleLandings.forEach((landing, i) => {
+      const landed = landing <= t;
+      if (this.soleLanded[i] === landed) return;
+      this.soleLanded[i] = landed;
+      this.soleMesh.setColorAt(i, landed ? this.soleColours[i] : this.soleColours[i].clone().lerp(pale, 0.75));
+      changed = true;
+    });
+    if (changed) this.soleMesh.instanceColor.needsUpdate = true;
   }
 
   addTraces() {
@@ -214,7 +247,7 @@ export class WalkMarkers {
     this.copTrace.geometry.setDrawRange(0, sample + 1);
     this.comShadow.geometry.setDrawRange(0, sample + 1);
     this.copMarker.position.set(w.cop[2 * sample], w.cop[2 * sample + 1], GROUND + 0.002);
-    for (const { landing, mesh } of this.soles) mesh.material.opacity = landing <= t ? 0.55 : 0.12;
+    this.showSoles(t);
     for (const route of this.routes) {
       route.group.visible = route.time <= t + 1e-9;
       route.material.opacity = t < route.next ? 1 : 0.3;
