@@ -69,7 +69,7 @@ def main():
         raise BadFile("%s: cannot draw it: %s: %s" % (args.run_file, type(error).__name__,
                                                        str(error)[:160]))
     try:
-        save_atomically(fig, output)
+        save_atomically(fig, output, args.run_file)
     except OSError as error:
         raise BadFile("%s: cannot write it: %s" % (output, error))
     except (ValueError, OverflowError, RuntimeError) as error:

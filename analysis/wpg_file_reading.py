@@ -53,6 +53,13 @@ def run_script(script, main):
     sys.exit(status or 0)
 
 
+def png_metadata(source):
+    """The PNG text of a figure: who drew it (wpg's version, commit, machine and date, given by
+    `wpg` in WPG_PROVENANCE) and from which file."""
+    return {"Software": os.environ.get("WPG_PROVENANCE") or "wpg analysis scripts",
+            "Source": os.path.basename(str(source))}
+
+
 def import_h5py(script):
     """h5py and numpy, or one line and exit 2 naming the Debian packages."""
     try:

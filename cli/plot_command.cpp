@@ -16,6 +16,7 @@
 #include "cli_common.hpp"
 #include "wpg/datasets/input_error.hpp"
 #include "wpg/datasets/output_file.hpp"
+#include "wpg/datasets/provenance.hpp"
 
 extern char** environ;
 
@@ -62,8 +63,12 @@ int runAnalysisScript(const std::string& script, const std::vector<std::string>&
     printError("plot script not found: " + script + " (set WPG_DATA_DIR to the wpg data folder)");
     return kExitBadInput;
   }
-  // The script reports its errors as "wpg: error: ..." like the rest of the CLI.
+  // The script reports its errors as "wpg: error: ..." like the rest of the CLI, and writes who
+  // drew the figure into the PNG (its Software text, as every file of wpg names its writer).
   ::setenv("WPG_PLOT_PROG", "wpg", 1);
+  const datasets::Provenance who = datasets::currentProvenance();
+  ::setenv("WPG_PROVENANCE", ("wpg " + who.version + " (commit " + who.commit + ") on " +
+                              who.machine + " at " + who.date).c_str(), 1);
   std::vector<std::string> args{kPython, script};
   args.insert(args.end(), arguments.begin(), arguments.end());
   std::vector<char*> argv;

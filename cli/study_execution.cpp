@@ -12,6 +12,7 @@
 #include "batch_progress.hpp"
 #include "cli_common.hpp"
 #include "wpg/analysis/run_metrics.hpp"
+#include "wpg/datasets/provenance.hpp"
 
 namespace fs = std::filesystem;
 
@@ -188,6 +189,9 @@ void writeTableMarkdown(const datasets::BatchSummaryTable& table, const std::str
     }
     out << "\n";
   }
+  const datasets::Provenance who = datasets::currentProvenance();  // as every file of wpg
+  out << "\nWritten by wpg " << who.version << " (commit " << who.commit << ") on " << who.machine
+      << " at " << who.date << ".\n";
   if (!out) throw std::runtime_error("cannot write " + path);
 }
 

@@ -6,7 +6,7 @@ import tempfile
 
 import matplotlib.pyplot as plt
 
-from wpg_file_reading import walking_number
+from wpg_file_reading import png_metadata, walking_number
 
 from .fig6 import draw_fig6
 from .scenario_text import describe_command, fmt_number, scenario_obstacles, scenario_pushes
@@ -54,13 +54,14 @@ def draw(runs, source_path):
     return fig
 
 
-def save_atomically(fig, output):
+def save_atomically(fig, output, source=""):
     folder = os.path.dirname(os.path.abspath(output))
     fd, temporary = tempfile.mkstemp(prefix="." + os.path.basename(output) + ".",
                                      suffix=".tmp", dir=folder)
     try:
         with os.fdopen(fd, "wb") as stream:
-            fig.savefig(stream, format="png", dpi=110, bbox_inches="tight")
+            fig.savefig(stream, format="png", dpi=110, bbox_inches="tight",
+                        metadata=png_metadata(source))
         umask = os.umask(0)
         os.umask(umask)
         os.chmod(temporary, 0o666 & ~umask)
