@@ -131,7 +131,8 @@ std::string runSceneJson(const LoadedRun& run, const std::string& back,
   json.beginObject();
   json.key("kind").string("run");
   json.key("title").string(run.stored.name);
-  json.key("subtitle").string(subtitleOf(run));
+  json.key("subtitle").string(subtitleOf(run) +
+                              (step > 1 ? " · one sample in " + std::to_string(step) + " shown" : ""));
   writeProvenance(json, fs::path(run.file).filename().string() + ":/runs/" + run.stored.name);
   if (!back.empty()) {
     json.key("back").string(back);

@@ -77,7 +77,6 @@ export const COLOURS = {
   left: '#1f77b4',
   right: '#d62728',
   com: '#111111',
-  comScene: '#f2f2f2',
   cop: '#2ca02c',
   zmp: '#ff7f0e',
   route: ['#9467bd', '#17becf', '#8c564b', '#e377c2', '#bcbd22'],
