@@ -228,13 +228,24 @@ export class WalkMarkers {
     for (let i = 0; i + 1 < this.routes.length; ++i) this.routes[i].next = this.routes[i + 1].time;
   }
 
+  // A push: a solid arrow (drawn over the robot) pointing along the force and ending at the
+  // CoM while it acts, its length growing with the force.
   addPushes() {
+    const material = new THREE.MeshBasicMaterial({ color: COLOURS.push, depthTest: false, transparent: true, opacity: 0.9 });
     this.pushes = this.walk.pushes.map((push) => {
       const magnitude = Math.hypot(push.force[0], push.force[1]);
-      const length = Math.min(1.2, 0.25 + magnitude / 250);  // 0.25 m + 1 m per 250 N
+      const length = Math.min(1.2, 0.3 + magnitude / 250);  // 0.3 m + 1 m per 250 N
       const direction = new THREE.Vector3(push.force[0], push.force[1], 0).normalize();
-      const arrow = new THREE.ArrowHelper(direction, new THREE.Vector3(), length, COLOURS.push, 0.14, 0.09);
-      arrow.line.material.linewidth = 3;
+      const arrow = new THREE.Group();
+      const head = 0.12;
+      const shaft = new THREE.Mesh(new THREE.CylinderGeometry(0.018, 0.018, length - head, 12), material);
+      shaft.position.y = (length - head) / 2;
+      const cone = new THREE.Mesh(new THREE.ConeGeometry(0.05, head, 16), material);
+      cone.position.y = length - head / 2;
+      arrow.add(shaft, cone);
+      arrow.quaternion.setFromUnitVectors(new THREE.Vector3(0, 1, 0), direction);
+      arrow.renderOrder = 10;
+      shaft.renderOrder = cone.renderOrder = 10;
       arrow.visible = false;
       this.group.add(arrow);
       return { ...push, arrow, direction, length };
