@@ -3,6 +3,7 @@
 // viewer bundle exists).
 #include "view_command.hpp"
 
+#include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <system_error>
