@@ -42,6 +42,7 @@ def main():
     parser.add_argument("--min-fps", type=float)
     parser.add_argument("--tries", type=int, default=3)
     args = parser.parse_args()
+    os.makedirs(args.out, exist_ok=True)
     page_path = os.path.abspath(args.page)
     folder = "file://" + os.path.dirname(page_path) + "/"
     url = "file://" + page_path
