@@ -10,17 +10,21 @@
 #   scripts/setup.sh --with-clang    also clang 14 and its sanitizer/libFuzzer runtimes
 #                                    (scripts/test-sanitizers.sh, scripts/fuzz.sh)
 #   scripts/setup.sh --packages-only install the packages, do not build build/
+#   scripts/setup.sh --without-viewer no Node.js, npm nor Chromium: build without the page of
+#                                    `wpg view` (WPG_BUILD_VIEWER=OFF) and without its tests
 set -euo pipefail
 
 with_mpi=""
 with_clang=0
+with_viewer=1
 packages_only=0
 for argument in "$@"; do
   case "$argument" in
     --with-mpi) with_mpi=yes ;;
     --with-clang) with_clang=1 ;;
     --packages-only) packages_only=1 ;;
-    *) echo "setup: error: unknown option '$argument' (expected --with-mpi, --with-clang, --packages-only)" >&2
+    --without-viewer) with_viewer=0 ;;
+    *) echo "setup: error: unknown option '$argument' (expected --with-mpi, --with-clang, --packages-only, --without-viewer)" >&2
        exit 2 ;;
   esac
 done
@@ -38,6 +42,13 @@ packages=(build-essential cmake libeigen3-dev libhdf5-dev libcli11-dev libgtest-
           python3-h5py python3-matplotlib python3-yaml)
 if [[ -n "$with_mpi" ]]; then packages+=(openmpi-bin libopenmpi-dev); fi
 if ((with_clang)); then packages+=(clang-14 libclang-rt-14-dev); fi
+# `wpg view` (docs/viewer.md): Node.js and npm bundle its page at build time (npm ci from
+# analysis/viewer/package-lock.json), Debian's when no node and npm are on PATH (a NodeSource
+# Node.js brings its own npm); Chromium opens the pages in the tests, headless.
+if ((with_viewer)); then
+  if ! command -v node >/dev/null || ! command -v npm >/dev/null; then packages+=(nodejs npm); fi
+  packages+=(chromium)
+fi
 
 missing=()
 for package in "${packages[@]}"; do
@@ -67,13 +78,14 @@ jobs="$(nproc)"
 log="$build/setup-build.log"
 mkdir -p "$build"
 : >"$log"
-mpi_option=()
+cmake_options=()
+((with_viewer)) || cmake_options+=(-DWPG_BUILD_VIEWER=OFF)
 if [[ -n "$with_mpi" ]]; then
-  mpi_option=(-DWPG_WITH_MPI=ON)
+  cmake_options+=(-DWPG_WITH_MPI=ON)
   # A build tree configured before MPI was installed has WPG_WITH_MPI=OFF in its cache.
   if [[ -f "$build/CMakeCache.txt" ]] && ! grep -q '^WPG_WITH_MPI:BOOL=ON' "$build/CMakeCache.txt"; then
     echo "setup: configuring $build with MPI (WPG_WITH_MPI=ON)"
-    if ! cmake -S "$repo" -B "$build" "${mpi_option[@]}" >>"$log" 2>&1; then
+    if ! cmake -S "$repo" -B "$build" "${cmake_options[@]}" >>"$log" 2>&1; then
       cat "$log" >&2
       echo "setup: error: cmake configure with MPI failed (output above)" >&2
       exit 1
@@ -82,7 +94,7 @@ if [[ -n "$with_mpi" ]]; then
 fi
 if [[ ! -f "$build/CMakeCache.txt" ]]; then
   echo "setup: configuring and building wpg in $build (Release, -j$jobs; log: $log)"
-  if ! cmake -S "$repo" -B "$build" -DCMAKE_BUILD_TYPE=Release "${mpi_option[@]}" >>"$log" 2>&1; then
+  if ! cmake -S "$repo" -B "$build" -DCMAKE_BUILD_TYPE=Release "${cmake_options[@]}" >>"$log" 2>&1; then
     cat "$log" >&2
     echo "setup: error: cmake configure failed (output above)" >&2
     exit 1
