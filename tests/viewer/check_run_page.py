@@ -6,9 +6,13 @@ The page of a replayed walk_forward (`wpg view`) in headless Chromium with the n
 - it opens paused at the time of the fragment (the contract of `#t=SECONDS`);
 - the two screenshots differ where the robot is (its box on the screen, which the page
   publishes) and not in a corner of the sky away from it: the robot walked, the view held;
-- with --max-bytes, the page is at most that large; with --min-fps, playing it draws at least
-  that many frames per second (requestAnimationFrame counted by the page itself over 3 s, after
-  1 s to settle its render scale; the best of --tries attempts: the machine is shared).
+- with --max-bytes, the page is at most that large;
+- with --min-fps, playing it is measured (requestAnimationFrame counted by the page itself over
+  3 s, after 1 s to settle its render scale) and the frames per second printed. A frame rate
+  is a timing, which a shared machine does not give reliably: it is asserted (at least
+  --min-fps, the best of --tries attempts) only when WPG_VIEWER_MEASURE_FPS=1 is in the
+  environment (docs/viewer.md, "Measuring the frame rate"); otherwise it is measured once and
+  printed.
 Screenshots are kept in OUT_DIR (t0.png, t6.png). Exit 0, or 1 with the reasons.
 """
 import argparse
@@ -84,8 +88,9 @@ def main():
             fail("the view moved: the sky away from the robot changed between t=0 and t=6")
 
         if args.min_fps:
+            asserted = os.environ.get("WPG_VIEWER_MEASURE_FPS") == "1"
             best = 0.0
-            for attempt in range(args.tries):
+            for attempt in range(args.tries if asserted else 1):
                 page = browser.open(url + "#t=0&measure=3")
                 page.wait_for("document.getElementById('wpg-fps') && "
                               "document.getElementById('wpg-fps').dataset.fps", timeout=120)
@@ -99,8 +104,13 @@ def main():
                 best = max(best, fps)
                 if best >= args.min_fps:
                     break
-            if best < args.min_fps:
+            if not asserted:
+                print("frame rate: %.1f frames per second (measured, not asserted: "
+                      "WPG_VIEWER_MEASURE_FPS=1 requires at least %.0f)" % (best, args.min_fps))
+            elif best < args.min_fps:
                 fail("%.1f frames per second at best, expected at least %.0f" % (best, args.min_fps))
+            else:
+                print("frame rate: %.1f frames per second, at least %.0f" % (best, args.min_fps))
     return 0
 
 
