@@ -3,13 +3,16 @@ headless Chromium with the network off.
 
 - no console error, warning or exception, no request outside the page's folder;
 - a comparison study: the box plots and the success rates draw every world x variant of the
-  file's /compare attributes, each with all its seeds, and a top view per world x seed;
+  file's /compare attributes, each with all its seeds, and a top view per world x seed, its
+  caption "seed S · R/N reached" (words apart, as read aloud or copied) with the seed and
+  the count of the file's goal_reached for that world and seed;
   a batch: a top view per run;
 - every run of /batch/summary has its page beside the dashboard (PAGE_runs/<run>.html), and
   the first one opens without error at #t=1 (its script, shared in PAGE_runs/, is found).
 The screenshot of the dashboard is kept in OUT_DIR/dashboard.png. Exit 0, or 1 with the reasons.
 """
 import os
+import re
 import sys
 
 import h5py
@@ -35,6 +38,15 @@ def main():
             worlds = [str(w) for w in f["compare"].attrs["worlds"]]
             variants = [str(v) for v in f["compare"].attrs["variants"]]
             seeds = len(f["compare"].attrs["seeds"])
+            summary = f["batch/summary"]
+            text = lambda column: [v.decode() if isinstance(v, bytes) else str(v) for v in summary[column][()]]
+            # (world, seed) -> [runs that reached the goal, runs], in the study's order.
+            captions = {}
+            for world, seed, reached in zip(text("sweep.world"), text("sweep.seed"),
+                                            summary["goal_reached"][()]):
+                counts = captions.setdefault((world, float(seed)), [0, 0])
+                counts[0] += int(reached == 1)
+                counts[1] += 1
     runs_folder = os.path.splitext(page_path)[0] + "_runs"
     for name in names:
         if not os.path.isfile(os.path.join(runs_folder, name + ".html")):
@@ -63,6 +75,18 @@ def main():
                 fail("%d top views, expected %d (world x seed)" % (drawn["topViews"], len(worlds) * seeds))
             print("every world x variant drawn: %s, %d seeds each; %d top views"
                   % (", ".join("%s/%s" % c for c in expected), seeds, drawn["topViews"]))
+            shown = page.evaluate("Array.from(document.querySelectorAll('.top-view .caption'))"
+                                  ".map((c) => c.textContent)")
+            want = list(captions.items())
+            if len(shown) != len(want):
+                fail("%d top-view captions, expected %d" % (len(shown), len(want)))
+            for caption, ((world, seed), (reached, runs)) in zip(shown, want):
+                match = re.fullmatch(r"seed (\S+) · (\d+)/(\d+) reached", caption)
+                if not match or float(match.group(1)) != seed or \
+                        (int(match.group(2)), int(match.group(3))) != (reached, runs):
+                    fail("the top view of %s, seed %g: caption %r, expected 'seed %g · %d/%d reached'"
+                         % (world, seed, caption, seed, reached, runs))
+            print("top-view captions: %s" % "; ".join(shown))
         elif drawn["topViews"] != min(len(names), 240):
             fail("%d top views, expected one per run (%d)" % (drawn["topViews"], len(names)))
         else:

@@ -176,7 +176,8 @@ export function dashboardPage(app, data) {
         if (!items.length) continue;
         const reached = items.filter((i) => i.top.reached).length;
         const seedText = Number.isFinite(Number(seed)) ? format(Number(seed), 6) : seed;
-        topView(grid, items, element('div', { class: 'caption' }, [element('span', { text: `seed ${seedText}` }), element('span', { text: `${reached}/${items.length} reached` })]), open);
+        // One text, words apart: the caption reads the same aloud or copied as on the screen.
+        topView(grid, items, element('div', { class: 'caption' }, [element('span', { text: `seed ${seedText} · ${reached}/${items.length} reached` })]), open);
         published.topViews += 1;
       }
     }
