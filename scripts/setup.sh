@@ -3,28 +3,35 @@
 # (or in $WPG_BUILD_DIR). Idempotent: quiet when everything is already installed and built.
 # Works from any folder.
 #
-#   scripts/setup.sh                 the default: everything but MPI and clang
+#   scripts/setup.sh                 the default (scripts/run-default.sh): everything `wpg`
+#                                    needs, no MPI, clang, Node.js nor Chromium
 #   scripts/setup.sh --with-mpi      also Open MPI (openmpi-bin, libopenmpi-dev) and a build with
 #                                    WPG_WITH_MPI=ON: `mpirun -np R wpg batch ...` (README,
 #                                    "Running on a cluster")
 #   scripts/setup.sh --with-clang    also clang 14 and its sanitizer/libFuzzer runtimes
 #                                    (scripts/test-sanitizers.sh, scripts/fuzz.sh)
 #   scripts/setup.sh --packages-only install the packages, do not build build/
-#   scripts/setup.sh --without-viewer no Node.js, npm nor Chromium: build without the page of
-#                                    `wpg view` (WPG_BUILD_VIEWER=OFF) and without its tests
+#   scripts/setup.sh --with-viewer   also Node.js and npm (Debian's, when none is on PATH) and
+#                                    a build with WPG_BUILD_VIEWER=ON: the page of `wpg view`
+#                                    (docs/viewer.md; without them `wpg` builds and runs, and
+#                                    `wpg view` says how to get its page)
+#   scripts/setup.sh --for-tests     what every test needs (scripts/test.sh): --with-viewer and
+#                                    Chromium, which opens the pages headless in the tests
 set -euo pipefail
 
 with_mpi=""
 with_clang=0
-with_viewer=1
+with_viewer=0
+with_chromium=0
 packages_only=0
 for argument in "$@"; do
   case "$argument" in
     --with-mpi) with_mpi=yes ;;
     --with-clang) with_clang=1 ;;
     --packages-only) packages_only=1 ;;
-    --without-viewer) with_viewer=0 ;;
-    *) echo "setup: error: unknown option '$argument' (expected --with-mpi, --with-clang, --packages-only, --without-viewer)" >&2
+    --with-viewer) with_viewer=1 ;;
+    --for-tests) with_viewer=1 with_chromium=1 ;;
+    *) echo "setup: error: unknown option '$argument' (expected --with-mpi, --with-clang, --packages-only, --with-viewer, --for-tests)" >&2
        exit 2 ;;
   esac
 done
@@ -32,10 +39,11 @@ done
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="$(realpath -m -- "${WPG_BUILD_DIR:-$repo/build}")"
 
-# ../shared/TOOLCHAIN.md: Eigen (libwpg), HDF5 + yaml-cpp (datasets), CLI11 (cli), FCL and
-# OMPL with the Boost libraries its CMake configuration names (planning), Simbody + urdfdom (robots), GoogleTest + Google Benchmark (tests), h5py +
-# matplotlib + PyYAML (analysis figures, run by Debian's /usr/bin/python3; PyYAML reads the
-# scenario stored in the dataset: obstacles, command, foot size).
+# The toolchain: Eigen (libwpg), HDF5 + yaml-cpp (datasets), CLI11 (cli), FCL and OMPL with the
+# Boost libraries its CMake configuration names (planning), Simbody + urdfdom (robots),
+# GoogleTest + Google Benchmark (tests), h5py + matplotlib + PyYAML (analysis figures, run by
+# Debian's /usr/bin/python3; PyYAML reads the scenario stored in the dataset: obstacles,
+# command, foot size).
 packages=(build-essential cmake libeigen3-dev libhdf5-dev libcli11-dev libgtest-dev
           libbenchmark-dev libyaml-cpp-dev libfcl-dev libsimbody-dev liburdfdom-dev
           libompl-dev libboost-serialization-dev libboost-filesystem-dev libboost-system-dev
@@ -44,11 +52,12 @@ if [[ -n "$with_mpi" ]]; then packages+=(openmpi-bin libopenmpi-dev); fi
 if ((with_clang)); then packages+=(clang-14 libclang-rt-14-dev); fi
 # `wpg view` (docs/viewer.md): Node.js and npm bundle its page at build time (npm ci from
 # analysis/viewer/package-lock.json), Debian's when no node and npm are on PATH (a NodeSource
-# Node.js brings its own npm); Chromium opens the pages in the tests, headless.
+# Node.js brings its own npm); Chromium opens the pages in the tests, headless. Neither is
+# needed to build or run the rest of wpg.
 if ((with_viewer)); then
   if ! command -v node >/dev/null || ! command -v npm >/dev/null; then packages+=(nodejs npm); fi
-  packages+=(chromium)
 fi
+if ((with_chromium)); then packages+=(chromium); fi
 
 missing=()
 for package in "${packages[@]}"; do
@@ -79,15 +88,23 @@ log="$build/setup-build.log"
 mkdir -p "$build"
 : >"$log"
 cmake_options=()
-((with_viewer)) || cmake_options+=(-DWPG_BUILD_VIEWER=OFF)
-if [[ -n "$with_mpi" ]]; then
-  cmake_options+=(-DWPG_WITH_MPI=ON)
-  # A build tree configured before MPI was installed has WPG_WITH_MPI=OFF in its cache.
-  if [[ -f "$build/CMakeCache.txt" ]] && ! grep -q '^WPG_WITH_MPI:BOOL=ON' "$build/CMakeCache.txt"; then
-    echo "setup: configuring $build with MPI (WPG_WITH_MPI=ON)"
+[[ -z "$with_mpi" ]] || cmake_options+=(-DWPG_WITH_MPI=ON)
+((!with_viewer)) || cmake_options+=(-DWPG_BUILD_VIEWER=ON)
+# A build tree configured before MPI, or Node.js and npm, were installed has WPG_WITH_MPI=OFF,
+# or WPG_BUILD_VIEWER=OFF, in its cache.
+if [[ -f "$build/CMakeCache.txt" ]]; then
+  turned_on=()
+  if [[ -n "$with_mpi" ]] && ! grep -q '^WPG_WITH_MPI:BOOL=ON' "$build/CMakeCache.txt"; then
+    turned_on+=(WPG_WITH_MPI=ON)
+  fi
+  if ((with_viewer)) && ! grep -q '^WPG_BUILD_VIEWER:BOOL=ON' "$build/CMakeCache.txt"; then
+    turned_on+=(WPG_BUILD_VIEWER=ON)
+  fi
+  if ((${#turned_on[@]})); then
+    echo "setup: configuring $build with ${turned_on[*]}"
     if ! cmake -S "$repo" -B "$build" "${cmake_options[@]}" >>"$log" 2>&1; then
       cat "$log" >&2
-      echo "setup: error: cmake configure with MPI failed (output above)" >&2
+      echo "setup: error: cmake configure with ${turned_on[*]} failed (output above)" >&2
       exit 1
     fi
   fi

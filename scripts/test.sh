@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
-# Sets up and builds wpg, then runs every test (unit, CLI regression, package test).
+# Sets up and builds wpg with what every test needs (setup.sh --for-tests: also Node.js, npm and
+# Chromium for the pages of `wpg view`), then runs every test (unit, CLI regression, viewer,
+# package test).
 set -euo pipefail
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="$(realpath -m -- "${WPG_BUILD_DIR:-$repo/build}")"
-"$repo/scripts/setup.sh"
+"$repo/scripts/setup.sh" --for-tests
 exec ctest --test-dir "$build" --output-on-failure -j2

@@ -7,7 +7,7 @@ VIEWER_TESTS="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 # Skip (exit 77) when there is no headless Chromium to open the pages in.
 require_chromium() {
   command -v chromium >/dev/null || command -v chromium-browser >/dev/null || {
-    echo "SKIP: no chromium (scripts/setup.sh installs the Debian package when tests are built)"
+    echo "SKIP: no chromium (scripts/setup.sh --for-tests, which scripts/test.sh runs, installs it)"
     exit 77
   }
 }

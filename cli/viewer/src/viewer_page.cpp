@@ -62,8 +62,8 @@ ViewerAssets loadViewerAssets(const std::string& data_directory) {
   for (const fs::path& folder : places) looked += (looked.empty() ? "" : ", ") + folder.string();
   throw datasets::InputError(
       "the viewer is not built (no wpg_viewer.js in " + looked +
-      "): it is bundled at build time with Node.js and npm; install them (scripts/setup.sh, or "
-      "the Debian packages nodejs npm), then reconfigure and build: cmake -S . -B build "
+      "): it is bundled at build time with Node.js and npm; install them (scripts/setup.sh "
+      "--with-viewer, or the Debian packages nodejs npm), then reconfigure and build: cmake -S . -B build "
       "-DWPG_BUILD_VIEWER=ON && cmake --build build --target wpg_viewer_bundle");
 }
 
