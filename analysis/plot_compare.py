@@ -19,7 +19,8 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from wpg_file_reading import Reader, import_h5py, open_file, run_script  # noqa: E402
+from wpg_file_reading import (Reader, import_h5py, open_file, png_metadata,  # noqa: E402
+                              run_script)
 
 SCRIPT = "plot_compare.py"
 import_h5py(SCRIPT)
@@ -30,7 +31,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 from matplotlib.patches import Circle, Polygon  # noqa: E402
 
-from plot_run import convex_hull  # noqa: E402  (one hull for every figure)
+from run_figure.geometry import convex_hull  # noqa: E402  (one hull for every figure)
 
 OBSTACLE_COLOUR = "0.35"
 # Figures drawn per world, boxes per world x variant: a study's file may declare any number.
@@ -177,7 +178,8 @@ def main():
         ax.legend(fontsize=8, ncol=min(len(variants), 4), loc="upper center",
                   bbox_to_anchor=(0.5, -0.1))
         fig.tight_layout()
-        fig.savefig(os.path.join(args.output, "success_rates.png"), dpi=110)
+        fig.savefig(os.path.join(args.output, "success_rates.png"), dpi=110,
+                    metadata=png_metadata(args.study_file))
         plt.close(fig)
 
         # Time to goal: a box per world x variant (reached runs only; empty boxes say "none").
@@ -208,7 +210,8 @@ def main():
         axes[0][0].set_ylabel("time to goal [s]")
         fig.suptitle("%s: time to goal of the runs that reached it" % study, fontsize=10)
         fig.tight_layout()
-        fig.savefig(os.path.join(args.output, "time_to_goal.png"), dpi=110)
+        fig.savefig(os.path.join(args.output, "time_to_goal.png"), dpi=110,
+                    metadata=png_metadata(args.study_file))
         plt.close(fig)
 
         # A top view per world.
@@ -218,6 +221,7 @@ def main():
             first_seed = min(s for s, w in zip(run_seed, run_world) if w == world)
             fig, ax = plt.subplots(figsize=(8.0, 5.0))
             drawn_world = False
+            missed = False
             for name, w, v, s, r in zip(run_names, run_world, run_variant, run_seed, reached):
                 if w != world or (not fixed and s != first_seed):
                     continue
@@ -231,11 +235,13 @@ def main():
                 ax.plot(com[:, 0], com[:, 1], color=colours[v], linestyle=styles[v], linewidth=0.9,
                         alpha=0.75)
                 if r != 1:
+                    missed = True
                     ax.plot([com[-1, 0]], [com[-1, 1]], marker="x", color=colours[v],
                             markersize=8, markeredgewidth=2, linestyle="none")
             for variant in variants:
                 ax.plot([], [], color=colours[variant], linestyle=styles[variant], label=variant)
-            ax.plot([], [], marker="x", color="black", linestyle="none", label="goal missed")
+            if missed:  # only when a run drawn here missed the goal
+                ax.plot([], [], marker="x", color="black", linestyle="none", label="goal missed")
             ax.set_aspect("equal")
             ax.autoscale_view()
             ax.set_xlabel("x [m]")
@@ -243,9 +249,11 @@ def main():
             ax.grid(alpha=0.3)
             which = "every seed" if fixed else "seed %d (the world is drawn per seed)" % first_seed
             ax.set_title("%s / %s: CoM paths, %s" % (study, world, which), fontsize=10)
-            ax.legend(fontsize=8, loc="best")
+            # Beside the axes: inside, "best" can cover obstacles.
+            ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.02, 1.0))
             fig.tight_layout()
-            fig.savefig(os.path.join(args.output, "top_%s.png" % world), dpi=110)
+            fig.savefig(os.path.join(args.output, "top_%s.png" % world), dpi=110,
+                        bbox_inches="tight", metadata=png_metadata(args.study_file))
             plt.close(fig)
     return 0
 

@@ -14,7 +14,8 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from wpg_file_reading import BadFile, Reader, import_h5py, open_file, run_script  # noqa: E402
+from wpg_file_reading import (BadFile, Reader, import_h5py, open_file, png_metadata,  # noqa: E402
+                              run_script)
 
 SCRIPT = "plot_push_sweep.py"
 import_h5py(SCRIPT)
@@ -83,7 +84,7 @@ def main():
         title += "\n--set " + " ".join(overrides)
     fig.suptitle(title, fontsize=10)
     fig.tight_layout()
-    fig.savefig(args.output, dpi=110)
+    fig.savefig(args.output, dpi=110, metadata=png_metadata(args.sweep_file))
     return 0
 
 

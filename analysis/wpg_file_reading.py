@@ -3,7 +3,7 @@
 A file given to a plot script may be anyone's: truncated, bit-flipped, or made to declare
 2e8 rows in a few kB. Every read here checks what it gets (group or dataset, rank, columns,
 number type, finite values) and the size a dataset declares BEFORE h5py allocates it (the
-limits of wpg/datasets/read_limits.hpp, datasets/SCHEMA.md "Reading"). Any problem is a
+limits of wpg/datasets/storage/read_limits.hpp, datasets/SCHEMA.md "Reading"). Any problem is a
 BadFile whose message is one line, "FILE: /path: expected ...", and `run_script` turns it
 (and any other error while reading or drawing) into that one line on stderr and exit status 2:
 no traceback. The stored scenario is parsed with PyYAML (a setup dependency), never with
@@ -13,7 +13,7 @@ import math
 import os
 import sys
 
-# As wpg/datasets/read_limits.hpp.
+# As wpg/datasets/storage/read_limits.hpp.
 MAX_STORED_SAMPLES = 720001  # rows of a run's per-sample datasets (3600 s at 5 ms, + 1)
 MAX_READ_ELEMENTS = 1 << 26  # elements of any one dataset or attribute
 
@@ -51,6 +51,13 @@ def run_script(script, main):
                % (inputs[0] if inputs else "?", type(error).__name__, one_line(error)[:200]))
         sys.exit(2)
     sys.exit(status or 0)
+
+
+def png_metadata(source):
+    """The PNG text of a figure: who drew it (wpg's version, commit, machine and date, given by
+    `wpg` in WPG_PROVENANCE) and from which file."""
+    return {"Software": os.environ.get("WPG_PROVENANCE") or "wpg analysis scripts",
+            "Source": os.path.basename(str(source))}
 
 
 def import_h5py(script):

@@ -57,6 +57,7 @@ int main(int argc, char** argv) {
   registerDiffCommand(app, command);
   registerPushSweepCommand(app, command);
   registerPlotCommand(app, command);
+  registerViewCommand(app, command);
 
   try {
     app.parse(argc, argv);

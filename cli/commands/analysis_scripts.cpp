@@ -14,6 +14,7 @@
 #include "data_paths.hpp"
 #include "error_messages.hpp"
 #include "exit_codes.hpp"
+#include "wpg/datasets/storage/provenance.hpp"
 
 extern char** environ;
 
@@ -26,8 +27,10 @@ constexpr const char* kPython = "/usr/bin/python3";
 
 }  // namespace
 
-int drawFigure(const std::string& run_file, const std::string& figure_file) {
-  return runAnalysisScript(plotScriptPath(), {run_file, "-o", figure_file});
+int drawFigure(const std::string& run_file, const std::string& figure_file, const std::string& run) {
+  std::vector<std::string> arguments = {run_file, "-o", figure_file};
+  if (!run.empty()) arguments.insert(arguments.end(), {"--run", run});
+  return runAnalysisScript(plotScriptPath(), arguments);
 }
 
 int runAnalysisScript(const std::string& script, const std::vector<std::string>& arguments) {
@@ -42,8 +45,12 @@ int runAnalysisScript(const std::string& script, const std::vector<std::string>&
     printError("plot script not found: " + script + " (set WPG_DATA_DIR to the wpg data folder)");
     return kExitBadInput;
   }
-  // The script reports its errors as "wpg: error: ..." like the rest of the CLI.
+  // The script reports its errors as "wpg: error: ..." like the rest of the CLI, and writes who
+  // drew the figure into the PNG (its Software text, as every file of wpg names its writer).
   ::setenv("WPG_PLOT_PROG", "wpg", 1);
+  const datasets::Provenance who = datasets::currentProvenance();
+  ::setenv("WPG_PROVENANCE", ("wpg " + who.version + " (commit " + who.commit + ") on " +
+                              who.machine + " at " + who.date).c_str(), 1);
   std::vector<std::string> args{kPython, script};
   args.insert(args.end(), arguments.begin(), arguments.end());
   std::vector<char*> argv;

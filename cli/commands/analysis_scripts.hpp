@@ -6,9 +6,10 @@
 
 namespace wpg::cli {
 
-// Runs /usr/bin/python3 <plot script> run_file -o figure_file; returns its exit status
-// (kExitBadInput with a message on stderr when Python or its modules are missing).
-int drawFigure(const std::string& run_file, const std::string& figure_file);
+// Runs /usr/bin/python3 <plot script> run_file -o figure_file [--run run]; returns its exit
+// status (kExitBadInput with a message on stderr when Python or its modules are missing).
+int drawFigure(const std::string& run_file, const std::string& figure_file,
+               const std::string& run = "");
 // Runs /usr/bin/python3 script arguments... (the same checks and messages as drawFigure).
 int runAnalysisScript(const std::string& script, const std::vector<std::string>& arguments);
 

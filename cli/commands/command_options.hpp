@@ -67,6 +67,7 @@ struct CompareOptions {
   int threads = 1;
   bool plot = true;
   bool threads_given = false;  // -j on the command line (under MPI the default is 1 per rank)
+  std::string ompl_log;        // --ompl-log DIR: OMPL benchmark logs, one per world
 };
 int compareCommand(const CompareOptions& options);
 
@@ -101,8 +102,19 @@ int pushSweepCommand(const PushSweepOptions& options);
 
 struct PlotOptions {
   std::string input;
-  std::string output;  // empty: the input with its extension replaced by .png
+  std::string output;  // empty: the input with its extension replaced by .png (.RUN.png with --run)
+  std::string run;     // --run NAME: that run of a file with several
 };
 int plotCommand(const PlotOptions& options);
+
+// `wpg view FILE.h5 [--run NAME] [-o PAGE.html]` and `wpg view DIR`: an HTML page to watch a
+// run (its robot, footsteps, obstacles, plots) or to explore a study (docs/viewer.md). Exit 0,
+// or 2 on bad input (nothing written) and when the viewer bundle is missing.
+struct ViewOptions {
+  std::string input;   // a run file, a batch file, or the folder of `wpg compare`
+  std::string run;     // --run NAME: one run of a batch file
+  std::string output;  // -o PAGE.html; empty: beside the input
+};
+int viewCommand(const ViewOptions& options);
 
 }  // namespace wpg::cli

@@ -3,7 +3,10 @@
 // (comparison_run.hpp) on N worker threads, or on the ranks of an MPI job (DIR/study.h5 is then
 // the index of DIR/study.shards/): DIR/study.h5 (a group per run and /batch/summary, as
 // `wpg batch`, plus /compare/summary: one row per world x variant; datasets/SCHEMA.md),
-// DIR/summary.csv, DIR/summary.md and the figures of analysis/plot_compare.py.
+// DIR/summary.csv, DIR/summary.md and the figures of analysis/plot_compare.py; with
+// --ompl-log LOGS, LOGS/<world>.log in OMPL's benchmark log format
+// (comparison_benchmark_logs.hpp).
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -18,6 +21,7 @@
 #include "study_progress.hpp"
 #include "wpg/datasets/input/input_error.hpp"
 #include "wpg/datasets/storage/output_file.hpp"
+#include "wpg/engine/comparison_benchmark_logs.hpp"
 #include "wpg/engine/comparison_run.hpp"
 #include "wpg/engine/mpi_executor.hpp"
 #include "wpg/engine/run_input_checks.hpp"
@@ -55,6 +59,7 @@ void printComparison(const std::vector<analysis::ComparisonCell>& cells) {
 int compareCommand(const CompareOptions& options) {
   if (options.threads < 1) throw UsageError("-j: expected a number of worker threads >= 1");
   if (options.output.empty()) throw UsageError("-o: expected the folder to write (DIR)");
+  const auto started = std::chrono::steady_clock::now();  // the study's wall time, in the logs
   std::error_code ec;
   if (!fs::is_regular_file(options.study, ec)) {
     throw UsageError(options.study + ": cannot read the study file: no such file");
@@ -80,6 +85,13 @@ int compareCommand(const CompareOptions& options) {
     }
     datasets::checkWritableParent(batch_file.string());
     engine::checkStudyRobotModels(comparison.study, robotsDirectory());
+    if (!options.ompl_log.empty()) {
+      try {
+        engine::checkBenchmarkLogOutputs(options.ompl_log, comparison.worlds);
+      } catch (const datasets::InputError& e) {
+        throw UsageError(std::string("--ompl-log: ") + e.what());
+      }
+    }
   });
   const datasets::Study& study = comparison.study;
 
@@ -110,6 +122,18 @@ int compareCommand(const CompareOptions& options) {
       std::cout.flush();
       printWarning("the study's figures could not be drawn (Python with h5py and matplotlib?)");
     }
+  }
+  if (!options.ompl_log.empty()) {
+    const std::chrono::duration<double> seconds = std::chrono::steady_clock::now() - started;
+    std::vector<std::string> logs;
+    try {
+      logs = engine::writeComparisonBenchmarkLogs(batch_file.string(), options.ompl_log,
+                                                  seconds.count());
+    } catch (const datasets::InputError& e) {
+      throw UsageError(std::string("--ompl-log: ") + e.what());
+    }
+    std::cout << ", OMPL logs";
+    for (const std::string& log : logs) std::cout << " " << log;
   }
   std::cout << "\n";
   if (world) engine::finishMpi();

@@ -1,5 +1,5 @@
-// `wpg plot RUN.h5 [-o FIG.png]`: the figure of a run dataset (analysis/plot_run.py, the figure
-// `wpg run` draws too).
+// `wpg plot RUN.h5 [-o FIG.png] [--run NAME]`: the figure of a run dataset, or of one run of a
+// batch file (analysis/plot_run.py, the figure `wpg run` draws too).
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -24,7 +24,9 @@ int plotCommand(const PlotOptions& options) {
     throw UsageError("cannot read run file '" + options.input + "'");
   }
   fs::path figure = options.output;
-  if (figure.empty()) figure = fs::path(options.input).replace_extension(".png");
+  if (figure.empty()) {
+    figure = fs::path(options.input).replace_extension(options.run.empty() ? ".png" : "." + options.run + ".png");
+  }
   // Never over the run file, a device, a folder or a file that is not a PNG (output_file.hpp).
   try {
     datasets::checkOutputPath(figure.string(), datasets::OutputKind::kPng, {options.input});
@@ -39,7 +41,7 @@ int plotCommand(const PlotOptions& options) {
   }
   // The script checks the file and reports a bad one in one line (exit 2); any failure of it
   // is the input's (no walk ran): exit 2, as every other bad input.
-  const int status = drawFigure(options.input, figure.string());
+  const int status = drawFigure(options.input, figure.string(), options.run);
   if (status != kExitSuccess) return kExitBadInput;
   std::cout << "figure: " << figure.string() << '\n';
   return kExitSuccess;

@@ -184,6 +184,10 @@ void registerCompareCommand(CLI::App& app, CommandAction& action) {
       ->default_str("the number of cores; 1 per rank under MPI")
       ->type_name("N");
   compare_app->add_flag("--no-plot", parsed->no_plot, "Do not draw the figures");
+  compare_app->add_option("--ompl-log", compare.ompl_log,
+                          "Also write OMPL benchmark logs into DIR, one per world (OMPL's "
+                          "ompl_benchmark_statistics.py and Planner Arena read them)")
+      ->type_name("DIR");
   runWhenParsed(compare_app, action, parsed, &compareCommand,
                 [](Parsed<CompareOptions>& p, CLI::App& sub) {
                   p.options.plot = !p.no_plot;
@@ -275,13 +279,32 @@ void registerPlotCommand(CLI::App& app, CommandAction& action) {
   auto parsed = std::make_shared<Parsed<PlotOptions>>();
   PlotOptions& plot = parsed->options;
   CLI::App* plot_app = app.add_subcommand("plot", "Draw the figure of a run dataset (PNG).");
-  plot_app->add_option("run_file", plot.input, "HDF5 dataset written by `wpg run`")
+  plot_app->add_option("run_file", plot.input, "Run or batch file (`wpg run`, `wpg batch`)")
       ->required()
       ->type_name("RUN.h5");
   plot_app->add_option("-o,--output", plot.output, "PNG to write")
-      ->default_str("RUN.png next to RUN.h5")
+      ->default_str("RUN.png next to RUN.h5 (RUN.NAME.png with --run)")
       ->type_name("FIG.png");
+  plot_app->add_option("--run", plot.run, "Draw only this run of the file (a batch file holds many)")
+      ->type_name("NAME");
   runWhenParsed(plot_app, action, parsed, &plotCommand, [](Parsed<PlotOptions>&, CLI::App&) {});
+}
+
+void registerViewCommand(CLI::App& app, CommandAction& action) {
+  auto parsed = std::make_shared<Parsed<ViewOptions>>();
+  ViewOptions& view = parsed->options;
+  CLI::App* view_app = app.add_subcommand(
+      "view", "Write an HTML page to watch a run (robot, footsteps, obstacles, plots) or to explore "
+              "a study (a batch file, or the folder of `wpg compare`); docs/viewer.md.");
+  view_app->add_option("input", view.input, "Run or batch file, or the folder of `wpg compare`")
+      ->required()
+      ->type_name("FILE.h5|DIR");
+  view_app->add_option("--run", view.run, "One run of a batch file (its page instead of the dashboard)")
+      ->type_name("NAME");
+  view_app->add_option("-o,--output", view.output, "Page to write")
+      ->default_str("FILE.html beside FILE.h5, DIR/view.html")
+      ->type_name("PAGE.html");
+  runWhenParsed(view_app, action, parsed, &viewCommand, [](Parsed<ViewOptions>&, CLI::App&) {});
 }
 
 }  // namespace wpg::cli

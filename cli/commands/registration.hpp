@@ -24,5 +24,6 @@ void registerAnalyzeCommand(CLI::App& app, CommandAction& action);
 void registerDiffCommand(CLI::App& app, CommandAction& action);
 void registerPushSweepCommand(CLI::App& app, CommandAction& action);
 void registerPlotCommand(CLI::App& app, CommandAction& action);
+void registerViewCommand(CLI::App& app, CommandAction& action);
 
 }  // namespace wpg::cli

@@ -7,8 +7,9 @@ Source of every number: the project's HRP-2 fact sheet (shared/robots/hrp2-param
 a transcription of `data/robots/hrp2.rob` of the Klamp't toolkit (krishauser/Klampt commit
 66cf52f8, also krishauser/Klampt-examples; BSD-3-Clause, Copyright (c) 2017, the Trustees of
 Duke University). TABLE below is section 2 of the fact sheet (rows 5-35) copied verbatim;
-BOXES is its appendix B (mesh bounding boxes in the link frames), used for simple box
-visual/collision geometry.
+BOXES is its appendix B (mesh bounding boxes in the link frames), used for the collision boxes;
+the visual geometry (VISUALS: boxes, cylinders, spheres, for `wpg view`) is drawn from the
+joint origins.
 
 Conventions (fact sheet section 1): every joint origin has rpy = 0; axes are in the child
 frame; CoMs in the link frame; inertias about the CoM with link-frame axes, URDF signs.
@@ -178,15 +179,91 @@ def inertial_xml(row, indent):
     )
 
 
-def box_xml(ranges, indent):
+def collision_xml(ranges, indent):
+    """The link's collision box: the bounding box of Klampt's mesh (appendix B)."""
     centre = [0.5 * (lo + hi) for lo, hi in ranges]
     size = [hi - lo for lo, hi in ranges]
-    geometry = (
-        f'{indent}  <origin xyz="{" ".join(fmt(round(v, 6)) for v in centre)}" rpy="0 0 0"/>\n'
-        f'{indent}  <geometry><box size="{" ".join(fmt(round(v, 6)) for v in size)}"/></geometry>\n'
-    )
-    return (f'{indent}<visual>\n{geometry}{indent}</visual>\n'
-            f'{indent}<collision>\n{geometry}{indent}</collision>\n')
+    return (f'{indent}<collision>\n'
+            f'{indent}  <origin xyz="{" ".join(fmt(round(v, 6)) for v in centre)}" rpy="0 0 0"/>\n'
+            f'{indent}  <geometry><box size="{" ".join(fmt(round(v, 6)) for v in size)}"/></geometry>\n'
+            f'{indent}</collision>\n')
+
+
+# Visual geometry: what `wpg view` draws. Primitives sized like HRP-2's limbs (placed from the
+# joint origins of TABLE: hips 0.06 m off the waist axis, thigh and shank 0.3 m, the ankle
+# 0.035 m outward of the knee, sole 0.2172 x 0.138 m 0.105 m below the ankle, shoulders at
+# 0.25 m, upper arm and forearm 0.25 m) and coloured like its shell (light grey panels, blue
+# trim, dark joints). Visuals only: the collision boxes, masses and inertias above are
+# untouched, so the multibody results do not depend on them.
+MATERIALS = {"shell": "0.86 0.88 0.91 1", "trim": "0.16 0.33 0.66 1", "joint": "0.2 0.21 0.24 1",
+             "visor": "0.05 0.06 0.08 1"}
+SHANK_TILT = math.atan2(0.035, 0.3)  # rad, the shank leans outward from knee to ankle
+
+
+def leg_visuals(side):
+    """Shapes of one leg, side = 1 (left) or -1 (right)."""
+    return {
+        "LINK1": [("cylinder", (0.055, 0.13), (0, 0, 0), (0, math.pi / 2, 0), "joint")],
+        "LINK2": [("cylinder", (0.062, 0.24), (0, 0, -0.15), (0, 0, 0), "shell"),
+                  ("box", (0.1, 0.09, 0.16), (0.035, 0, -0.14), (0, 0, 0), "trim")],
+        "LINK3": [("sphere", (0.062,), (0, 0, 0), (0, 0, 0), "joint"),
+                  ("cylinder", (0.052, 0.27), (0, side * 0.0175, -0.15), (-side * SHANK_TILT, 0, 0), "shell"),
+                  ("box", (0.05, 0.07, 0.14), (0.045, side * 0.012, -0.11), (-side * SHANK_TILT, 0, 0), "trim")],
+        "LINK4": [("cylinder", (0.042, 0.1), (0, 0, 0), (math.pi / 2, 0, 0), "joint")],
+        "LINK5": [("box", (0.2172, 0.138, 0.025), (0, 0, -SOLE_DEPTH + 0.0125), (0, 0, 0), "joint"),
+                  ("box", (0.19, 0.12, 0.05), (0.005, 0, -0.066), (0, 0, 0), "shell")],
+    }
+
+
+def arm_visuals(side):
+    return {
+        "LINK0": [("sphere", (0.068,), (0, 0, 0), (0, 0, 0), "trim")],
+        "LINK2": [("cylinder", (0.048, 0.2), (0, 0, -0.13), (0, 0, 0), "shell")],
+        "LINK3": [("sphere", (0.05,), (0, 0, 0), (0, 0, 0), "joint"),
+                  ("cylinder", (0.043, 0.2), (0, 0, -0.13), (0, 0, 0), "shell")],
+        "LINK4": [("cylinder", (0.036, 0.05), (0, 0, -0.02), (0, 0, 0), "joint")],
+        "LINK5": [("box", (0.07, 0.09, 0.1), (0.01, 0, -0.06), (0, 0, 0), "trim")],
+        "LINK6": [("box", (0.025, 0.03, 0.08), (0, 0, -0.035), (0, 0, 0), "joint")],
+    }
+
+
+VISUALS = {
+    "BODY": [("box", (0.22, 0.28, 0.13), (-0.015, 0, 0.06), (0, 0, 0), "shell"),
+             ("box", (0.2, 0.24, 0.04), (-0.015, 0, 0.145), (0, 0, 0), "trim"),
+             ("cylinder", (0.09, 0.2), (0.01, 0, 0.25), (0, 0, 0), "joint")],
+    "CHEST_LINK1": [("box", (0.25, 0.36, 0.3), (-0.03, 0, 0.15), (0, 0, 0), "shell"),
+                    ("box", (0.11, 0.28, 0.22), (-0.19, 0, 0.14), (0, 0, 0), "shell"),
+                    ("box", (0.02, 0.22, 0.15), (0.1, 0, 0.16), (0, 0, 0), "trim")],
+    "HEAD_LINK0": [("cylinder", (0.04, 0.08), (0, 0, 0.01), (0, 0, 0), "joint")],
+    "HEAD_LINK1": [("box", (0.22, 0.2, 0.17), (-0.01, 0, 0.1), (0, 0, 0), "shell"),
+                   ("box", (0.025, 0.17, 0.065), (0.1, 0, 0.11), (0, 0, 0), "visor"),
+                   ("box", (0.17, 0.03, 0.05), (-0.02, 0, 0.2), (0, 0, 0), "trim")],
+}
+for _side, _prefix in ((1, "L"), (-1, "R")):
+    VISUALS.update({_prefix + "LEG_" + k: v for k, v in leg_visuals(_side).items()})
+    VISUALS.update({_prefix + "ARM_" + k: v for k, v in arm_visuals(_side).items()})
+
+
+def visual_xml(link, indent):
+    out = []
+    for shape, size, xyz, rpy, material in VISUALS.get(link, []):
+        if shape == "box":
+            geometry = f'<box size="{" ".join(fmt(round(v, 6)) for v in size)}"/>'
+        elif shape == "cylinder":
+            geometry = f'<cylinder radius="{fmt(size[0])}" length="{fmt(size[1])}"/>'
+        else:
+            geometry = f'<sphere radius="{fmt(size[0])}"/>'
+        out.append(f'{indent}<visual>\n'
+                   f'{indent}  <origin xyz="{" ".join(fmt(round(v, 6)) for v in xyz)}" '
+                   f'rpy="{" ".join(fmt(round(v, 9)) for v in rpy)}"/>\n'
+                   f'{indent}  <geometry>{geometry}</geometry>\n'
+                   f'{indent}  <material name="{material}"/>\n'
+                   f'{indent}</visual>\n')
+    return "".join(out)
+
+
+def geometry_xml(link, ranges, indent):
+    return visual_xml(link, indent) + collision_xml(ranges, indent)
 
 
 def main():
@@ -200,15 +277,18 @@ def main():
                "     BSD-3-Clause, Copyright (c) 2017, the Trustees of Duke University), transcribed in the\n"
                "     project's HRP-2 fact sheet; see robots/hrp2/README.md.\n"
                "     Frames: x forward, y left, z up; every link frame is parallel to BODY at q = 0.\n"
-               "     Inertias about the link CoM, link-frame axes. Geometry: axis-aligned boxes = the\n"
-               "     bounding boxes of Klampt's link meshes (coarse, overlapping: not for self-collision).\n"
+               "     Inertias about the link CoM, link-frame axes. Collision geometry: axis-aligned boxes =\n"
+               "     the bounding boxes of Klampt's link meshes (coarse, overlapping: not for self-collision).\n"
+               "     Visual geometry: boxes, cylinders and spheres sized like HRP-2's limbs (wpg view).\n"
                "     LLEG_SOLE / RLEG_SOLE: massless frames 0.105 m below the ankles (sole plane). -->\n")
     out.append('<robot name="hrp2">\n')
+    for name, rgba in MATERIALS.items():
+        out.append(f'  <material name="{name}"><color rgba="{rgba}"/></material>\n')
     body = rows[0]
     assert body["link"] == "BODY"
     out.append('  <link name="BODY">\n')
     out.append(inertial_xml(body, "    "))
-    out.append(box_xml(boxes["BODY"], "    "))
+    out.append(geometry_xml("BODY", boxes["BODY"], "    "))
     out.append("  </link>\n")
     for row in rows[1:]:
         assert row["type"] == "revolute", row
@@ -223,7 +303,7 @@ def main():
         out.append("  </joint>\n")
         out.append(f'  <link name="{row["link"]}">\n')
         out.append(inertial_xml(row, "    "))
-        out.append(box_xml(boxes[row["link"]], "    "))
+        out.append(geometry_xml(row["link"], boxes[row["link"]], "    "))
         out.append("  </link>\n")
     for side, foot in (("L", "LLEG_LINK5"), ("R", "RLEG_LINK5")):
         out.append(f'  <joint name="{side}LEG_SOLE_JOINT" type="fixed">\n')

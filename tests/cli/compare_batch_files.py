@@ -1,7 +1,9 @@
 """compare_batch_files.py A.h5 B.h5: the two files hold the same contents, bit for bit, except
 the wall-time fields (datasets/SCHEMA.md, "Batch files": mpc/solve_time, the timing/ group and
 the summary's nmpc_time_* columns; a goal walk's plans/planning_time and
-plans/simplification_time; the planning and NMPC time columns of `wpg compare`'s tables). Exit 0 same, 1 different (each difference on stderr).
+plans/simplification_time; the planning and NMPC time columns of `wpg compare`'s tables) and
+the root attributes that say where and when a file was written (created_on, created_at). Exit 0
+same, 1 different (each difference on stderr).
 
 Reads both files with h5py only: every group, dataset (values and dtype) and attribute.
 """
@@ -15,6 +17,9 @@ WALL_TIME = ("solve_time", "timing", "nmpc_time_mean", "nmpc_time_std", "nmpc_ti
              # walks to a goal (plans/) and `wpg compare` (/batch/summary, /compare/summary)
              "planning_time", "simplification_time", "planning_time_median", "planning_time_max",
              "nmpc_time_median")
+
+# Where and when the file was written (wpg/datasets/storage/provenance.hpp): not its contents.
+PROVENANCE = ("created_on", "created_at")
 
 differences = []
 
@@ -38,6 +43,8 @@ def compare_attributes(path, a, b):
         differences.append(f"{path}: attributes {sorted(set(a.attrs) ^ set(b.attrs))}")
         return
     for name in a.attrs:
+        if path == "" and name in PROVENANCE:
+            continue
         if not same_values(a.attrs[name], b.attrs[name]):
             differences.append(f"{path}: attribute {name} differs")
 

@@ -14,6 +14,7 @@
 #include "test_support.hpp"
 #include <gtest/gtest.h>
 
+#include "wpg/datasets/storage/provenance.hpp"
 #include "wpg/datasets/storage/run_dataset.hpp"
 
 namespace fs = std::filesystem;
@@ -83,6 +84,11 @@ TEST_F(RunDatasetFiles, WritesTheSchemaAndReadsBackTheSameNumbers) {
   EXPECT_EQ(stringAttribute(file, "wpg_version"), WPG_VERSION_STRING);
   EXPECT_EQ(stringAttribute(file, "scenario"), scenario.resolved_yaml);
   EXPECT_EQ(stringAttribute(file, "created_by"), "wpg");
+  // Provenance (provenance.hpp): the configured commit, this host, a UTC date of this year.
+  EXPECT_EQ(stringAttribute(file, "wpg_commit"), wpg::datasets::buildCommit());
+  EXPECT_EQ(stringAttribute(file, "created_on"), wpg::datasets::currentProvenance().machine);
+  EXPECT_EQ(stringAttribute(file, "created_at").size(), 20u);  // 2025-11-25T16:03:00Z
+  EXPECT_EQ(stringAttribute(file, "created_at").substr(0, 4), wpg::datasets::currentProvenance().date.substr(0, 4));
 
   const H5::Group run = file.openGroup("/runs/hand_made");
   EXPECT_EQ(stringAttribute(run, "algorithm"),

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "wpg/analysis/run_metrics.hpp"
+#include "wpg/datasets/storage/provenance.hpp"
 
 namespace fs = std::filesystem;
 
@@ -93,6 +94,9 @@ void writeTableMarkdown(const datasets::BatchSummaryTable& table, const std::str
     }
     out << "\n";
   }
+  const datasets::Provenance who = datasets::currentProvenance();  // as every file of wpg
+  out << "\nWritten by wpg " << who.version << " (commit " << who.commit << ") on " << who.machine
+      << " at " << who.date << ".\n";
   if (!out) throw std::runtime_error("cannot write " + path);
 }
 

@@ -15,6 +15,7 @@
 
 #include "hdf5_bounded_reading.hpp"
 #include "hdf5_writing.hpp"
+#include "provenance_attributes.hpp"
 #include "run_group_writing.hpp"
 #include "wpg/datasets/storage/read_limits.hpp"
 #include "wpg/datasets/input/yaml_input.hpp"
@@ -157,6 +158,7 @@ std::unique_ptr<BatchDatasetWriter> BatchDatasetWriter::create(
     writeIntAttribute(h.file, "schema_version", kRunDatasetSchemaVersion);
     writeIntAttribute(h.file, "batch_schema_version", kBatchDatasetSchemaVersion);
     writeStringAttribute(h.file, "wpg_version", WPG_VERSION_STRING);
+    writeProvenanceAttributes(h.file);
     writeStringAttribute(h.file, "created_by", study.created_by);
     writeStringAttribute(h.file, "study", study.text);
     writeStringAttribute(h.file, "study_name", study.name);

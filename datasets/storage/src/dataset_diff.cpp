@@ -396,7 +396,8 @@ bool isWallTimeField(const std::string& path) {
 }
 
 bool isProvenanceAttribute(const std::string& name) {
-  return name == "wpg_version" || name == "created_by";
+  return name == "wpg_version" || name == "created_by" || name == "wpg_commit" ||
+         name == "created_on" || name == "created_at";
 }
 
 DatasetDiff diffDatasets(const std::string& path_a, const std::string& path_b,

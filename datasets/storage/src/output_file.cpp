@@ -116,6 +116,18 @@ bool holdsKind(const std::string& path, OutputKind kind, std::uintmax_t size) {
         if (c != ' ' && c != '\t' && c != '\n' && c != '\r') return c == '{' || c == '[';
       return false;
     }
+    case OutputKind::kHtml: {
+      char c = 0;
+      while (in.get(c))
+        if (c != ' ' && c != '\t' && c != '\n' && c != '\r') return c == '<';
+      return false;
+    }
+    case OutputKind::kBenchmarkLog: {
+      std::string first;
+      std::getline(in, first);
+      const std::size_t space = first.find(' ');
+      return space != std::string::npos && first.compare(space, 9, " version ") == 0;
+    }
   }
   return false;
 }
@@ -132,6 +144,8 @@ const char* outputKindName(OutputKind kind) {
     case OutputKind::kHdf5: return "an HDF5 file";
     case OutputKind::kPng: return "a PNG image";
     case OutputKind::kJson: return "a JSON file";
+    case OutputKind::kHtml: return "an HTML page";
+    case OutputKind::kBenchmarkLog: return "a benchmark log";
   }
   return "a file";
 }

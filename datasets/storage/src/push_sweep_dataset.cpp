@@ -12,6 +12,7 @@
 #include <stdexcept>
 
 #include "hdf5_writing.hpp"
+#include "provenance_attributes.hpp"
 #include "wpg/datasets/storage/output_file.hpp"
 #include "wpg/datasets/storage/run_dataset.hpp"
 
@@ -48,6 +49,7 @@ void writeFile(const std::string& path, const PushSweepFile& sweep) {
   H5::H5File file(path, H5F_ACC_TRUNC);
   detail::writeStringAttribute(file, "created_by", "wpg push-sweep");
   detail::writeStringAttribute(file, "wpg_version", WPG_VERSION_STRING);
+  detail::writeProvenanceAttributes(file);
   detail::writeIntAttribute(file, "push_sweep_schema_version", 1);
   detail::writeStringListAttribute(file, "situations", sweep.situations);
   detail::writeStringListAttribute(file, "scenarios", sweep.scenarios);

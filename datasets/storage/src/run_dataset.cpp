@@ -25,6 +25,7 @@
 #include "goal_dataset.hpp"
 #include "wpg/datasets/storage/output_file.hpp"
 #include "hdf5_writing.hpp"
+#include "provenance_attributes.hpp"
 #include "run_group_writing.hpp"
 #include "wpg/datasets/storage/dataset_checks.hpp"
 #include "wpg/obstacles.hpp"
@@ -507,6 +508,7 @@ void writeFile(const std::string& file_path, const Scenario& scenario, const Wal
   H5::H5File& file = *owned;
   writeIntAttribute(file, "schema_version", kRunDatasetSchemaVersion);
   writeStringAttribute(file, "wpg_version", WPG_VERSION_STRING);
+  writeProvenanceAttributes(file);
   writeStringAttribute(file, "scenario", scenario.resolved_yaml);
   writeStringAttribute(file, "created_by", "wpg");  // wpg run, wpg replay or a program of yours
 

@@ -59,7 +59,8 @@ struct DatasetDiff {
 // `path` is an object path such as "/runs/x/mpc/solve_time".
 bool isWallTimeField(const std::string& path);
 
-// Root attributes that say who wrote the file, not what it holds: wpg_version, created_by.
+// Root attributes that say who wrote the file, where and when, not what it holds: wpg_version,
+// created_by, wpg_commit, created_on, created_at (provenance.hpp).
 bool isProvenanceAttribute(const std::string& name);
 
 // Compares the files at path_a and path_b. Throws InputError (one line naming the file) when

@@ -22,6 +22,8 @@ enum class OutputKind {
   kHdf5,  // "\x89HDF\r\n\x1a\n" at offset 0, 512, 1024, ... (HDF5's superblock signature)
   kPng,   // "\x89PNG\r\n\x1a\n" at offset 0
   kJson,  // first non-blank character '{' or '['
+  kHtml,  // first non-blank character '<' (the pages of `wpg view`)
+  kBenchmarkLog,  // first line "<library> version <number>" (OMPL's benchmark log format)
 };
 const char* outputKindName(OutputKind kind);  // "an HDF5 file", "a PNG image", "a JSON file"
 

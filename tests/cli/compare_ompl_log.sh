@@ -1,0 +1,20 @@
+#!/usr/bin/env bash
+# compare_ompl_log.sh WPG STUDY.yaml: `wpg compare --ompl-log DIR` writes one OMPL benchmark log
+# per world that a reader written from OMPL's documented grammar parses, with every run of the
+# study (check_ompl_log.py); an --ompl-log that is a file is refused before anything runs.
+set -euo pipefail
+# shellcheck source=common.sh
+source "$(dirname "$0")/common.sh"
+wpg="$1" study="$2"
+make_workdir
+"$wpg" compare "$study" -o "$WORKDIR/out" -j 2 --no-plot --ompl-log "$WORKDIR/logs" >"$WORKDIR/stdout" \
+  || fail "compare --ompl-log: exit status $?"
+grep -q "OMPL logs" "$WORKDIR/stdout" || fail "compare does not name the logs: $(cat "$WORKDIR/stdout")"
+"$PYTHON" "$HERE/check_ompl_log.py" "$WORKDIR/logs" "$WORKDIR/out/study.h5" || fail "the OMPL logs"
+
+touch "$WORKDIR/a_file"
+status=0
+"$wpg" compare "$study" -o "$WORKDIR/out2" --no-plot --ompl-log "$WORKDIR/a_file" 2>"$WORKDIR/stderr" || status=$?
+[[ $status == 2 ]] || fail "--ompl-log over a file: exit status $status, expected 2"
+grep -q -- "--ompl-log" "$WORKDIR/stderr" || fail "--ompl-log over a file: $(cat "$WORKDIR/stderr")"
+[[ ! -e "$WORKDIR/out2" ]] || fail "--ompl-log over a file: the study was run"

@@ -1,0 +1,109 @@
+"""check_dashboard.py PAGE.html STUDY.h5 OUT_DIR: the dashboard of a study (`wpg view`) in
+headless Chromium with the network off.
+
+- no console error, warning or exception, no request outside the page's folder;
+- a comparison study: the box plots and the success rates draw every world x variant of the
+  file's /compare attributes, each with all its seeds, and a top view per world x seed, its
+  caption "seed S · R/N reached" (words apart, as read aloud or copied) with the seed and
+  the count of the file's goal_reached for that world and seed;
+  a batch: a top view per run;
+- every run of /batch/summary has its page beside the dashboard (PAGE_runs/<run>.html), and
+  the first one opens without error at #t=1 (its script, shared in PAGE_runs/, is found).
+The screenshot of the dashboard is kept in OUT_DIR/dashboard.png. Exit 0, or 1 with the reasons.
+"""
+import os
+import re
+import sys
+
+import h5py
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from headless_page import HeadlessChromium  # noqa: E402
+
+READY = "document.body && document.body.dataset.wpgReady === '1'"
+
+
+def fail(message):
+    print("FAIL: " + message, file=sys.stderr)
+    sys.exit(1)
+
+
+def main():
+    page_path, study, out = (os.path.abspath(a) for a in sys.argv[1:4])
+    folder = "file://" + os.path.dirname(page_path) + "/"
+    with h5py.File(study, "r") as f:
+        names = [n.decode() if isinstance(n, bytes) else n for n in f["batch/summary/name"][()]]
+        comparison = "compare" in f
+        if comparison:
+            worlds = [str(w) for w in f["compare"].attrs["worlds"]]
+            variants = [str(v) for v in f["compare"].attrs["variants"]]
+            seeds = len(f["compare"].attrs["seeds"])
+            summary = f["batch/summary"]
+            text = lambda column: [v.decode() if isinstance(v, bytes) else str(v) for v in summary[column][()]]
+            # (world, seed) -> [runs that reached the goal, runs], in the study's order.
+            captions = {}
+            for world, seed, reached in zip(text("sweep.world"), text("sweep.seed"),
+                                            summary["goal_reached"][()]):
+                counts = captions.setdefault((world, float(seed)), [0, 0])
+                counts[0] += int(reached == 1)
+                counts[1] += 1
+    runs_folder = os.path.splitext(page_path)[0] + "_runs"
+    for name in names:
+        if not os.path.isfile(os.path.join(runs_folder, name + ".html")):
+            fail("no run page for %s in %s" % (name, runs_folder))
+    print("%d run pages in %s" % (len(names), runs_folder))
+
+    with HeadlessChromium(1280, 2000) as browser:
+        page = browser.open("file://" + page_path)
+        page.wait_for(READY)
+        page.screenshot(os.path.join(out, "dashboard.png"))
+        drawn = page.evaluate("window.wpgDashboard")
+        problems = page.problems(folder)
+        if problems:
+            fail("dashboard: " + "; ".join(problems))
+        if comparison:
+            expected = [(w, v) for w in worlds for v in variants]
+            for key in ("boxCells", "rateCells"):
+                cells = [(c["group"], c["label"]) for c in drawn[key]]
+                if cells != expected:
+                    fail("%s: drew %s, expected every world x variant %s" % (key, cells, expected))
+            totals = [c["total"] for c in drawn["rateCells"]]
+            boxes = [c["n"] + c["missing"] for c in drawn["boxCells"]]
+            if totals != [seeds] * len(expected) or boxes != [seeds] * len(expected):
+                fail("runs per cell: rates %s, boxes %s, expected %d each" % (totals, boxes, seeds))
+            if drawn["topViews"] != len(worlds) * seeds:
+                fail("%d top views, expected %d (world x seed)" % (drawn["topViews"], len(worlds) * seeds))
+            print("every world x variant drawn: %s, %d seeds each; %d top views"
+                  % (", ".join("%s/%s" % c for c in expected), seeds, drawn["topViews"]))
+            shown = page.evaluate("Array.from(document.querySelectorAll('.top-view .caption'))"
+                                  ".map((c) => c.textContent)")
+            want = list(captions.items())
+            if len(shown) != len(want):
+                fail("%d top-view captions, expected %d" % (len(shown), len(want)))
+            for caption, ((world, seed), (reached, runs)) in zip(shown, want):
+                match = re.fullmatch(r"seed (\S+) · (\d+)/(\d+) reached", caption)
+                if not match or float(match.group(1)) != seed or \
+                        (int(match.group(2)), int(match.group(3))) != (reached, runs):
+                    fail("the top view of %s, seed %g: caption %r, expected 'seed %g · %d/%d reached'"
+                         % (world, seed, caption, seed, reached, runs))
+            print("top-view captions: %s" % "; ".join(shown))
+        elif drawn["topViews"] != min(len(names), 240):
+            fail("%d top views, expected one per run (%d)" % (drawn["topViews"], len(names)))
+        else:
+            print("%d runs, a top view each" % len(names))
+
+        run_page = os.path.join(runs_folder, names[0] + ".html")
+        page = browser.open("file://" + run_page + "#t=1")
+        page.wait_for(READY)
+        problems = page.problems("file://" + runs_folder + "/")
+        if problems:
+            fail("%s: %s" % (run_page, "; ".join(problems)))
+        back = page.evaluate("document.querySelector('#top a.back').getAttribute('href')")
+        if back != "../" + os.path.basename(page_path):
+            fail("%s: the link back is %s" % (run_page, back))
+        print("%s opens at #t=1 without error, links back to %s" % (os.path.basename(run_page), back))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
