@@ -89,10 +89,15 @@ const MultibodyReplayResult& MultibodyReplay::runImpl(
   // Short runs stay on this thread: starting one costs about what 10 samples do.
   const Eigen::Index threads =
       std::min<Eigen::Index>(std::max(1, settings_.threads), std::max<Eigen::Index>(1, n / 100));
+  // Every helper's system and buffer first: helperSystem() may grow the vectors that hold
+  // them, which must not move while a thread uses one.
+  std::vector<Simbody*> systems;
+  for (Eigen::Index t = 1; t < threads; ++t)
+    systems.push_back(&helperSystem(static_cast<std::size_t>(t - 1), simbody));
   std::vector<std::thread> pool;
   std::vector<std::exception_ptr> errors(static_cast<std::size_t>(threads));
   for (Eigen::Index t = 1; t < threads; ++t) {
-    Simbody& system = helperSystem(static_cast<std::size_t>(t - 1), simbody);
+    Simbody& system = *systems[static_cast<std::size_t>(t - 1)];
     Eigen::VectorXd& tau = helper_tau_[static_cast<std::size_t>(t - 1)];
     pool.emplace_back([&, t] {
       try {
