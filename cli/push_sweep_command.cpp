@@ -1,5 +1,5 @@
 // `wpg push-sweep [--situation forward|on_spot] [--phases K] [-j N] [--json FILE] [-o OUT.h5]`:
-// the paper's push-recovery test (Sec. V-B, issue 11 item 3). For each walking situation
+// the paper's push-recovery test (Sec. V-B). For each walking situation
 // (forward at 0.2 m/s: the shipped `push`; stepping in place: `push_stepping_in_place`; each
 // with its own push replaced), each direction (sagittal +/-, coronal +/-) and K phases spread
 // over one steady step, the largest recovered force of a 100 ms push (push_recovery_search.hpp).

@@ -1,5 +1,5 @@
 #pragma once
-// The scenario's `goal:` and `planner:` sections (issue 10; keys: datasets/SCENARIOS.md, "Walks
+// The scenario's `goal:` and `planner:` sections (keys: datasets/SCENARIOS.md, "Walks
 // to a goal"): read into libwpg's plain GoalRequest, and emitted back into the resolved
 // scenario. planning/ checks what needs the world (a goal inside an obstacle, the planner's
 // name against OMPL's planners).

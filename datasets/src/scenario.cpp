@@ -113,7 +113,7 @@ Scenario loadScenarioTree(YAML::Node root, const std::string& path,
                                                  "a positive mass in kg", source);
     }
     scenario.request.generator = readGenerator(entry(entries, "generator"), source);
-    // A goal replaces the velocity command: the path follower gives it (issue 10).
+    // A goal replaces the velocity command: the path follower gives it.
     const bool has_goal = present(entries, "goal");
     if (has_goal && entry(entries, "reference").IsDefined()) {
       source.failWith("reference", "expected either 'goal' or 'reference', not both (the path "

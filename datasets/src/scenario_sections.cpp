@@ -116,7 +116,7 @@ Obstacle readObstacle(const YAML::Node& item, const std::string& key, const Sour
     checkMagnitude(obstacle.margin, kMaxLength, "m", entry(entries, "margin"), key + ".margin",
                    "a distance >= 0 in m", source);
   }
-  // Goal walks (issue 10): an obstacle the route planner learns of only once sensed; the NMPC
+  // Goal walks: an obstacle the route planner learns of only once sensed; the NMPC
   // avoids it either way.
   *known_to_planner = true;
   if (present(entries, "known_to_planner")) {

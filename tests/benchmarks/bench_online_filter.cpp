@@ -6,7 +6,7 @@
 //  * BM_FilterWindow: what dominates an NMPC tick, the filter's walking IK + Simbody inverse
 //    dynamics over its window (the sampling period + the 0.8 s preview + 1 = 181 samples at
 //    5 ms), on a window of a steady forward walk.
-// Timings are quoted as medians of --benchmark_repetitions (STYLE.md).
+// Timings are quoted as medians of --benchmark_repetitions.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# outputs.sh WPG: outputs never destroy what is not theirs (issue #13, items 1-3; policy in
+# outputs.sh WPG: outputs never destroy what is not theirs (policy in
 # datasets/include/wpg/datasets/output_file.hpp). Each refused case exits 2 with one line on
 # stderr and leaves every file as it was; an existing output of the same kind is replaced; no
 # temporary file is left behind.

@@ -1,4 +1,4 @@
-// Walks to a goal in scenario files and datasets (issue 10): the goal, planner and
+// Walks to a goal in scenario files and datasets: the goal, planner and
 // known_to_planner keys, their errors, the resolved scenario, and the plans group written.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// Files we did not write (issue 13, item 10): a real run dataset (walk_forward, 4 s, written as
+// Files we did not write: a real run dataset (walk_forward, 4 s, written as
 // `wpg run` writes it) edited with the HDF5 C/C++ API into what a hostile or corrupt file holds.
 // Every reader must refuse it with one InputError line naming the file, the dataset (and row)
 // and what was expected, without allocating what the file declares, and without crashing or

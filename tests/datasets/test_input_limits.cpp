@@ -1,4 +1,4 @@
-// Limits on input (issue #13 items 7, 8, 9, 12; datasets/SCENARIOS.md, "Limits"): files that
+// Limits on input (datasets/SCENARIOS.md, "Limits"): files that
 // are not regular or too large, too-deep YAML and --set keys, second YAML documents in --set
 // values, lengths beyond kMaxLength (scenarios and generated worlds), names too long for a file
 // name, walks too short to run or replay, and control characters escaped in every message.

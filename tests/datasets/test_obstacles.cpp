@@ -40,7 +40,7 @@ const char* const kHeader =
     "reference:\n"
     "  - {t: 1.0, v: [0.2, 0.0, 0.0]}\n";
 
-// The example of issue 3 / SCENARIOS.md.
+// The example of datasets/SCENARIOS.md.
 const char* const kExampleObstacles =
     "obstacles:\n"
     "  - {type: circle, center: [1.5, 0.0], radius: 0.3, margin: 0.2}\n"

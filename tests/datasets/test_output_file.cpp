@@ -1,5 +1,5 @@
 // Output files (datasets/output_file.hpp): the checks of an output path, the exclusive
-// temporary file and its removal on SIGINT / SIGTERM (issue #13, items 1-4).
+// temporary file and its removal on SIGINT / SIGTERM.
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -51,7 +51,7 @@ TEST_F(OutputFile, RefusesWhatIsNotARegularFileOfItsKind) {
   EXPECT_THROW(checkOutputPath(folder_ + "/sub/", OutputKind::kHdf5), InputError);
   EXPECT_THROW(checkOutputPath("/dev/null", OutputKind::kHdf5), InputError);
   // A name whose temporary file (".<name>.XXXXXX") would not fit in 255 bytes: refused before
-  // the work, not when the output is written (issue 13, item 9).
+  // the work, not when the output is written.
   EXPECT_NO_THROW(checkOutputPath(folder_ + "/" + std::string(244, 'n') + ".h5", OutputKind::kHdf5));
   try {
     checkOutputPath(folder_ + "/" + std::string(245, 'n') + ".h5", OutputKind::kHdf5);

@@ -316,7 +316,7 @@ TEST(ShippedScenarios, FilterModeKeys) {
 // Malformed input: one InputError line naming the file and the key
 // ---------------------------------------------------------------------------------------------
 
-// The non-default value (command is the default since issue 9): the paper's support_foot.
+// The non-default value (command is the default): the paper's support_foot.
 TEST(Overrides, HeadingReferenceRoundTrips) {
   const Scenario s = loadShipped("walk_forward", {"walking.heading_reference=support_foot"});
   EXPECT_EQ(s.walking.heading_reference, wpg::HeadingReference::kSupportFoot);

@@ -23,7 +23,7 @@ wpg::datasets::Scenario load(const std::string& name,
 }
 
 // The paper's literal gait cost and yaw bound, one documented set of keys away from the
-// defaults (robots/hrp2/README.md, "Straight walks and turning").
+// defaults (docs/formulation.md, "Straight walks and turning").
 const std::vector<std::string> kPaperGait = {"walking.heading_reference=support_foot",
                                              "walking.weight_yaw=2.5",
                                              "walking.max_step_yaw_change=0.05"};
@@ -110,7 +110,7 @@ TEST(ShippedWalks, WalkForwardTracksTheCommandedSpeed) {
   EXPECT_NEAR(report.speed_after_two_steps, command, 0.1 * command);
 }
 
-// Issue 9, item 5: with the defaults a [0.2, 0, 0] command walks straight.
+// With the defaults a [0.2, 0, 0] command walks straight.
 TEST(ShippedWalks, WalkForwardWalksStraight) {
   const wpg::datasets::Scenario scenario = load("walk_forward");
   const wpg::WalkResult result = wpg::generateWalk(scenario.walking, scenario.request);
@@ -150,7 +150,7 @@ double commandedYaw(const wpg::datasets::Scenario& s, double t) {
   return turn.velocity.z() * std::max(0.0, t - turn.t);
 }
 
-// Issue 9, item 6: on `curve` the yaw follows the integral of the commanded omega within 5 %.
+// On `curve` the yaw follows the integral of the commanded omega within 5 %.
 TEST(ShippedWalks, CurveTracksTheCommandedOmega) {
   const wpg::datasets::Scenario curve = load("curve");
   const wpg::WalkResult c = wpg::generateWalk(curve.walking, curve.request);
@@ -174,7 +174,7 @@ TEST(ShippedWalks, CurveTracksTheCommandedOmega) {
   RecordProperty("curve_final_yaw_rad", std::to_string(t.free_flyer_yaw.back()));
 }
 
-// Issue 9, item 6: one real-time iteration per sample against full SQP on `curve`. With the
+// One real-time iteration per sample against full SQP on `curve`. With the
 // paper's cost J2 is chained from the support foot's yaw (eq. 8), so the small yaw by which
 // one iteration differs from the converged solution at each step becomes the reference of the
 // next: the difference grows by 4.9 mrad every two steps, 0.039 rad and 42 mm of CoM after
@@ -215,7 +215,7 @@ TEST(ShippedWalks, CurveRealTimeIterationStaysWithFullSqp) {
   EXPECT_GT(paper_step_yaw, 0.02);
 }
 
-// Issue 9, item 8: `walking.obstacle_distance_form: paper` constrains the paper's eq. (18) as
+// `walking.obstacle_distance_form: paper` constrains the paper's eq. (18) as
 // written, (f - c)^2 >= R^2 + m^2: on experiment B (R = m = 0.25 m) the step centres keep
 // sqrt(R^2 + m^2) = 0.354 m from the centre (measured 0.366) and, as the paper allows, land
 // on or inside the margin circle R + m = 0.5 m (two steps; the default keeps them

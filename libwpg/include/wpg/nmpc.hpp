@@ -1,7 +1,7 @@
 #pragma once
 // The nonlinear MPC of Naveau et al. 2017 (Sec. III), as functions over a constant model, a
-// per-sample problem and a solver that owns its plan and warm start (../shared/STYLE.md,
-// items 1-3). One header per piece:
+// per-sample problem and a solver that owns its plan and warm start (the constant model apart
+// from a workspace made once from it, so that a solve allocates nothing). One header per piece:
 //
 //   wpg/nmpc/layout.hpp             U = [jerk_x (N), F_x (nf), jerk_y (N), F_y (nf), F_theta (nf)]
 //                                   (eq. 6) and the rows of the constraint families

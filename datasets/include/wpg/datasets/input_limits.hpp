@@ -1,5 +1,5 @@
 #pragma once
-// Limits on what a scenario, study or --set override may ask for (issue #13; documented in
+// Limits on what a scenario, study or --set override may ask for (documented in
 // datasets/SCENARIOS.md, "Limits"). Past them the input is refused before anything runs (exit 2,
 // one line naming the file and the key).
 #include <cstddef>

@@ -1,5 +1,5 @@
 #pragma once
-// The file of `wpg push-sweep` (paper Sec. V-B, issue 11 item 3): one table, one row per
+// The file of `wpg push-sweep` (paper Sec. V-B): one table, one row per
 // situation x direction x phase, with the largest push force the walk recovers from
 // (datasets/SCHEMA.md, "Push sweep files"). Written atomically (temporary file, then rename).
 #include <string>

@@ -24,7 +24,7 @@ struct Scenario {
   // duration, reference, pushes, generator; robot_mass from the robot's `mass` unless the
   // scenario sets `robot_mass`.
   wpg::WalkRequest request;
-  // `goal:` and `planner:` (issue 10): a walk to a goal, its velocity command from the route
+  // `goal:` and `planner:`: a walk to a goal, its velocity command from the route
   // planner and the path follower (planning/goal_walk.hpp) instead of `reference:`
   // (goal.enabled false without a `goal:`); known_to_planner from the obstacles' flags.
   wpg::GoalRequest goal;

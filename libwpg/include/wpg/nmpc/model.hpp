@@ -1,5 +1,6 @@
 #pragma once
-// The constant part of the NMPC (../shared/STYLE.md item 1): prediction matrices (eq. 1-3),
+// The constant part of the NMPC (what changes every solve is in NmpcWorkspace): prediction
+// matrices (eq. 1-3),
 // the Gauss-Newton Hessian of the cost (5)-(8) for every walking pattern with its factor, the
 // step feasibility polygons, and the registered constraint families with their row ranges.
 #include <memory>

@@ -29,7 +29,7 @@ struct NmpcSolveResult {
   std::array<double, kMaxConstraintFamilies> slack{};
 };
 
-// Scratch buffers of one NMPC instance, sized once from the model (../shared/STYLE.md item 1).
+// Scratch buffers of one NMPC instance, sized once from the model: a solve allocates nothing.
 class NmpcWorkspace {
  public:
   explicit NmpcWorkspace(const NmpcModel& model);

@@ -1,5 +1,5 @@
 #pragma once
-// A walk to a goal (issue 10): the global route planner (route_planner.hpp) chained with the
+// A walk to a goal: the global route planner (route_planner.hpp) chained with the
 // NMPC through the path follower (path_follower.hpp), sample by sample over libwpg's online
 // generator (online_walking_generator.hpp), with replanning:
 //  - at the start, a route over the obstacles known to the planner;
