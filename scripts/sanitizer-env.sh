@@ -3,17 +3,22 @@
 # sanitizer runtime options. Expects $repo (the source tree).
 repo="${repo:?}"
 
-# wpg_sanitizer_tree BUILD: installs clang 14 when missing (setup.sh --with-clang), configures
-# BUILD once (clang 14, Release, -DWPG_SANITIZE=ON -DWPG_FUZZ=ON: one tree serves the test suite
-# and the fuzz targets; cmake/wpg_sanitizers.cmake).
+# wpg_sanitizer_tree BUILD: installs clang 14 and what the tests need when missing (setup.sh
+# --with-clang --with-tests), configures BUILD once (clang 14, Release, -DWPG_SANITIZE=ON
+# -DWPG_FUZZ=ON: one tree serves the test suite and the fuzz targets;
+# cmake/wpg_sanitizers.cmake), through ccache when it is installed.
 wpg_sanitizer_tree() {
-  local build="$1"
-  "$repo/scripts/setup.sh" --with-clang --packages-only
+  local build="$1" launcher=()
+  "$repo/scripts/setup.sh" --with-clang --with-tests --packages-only
   mkdir -p "$build"
   if [[ ! -f "$build/CMakeCache.txt" ]]; then
     echo "sanitizers: configuring $build (clang 14, ASan + UBSan, fuzz targets)"
+    command -v ccache >/dev/null \
+      && launcher=(-DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
     CC=clang-14 CXX=clang++-14 cmake -S "$repo" -B "$build" -DCMAKE_BUILD_TYPE=Release \
-      -DWPG_SANITIZE=ON -DWPG_FUZZ=ON -DWPG_WITH_MPI=OFF >"$build/configure.log" 2>&1 \
+      -DWPG_SANITIZE=ON -DWPG_FUZZ=ON -DWPG_WITH_MPI=OFF \
+      -DWPG_BUILD_PYTHON=OFF -DWPG_BUILD_VIEWER=OFF "${launcher[@]}" \
+      >"$build/configure.log" 2>&1 \
       || { cat "$build/configure.log" >&2; echo "sanitizers: error: configure failed" >&2; return 1; }
   fi
 }
@@ -24,6 +29,8 @@ wpg_sanitizer_build() {
   local targets=()
   (($#)) && targets=(--target "$@")
   echo "sanitizers: building ${*:-everything} (-j$(nproc); log: $log)"
+  # Paths relative to the clone in ccache's keys (-g1 objects: the folder is left out of them).
+  export CCACHE_BASEDIR="${CCACHE_BASEDIR:-$repo}" CCACHE_NOHASHDIR="${CCACHE_NOHASHDIR:-1}"
   cmake --build "$build" -j"$(nproc)" "${targets[@]}" >"$log" 2>&1 \
     || { tail -n 60 "$log" >&2; echo "sanitizers: error: build failed" >&2; return 1; }
 }

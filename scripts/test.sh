@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
-# Sets up and builds wpg with what every test needs (setup.sh --for-tests: also Node.js, npm and
-# Chromium for the pages of `wpg view`, the Python package), then runs every test (unit, CLI regression, viewer,
-# package test, the Python package's pytest).
+# Installs what the tests need (setup.sh --for-tests: also the Python package, Node.js and npm
+# for the page of `wpg view`, and Chromium to open it headless), builds wpg and its tests (not
+# the benchmarks), then runs every test: unit tests, CLI regression tests, the viewer's pages,
+# the Python package's pytest, the installed-package test. Arguments go to ctest
+# (e.g. -R cli.reference).
 set -euo pipefail
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="$(realpath -m -- "${WPG_BUILD_DIR:-$repo/build}")"
 "$repo/scripts/setup.sh" --for-tests
-exec ctest --test-dir "$build" --output-on-failure -j2
+exec ctest --test-dir "$build" --output-on-failure -j"$(nproc)" "$@"

@@ -21,7 +21,7 @@ NmpcModel makeModel(const WalkingParameters& parameters, const GeneratorSettings
 // The CoM's clearance from a new command_tangent border: 1.5 side-by-side step widths (0.3 m
 // for HRP-2), so that the inner foot, a half width beside the CoM, still has a step's length of
 // room along the command (measured on paper_experiment_a: 0.1 and 0.2 m block the robot earlier;
-// robots/hrp2/README.md, "Obstacles on the path").
+// docs/formulation.md, "Obstacles on the path").
 double tangentClearance(const WalkingParameters& w) { return 1.5 * w.stop_foot_separation; }
 
 }  // namespace

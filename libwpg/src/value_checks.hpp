@@ -1,5 +1,6 @@
 #pragma once
-// The one-line errors of libwpg's public validators (../shared/STYLE.md item 5): what was
+// The one-line errors of libwpg's public validators (entry points check always, invariants are
+// asserts): what was
 // expected and what came, naming the key as the scenario file spells it. Not installed.
 #include <sstream>
 #include <stdexcept>

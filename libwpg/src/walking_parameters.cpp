@@ -107,7 +107,7 @@ void WalkingParameters::validate() const {
           "a duration in [0.001, 10] s", sampling_period);
   require(horizon_length >= 2 && horizon_length <= 200, "horizon_length", "an integer in [2, 200]",
           horizon_length);
-  // Bounded before any product of them (no signed overflow, issue #13).
+  // Bounded before any product of them (no signed overflow).
   require(single_support_samples >= 1 && single_support_samples <= 1000,
           "single_support_samples", "an integer in [1, 1000]", single_support_samples);
   // The phase bookkeeping follows the paper (Sec. III-C1): NMPC samples never fall inside a

@@ -1,6 +1,7 @@
 #pragma once
 // Exact 2-D geometry of convex shapes on the ground, private to planning: the answers the FCL
-// world gives where FCL's own penetration depth (EPA) cannot be trusted (README).
+// world gives where FCL's own penetration depth (EPA) cannot be trusted
+// (docs/goals-and-planners.md, "FCL 0.7 caveats").
 #include <Eigen/Core>
 #include <vector>
 

@@ -31,7 +31,7 @@ namespace ob = ompl::base;
 namespace og = ompl::geometric;
 using Clock = std::chrono::steady_clock;
 
-// The longest motion checked in one piece [m] (issue 10: at most 2 cm).
+// The longest motion checked in one piece [m]: at most 2 cm on the ground.
 constexpr double kMotionResolution = 0.02;
 constexpr double kPi = 3.14159265358979323846;
 

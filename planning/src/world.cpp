@@ -1,4 +1,5 @@
-// The FCL world (README: "FCL caveats" for why some answers do not come from FCL's EPA).
+// The FCL world (docs/goals-and-planners.md, "FCL 0.7 caveats": why some answers do not come
+// from FCL's EPA).
 #include "wpg/planning/world.hpp"
 
 #include <algorithm>
@@ -90,7 +91,7 @@ struct World::Impl {
   // FCL's distance between two shapes at z = 0 when they are separated (> 0, with the nearest
   // point on the second one), or a value <= 0 when they touch or overlap. Not the signed
   // distance query (enable_signed_distance): its EPA penetration depth hangs for points near a
-  // cylinder's axis or a small sphere at a box corner (README).
+  // cylinder's axis or a small sphere at a box corner (docs/goals-and-planners.md).
   static double separation(const fcl::CollisionGeometryd& a, const fcl::Transform3d& a_pose,
                            const Entry& b, Eigen::Vector2d* nearest_on_b) {
     fcl::DistanceRequestd request(/*enable_nearest_points=*/true,

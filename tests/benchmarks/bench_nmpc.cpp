@@ -34,7 +34,7 @@ void runIterations(benchmark::State& state, const Eigen::Vector3d& command,
                    wpg::GeneratorAlgorithm algorithm, int sqp_iterations,
                    const std::vector<wpg::Obstacle>* world = nullptr) {
   wpg::WalkingParameters parameters;
-  parameters.max_step_yaw_change = 0.17;  // turning at 0.2 rad/s needs it (robots/hrp2/README.md)
+  parameters.max_step_yaw_change = 0.17;  // turning at 0.2 rad/s needs it (docs/formulation.md)
   wpg::GeneratorSettings settings;
   settings.algorithm = algorithm;
   settings.sqp_iterations = sqp_iterations;

@@ -1,4 +1,4 @@
-// Route planning and the chained walk to a goal (issue 10, acceptance 5): rrtconnect's
+// Route planning and the chained walk to a goal: rrtconnect's
 // planning time from the start to the goal of each shipped goal world (median over the
 // repetitions, each plan with its own seed), and a 30 s walk to a goal chained with the NMPC
 // (route planner + path follower + online generator), wall time with and without the planner's

@@ -2,7 +2,7 @@
 # bad_input_generated.sh WPG CASE: bad input that a CMake argument cannot carry (a FIFO, a huge
 # or deeply nested file, a key 20 000 names deep, newlines and escape characters in --set) is
 # made here and handed to bad_input.sh: exit 2, one line on stderr naming EXPECTED, nothing
-# written (issue 13, items 7 and 12; limits: datasets/SCENARIOS.md, "Limits").
+# written (limits: datasets/SCENARIOS.md, "Limits").
 set -euo pipefail
 # shellcheck source=common.sh
 source "$(dirname "$0")/common.sh"

@@ -1,5 +1,5 @@
 """edit_dataset.py CASE RUN.h5: edits a run file written by `wpg run walk_forward` in place
-into what a corrupt or hostile file holds (issue 13, item 10), with h5py only.
+into what a corrupt or hostile file holds, with h5py only.
 
 Cases:
   nan_time          /runs/<run>/time row 12 = NaN

@@ -3,7 +3,7 @@
 # CASE (NaN or non-monotonic time, NaN footstep, a stored scenario of another control period,
 # 2e8 declared rows) is refused by `wpg replay` and `wpg analyze` (and `wpg diff` for huge_rows):
 # exit 2 within the time bound, one line on stderr naming the file and the dataset, nothing
-# written (issue 13, item 10). Before, replay copied the NaN footstep to its output (exit 0),
+# written. Before, replay copied the NaN footstep to its output (exit 0),
 # filtered the 10 ms scenario into NaN, and allocated gigabytes for the declared rows.
 set -euo pipefail
 # shellcheck source=common.sh

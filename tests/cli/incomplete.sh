@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# incomplete.sh WPG: exit 3 "could not complete" (issue 13, item 9): a run whose dataset write
+# incomplete.sh WPG: exit 3 "could not complete": a run whose dataset write
 # fails (a file size limit, as a full disk would) and one that runs out of memory (an address
 # space limit) both exit 3 with a last stderr line "wpg: error: could not complete: ...", and
 # leave nothing in the output folder (neither the dataset nor its temporary file).

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# mpi_batch.sh WPG MPIRUN STUDY: `wpg batch` under MPI (issue 12; added when WPG_WITH_MPI):
+# mpi_batch.sh WPG MPIRUN STUDY: `wpg batch` under MPI (added when WPG_WITH_MPI):
 #  - `mpirun --oversubscribe -np 3 wpg batch STUDY -o OUT.h5` gives the same runs as
 #    `wpg batch -j 1`, bit for bit but the wall times (compare_batch_files.py), in OUT.h5 (the
 #    index) and OUT.shards/rank-{0,1,2}.h5, every rank having run some of them;

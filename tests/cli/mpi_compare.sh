@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# mpi_compare.sh WPG MPIRUN STUDY: `wpg compare` under MPI (issue 12; added when WPG_WITH_MPI):
+# mpi_compare.sh WPG MPIRUN STUDY: `wpg compare` under MPI (added when WPG_WITH_MPI):
 # `mpirun --oversubscribe -np 3` gives the same study.h5 as `wpg compare -j 1` (runs and the
 # /compare/summary table, wall times aside), the same summary.csv but its wall-time columns, and
 # a table that agrees with its runs (check_compare_table.py).

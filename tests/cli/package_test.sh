@@ -23,11 +23,18 @@ prefix="$WORKDIR/prefix"
 "$WORKDIR/build/wpg_downstream" || fail "the downstream executable failed"
 
 # The installed executable with the installed data (robots, scenarios, plot script).
-data="$(dirname "$(find "$prefix" -path '*/wpg/robots' -type d | head -n1)")"
+data="$(dirname "$(find "$prefix" -path '*/wpg/robots' -not -path '*/doc/*' -type d | head -n1)")"
 [[ -d "$data/robots" && -d "$data/datasets/scenarios" && -f "$data/analysis/plot_run.py" ]] \
   || fail "installed data incomplete under $prefix/share/wpg"
 WPG_DATA_DIR="$data" "$prefix/bin/wpg" run walk_forward --set duration=2 \
   -o "$WORKDIR/installed.h5" || fail "installed wpg run: exit status $?"
 check_run_file "$WORKDIR/installed.h5"
 check_png "$WORKDIR/installed.png"
+
+# The documentation is installed, and the links between its pages hold there.
+docs="$(dirname "$(find "$prefix" -path '*/doc/wpg/docs' -type d | head -n1)")"
+for page in README.md LICENSE docs/README.md docs/commands.md datasets/SCHEMA.md; do
+  [[ -s "$docs/$page" ]] || fail "documentation not installed: $page (under $prefix/share/doc/wpg)"
+done
+"$PYTHON" "$HERE/check_doc_links.py" "$docs" --pages-only || fail "broken links in the installed documentation"
 echo "ok"

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# plot_hostile.sh WPG: `wpg plot` on files we did not write (issue 13, item 11) finishes within
+# plot_hostile.sh WPG: `wpg plot` on files we did not write finishes within
 # a time bound with either a figure (exit 0) or one line on stderr and exit 2, never a Python
 # traceback:
 # - a stored scenario without walking.foot_length: drawn with the default sole (the old

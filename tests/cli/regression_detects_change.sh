@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # regression_detects_change.sh WPG REFERENCE.h5 RTOL ATOL IGNORE KEY=VALUE: the regression comparison
-# fails on a small intended change (issue 11, acceptance 4: a 1 % change of one cost weight):
+# fails on a small intended change (a 1 % change of one cost weight):
 # `wpg run <scenario> --set KEY=VALUE` then `wpg diff` against the reference exits 1, and its
 # report names the first differing sample of a walk dataset and the changed scenario line.
 set -euo pipefail

@@ -2,7 +2,7 @@
 # replay_failure.sh WPG: with the filter offline and online, a walk the multibody replay cannot follow (a CoM height of 1e-300 m:
 # the filter's LIPM and the multibody ZMP overflow) fails the run (exit 1) and the dataset is
 # still written, with success = 0, a message naming the replay, no multibody fields and no
-# non-finite number anywhere (issue 13, item 9: before, exit 0 with NaN in
+# non-finite number anywhere (before, exit 0 with NaN in
 # zmp_multibody_filtered).
 set -euo pipefail
 # shellcheck source=common.sh

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # run_relaxed_obstacle.sh WPG: paper_experiment_a with the obstacle 0.2 m off the path at 1.4 m
 # and the paper's linearization at the step, J1 on the mean velocity over a step (the scenario as
-# it shipped before issue 9; the shipped one never relaxes) relaxes obstacle rows only, which does not fail the walk: exit 0, mpc/status holds
+# it shipped before the obstacle-on-the-path defaults; the shipped one never relaxes) relaxes
+# obstacle rows only, which does not fail the walk: exit 0, mpc/status holds
 # relaxed_obstacle (code 1) rows, and the obstacle column of mpc/slack is positive on exactly
 # those rows (its relaxed_families bit set there only), every other slack column zero. The
 # summary's clearance line names the NMPC's constraint, whose margin a successful walk keeps

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# shard_merge.sh WPG STUDY OTHER_STUDY: a study split into slices without MPI (issue 12):
+# shard_merge.sh WPG STUDY OTHER_STUDY: a study split into slices without MPI:
 #  - `wpg batch --shard K/3` for K = 0, 1, 2 and `wpg merge` give an index whose runs are, bit for
 #    bit (wall times aside, compare_batch_files.py), those of `wpg batch -j 1`, through relative
 #    external links: still so after the folder is moved; `wpg analyze` and `wpg diff` read it;

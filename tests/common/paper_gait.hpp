@@ -2,7 +2,7 @@
 // The paper's literal gait cost and yaw bound, for tests whose situation was built with them
 // (a problem that needs several Gauss-Newton iterations, a cold QP that needs more than two
 // working-set updates, a push that makes the landing bound act). The defaults differ since
-// issue 9 (robots/hrp2/README.md, "Straight walks and turning").
+// today's (docs/formulation.md, "Straight walks and turning").
 #include "wpg/walking_parameters.hpp"
 
 namespace wpg_test {

@@ -23,7 +23,7 @@ wpg::datasets::Scenario load(const std::string& name,
 }
 
 // The paper's literal gait cost and yaw bound, one documented set of keys away from the
-// defaults (robots/hrp2/README.md, "Straight walks and turning").
+// defaults (docs/formulation.md, "Straight walks and turning").
 const std::vector<std::string> kPaperGait = {"walking.heading_reference=support_foot",
                                              "walking.weight_yaw=2.5",
                                              "walking.max_step_yaw_change=0.05"};

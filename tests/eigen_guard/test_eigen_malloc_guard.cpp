@@ -1,4 +1,4 @@
-// Eigen's own malloc guard around a warmed-up NMPC iteration (STYLE.md item 3). The guard is
+// Eigen's own malloc guard around a warmed-up NMPC iteration (none may allocate). The guard is
 // an eigen_assert, compiled out in Release: this executable builds libwpg's sources again
 // with assertions on and EIGEN_RUNTIME_NO_MALLOC, so any Eigen heap allocation inside the
 // guarded loop aborts the test. (tests/libwpg/test_nmpc_allocation.cpp counts every malloc

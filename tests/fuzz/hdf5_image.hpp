@@ -19,7 +19,7 @@ namespace wpg_fuzz {
 // values[i % v] + (i / v) * step (v = values.size(); i * step when v = 0): a short input can
 // declare a long walk with a monotonic time. Past kMaxWrittenValues the dataset is chunked and
 // no value is written: HDF5 reads the fill value (0), and the file stays a few KB however many
-// rows it declares (the "226 KB file declaring 2e8 rows" of issue 13).
+// rows it declares (e.g. a 226 KB file declaring 2e8 rows).
 struct ArrayEntry {
   bool integer = false;  // int32 (H5T_STD_I32LE) rather than float64
   int rank = 1;          // 1: (rows,); 2: (rows, columns)

@@ -37,7 +37,7 @@ TEST(HeadingReference, ParsesItsNames) {
   EXPECT_FALSE(wpg::parseHeadingReference("world", &r));
   EXPECT_STREQ(wpg::headingReferenceName(wpg::HeadingReference::kCommand), "command");
   EXPECT_STREQ(wpg::headingReferenceName(wpg::HeadingReference::kSupportFoot), "support_foot");
-  // The default since issue 9 (straight walks and tracked turns); the paper's is support_foot.
+  // The default (straight walks and tracked turns); the paper's is support_foot.
   EXPECT_EQ(wpg::WalkingParameters().heading_reference, wpg::HeadingReference::kCommand);
 }
 
@@ -100,7 +100,7 @@ TEST(HeadingReference, ARestartWalksOnFromWhereTheRobotStopped) {
   const double stopped_yaw = t.free_flyer_yaw[stop];
   EXPECT_GT(stopped_yaw, 0.15);  // it did turn, ...
   EXPECT_LT(stopped_yaw, 0.5);   // ... far less than commanded
-  // Within the yaw the paper's weights give every other foot (robots/hrp2/README.md).
+  // Within the yaw the paper's weights give every other foot (docs/formulation.md).
   EXPECT_NEAR(t.free_flyer_yaw.back(), stopped_yaw, 0.05);
   // ... and walks along that heading.
   const Eigen::Vector2d walked = (t.com.back() - t.com[stop]).head<2>();

@@ -1,8 +1,8 @@
-// Steps that pushes call for (issue #9, item 7): a robot stepping in place (zero_command:
+// Steps that pushes call for: a robot stepping in place (zero_command:
 // step_in_place, the situation of the paper's on-the-spot pushes, Sec. V-B) and a standing
 // robot whose capture point a push carries out of its CoP's reach (standing_push_response).
 // Whole walks through generateWalk; the forces are those the acceptance names and the
-// robots/hrp2/README.md table measures.
+// docs/formulation.md table measures.
 #include <gtest/gtest.h>
 
 #include <Eigen/Core>
@@ -91,7 +91,7 @@ TEST(StepInPlace, KeepsSteppingOnTheSpotWithAZeroCommand) {
 }
 
 // A 100 ms push of +-100 N sagittal while stepping in place, at the phases of a step where
-// the swing still has time to catch it (robots/hrp2/README.md, "Pushes on the spot").
+// the swing still has time to catch it (docs/formulation.md, "Pushes: stepping in place").
 TEST(StepInPlace, SurvivesSagittalPushesOf100N) {
   const WalkingParameters w = steppingInPlace();
   for (const double force : {100.0, -100.0}) {

@@ -249,7 +249,7 @@ TEST(StartWalkStop, EndsStandingSideBySideAtRest) {
 // A straight walk (omega = 0 throughout) and a stop leave the robot facing where it started
 // when the yaw is tracked (weight_yaw large). With the paper's weight (alpha = 2.5) it is not
 // guaranteed: the J2 references are chained from the support foot's yaw (eq. 8's p^theta), so
-// the yaw the optimizer gives to one foot (robots/hrp2/README.md) becomes the next reference;
+// the yaw the optimizer gives to one foot (docs/formulation.md) becomes the next reference;
 // that walk is checked to stay within two yaw bounds.
 TEST(StartWalkStop, KeepsTheHeadingOfAStraightWalk) {
   WalkingParameters w;

@@ -99,7 +99,7 @@ PassTimes passTimes(const Experiment& e) {
   return p;
 }
 
-// Acceptance of issue 9, item 1: on the path and 0.2 m off it, the robot passes the obstacle
+// Experiment A as the paper runs it: on the path and 0.2 m off it, the robot passes the obstacle
 // within 10 s of first reaching the margin, never steps in it, and walks on along +x.
 TEST(PaperExperimentA, PassesWithinTenSecondsOfReachingTheMarginOnAndOffThePath) {
   for (const char* centre : {"[3.0,0.0]", "[3.0,-0.2]"}) {
@@ -118,7 +118,7 @@ TEST(PaperExperimentA, PassesWithinTenSecondsOfReachingTheMarginOnAndOffThePath)
 TEST(PaperExperimentA, ThePapersLiteralFormulationStaysBlockedInFront) {
   // The paper's cost and linearization (eq. 18 linearized at the step, J1 instantaneous, the
   // support foot's heading, alpha on J2): the robot walks up to the margin and marks time
-  // there, never entering it (robots/hrp2/README.md, "Obstacles on the path").
+  // there, never entering it (docs/formulation.md, "Obstacles on the path").
   const Experiment e = run("paper_experiment_a", {"walking.obstacle_linearization=step",
                                                   "walking.velocity_window_samples=1",
                                                   "walking.heading_reference=support_foot",
@@ -157,7 +157,7 @@ TEST(PaperExperimentB, BlockedInTranslationItTurnsOnTheSpotThenResumesItsCircle)
   // A stretch of 2.5 s with (almost) no translation while the yaw keeps turning (measured
   // 0.53 rad for 2.0 cm of CoM from 9.5 s; the default command heading turns J1's command
   // away from the obstacle at omega whatever the feet do, so the robot is held ~2.8 s, the
-  // paper's support-foot heading held it longer: this window was 3 s before issue 9) ...
+  // paper's support-foot heading held it longer: this window was 3 s with it) ...
   const std::size_t window = sampleAt(t, 2.5);
   std::size_t blocked_end = 0;
   double blocked_turn = 0.0;

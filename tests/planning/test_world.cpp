@@ -26,7 +26,7 @@ using wpg::Obstacle;
 using wpg::ObstacleType;
 using wpg::planning::World;
 
-constexpr double kSoleLength = 0.2172;  // HRP-2 (DESIGN.md)
+constexpr double kSoleLength = 0.2172;  // HRP-2 (robots/hrp2/README.md)
 constexpr double kSoleWidth = 0.138;
 
 Obstacle circle(Vector2d center, double radius, double margin = 0.0) {

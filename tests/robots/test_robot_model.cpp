@@ -1,4 +1,5 @@
-// HRP-2 URDF and RobotModel against the fact sheet's verification numbers (section 3).
+// HRP-2 URDF and RobotModel against values computed independently from the transcribed Klamp't
+// model (robots/hrp2/README.md, "Checks").
 #include <cmath>
 #include <fstream>
 #include <string>
@@ -30,7 +31,7 @@ TEST(RobotModel, LoadsTheHrp2Urdf) {
   EXPECT_EQ(model.bodies().size(), 31u);  // BODY + 30
   EXPECT_EQ(model.frames().size(), 33u);  // + LLEG_SOLE, RLEG_SOLE
   EXPECT_EQ(model.bodies()[0].name, "BODY");
-  // configuration order = the fact sheet's (URDF document) order
+  // configuration order = the source model's (URDF document) order
   const std::vector<std::string> first = {"RLEG_JOINT0", "RLEG_JOINT1", "RLEG_JOINT2",
                                           "RLEG_JOINT3", "RLEG_JOINT4", "RLEG_JOINT5",
                                           "LLEG_JOINT0"};
@@ -50,7 +51,7 @@ TEST(RobotModel, LoadsTheHrp2Urdf) {
 
 TEST(RobotModel, MassAndInertiasAsInTheTable) {
   const RobotModel& model = hrp2();
-  // fact sheet 3.1: 56.03715771 kg (acceptance: 0.1 kg)
+  // the source model's total mass: 56.03715771 kg (acceptance: 0.1 kg)
   EXPECT_NEAR(model.totalMass(), 56.03715771, 1e-8);
   const auto& body = model.bodies()[0];
   EXPECT_DOUBLE_EQ(body.mass, 15.02949);
@@ -83,7 +84,7 @@ TEST(RobotModel, JointAxesOriginsAndLimits) {
   EXPECT_TRUE(gripper.origin.position.isApprox(Eigen::Vector3d(0.0219, 0, -0.095)));
   EXPECT_NEAR(gripper.lower, degrees(-60), 1e-15);
   EXPECT_NEAR(gripper.upper, degrees(16), 1e-15);
-  // the sole frames: 0.105 m below the ankle-roll frames (fact sheet 3.5)
+  // the sole frames: 0.105 m below the ankle-roll frames (the sole plane of the foot mesh)
   const auto& sole = model.frames()[model.frameIndex("RLEG_SOLE")];
   EXPECT_EQ(model.bodies()[sole.body].name, "RLEG_LINK5");
   EXPECT_TRUE(sole.placement.position.isApprox(Eigen::Vector3d(0, 0, -0.105)));
@@ -92,7 +93,7 @@ TEST(RobotModel, JointAxesOriginsAndLimits) {
 TEST(RobotModel, HalfSittingMatchesTheFactSheet) {
   const RobotModel& model = hrp2();
   const Eigen::VectorXd q = model.halfSitting();
-  // fact sheet 3.2: BODY at 0.648702, soles on z = 0
+  // the half-sitting check values: BODY at 0.648702, soles on z = 0
   EXPECT_NEAR(q(2), 0.648702, 1e-6);
   EXPECT_EQ(q.head<2>(), Eigen::Vector2d::Zero());
   EXPECT_NEAR(q(model.nq() - 1), 0.1, 0.0);  // LARM_JOINT6
@@ -105,7 +106,7 @@ TEST(RobotModel, HalfSittingMatchesTheFactSheet) {
   std::printf("half-sitting CoM (%.6f, %.6f, %.6f), fact sheet error %.2e m\n", com.x(), com.y(),
               com.z(), com_error);
   EXPECT_LT(com_error, 1e-3);  // acceptance: 1 mm
-  EXPECT_LT(com_error, 2e-6);  // the fact sheet gives 6 decimals
+  EXPECT_LT(com_error, 2e-6);  // the check values have 6 decimals
 
   for (const char* side : {"R", "L"}) {
     const double sign = side[0] == 'R' ? -1.0 : 1.0;
@@ -130,7 +131,7 @@ TEST(RobotModel, HalfSittingMatchesTheFactSheet) {
 TEST(RobotModel, StraightLegsMatchTheFactSheet) {
   const RobotModel& model = hrp2();
   Eigen::VectorXd q = model.neutralConfiguration();
-  q(2) = 0.705;  // fact sheet 3.3
+  q(2) = 0.705;  // the straight-leg check values
   EXPECT_LT((model.centerOfMass(q) - Eigen::Vector3d(0.005912, 0.001578, 0.854178)).norm(), 2e-6);
   EXPECT_NEAR(model.framePose(q, "LLEG_SOLE").position.z(), 0.0, 1e-12);
   EXPECT_LT((model.framePose(q, "RLEG_LINK4").position - Eigen::Vector3d(0, -0.095, 0.105)).norm(), 1e-12);

@@ -99,7 +99,7 @@ TEST(WalkingIk, HalfSittingIsAFixedPoint) {
   WalkingIkTarget target;
   target.left_foot << 0.009490, 0.095, 0.0, 0.0;
   target.right_foot << 0.009490, -0.095, 0.0, 0.0;
-  // exact feet of the half-sitting posture (the fact sheet rounds to 6 decimals)
+  // exact feet of the half-sitting posture (the check values are rounded to 6 decimals)
   target.left_foot.head<3>() = model.framePose(half_sitting, "LLEG_SOLE").position;
   target.right_foot.head<3>() = model.framePose(half_sitting, "RLEG_SOLE").position;
   target.com = model.centerOfMass(half_sitting);

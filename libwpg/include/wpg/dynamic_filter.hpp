@@ -39,7 +39,7 @@ bool parseDynamicFilterMode(const std::string& name, DynamicFilterMode* out);
 
 // How the online loop runs (scenario keys filter_settings.mode and .reinitialize_wpg).
 struct DynamicFilterLoopSettings {
-  // Offline by default, measured (README "Dynamic filter: online and offline"): on walk_forward
+  // Offline by default, measured (docs/formulation.md, "The dynamic filter"): on walk_forward
   // and curve the offline pass leaves a ZMP error of 1.9 / 2.0 mm RMS, 4.1 / 4.4 mm max; the
   // online loop (open) 3.4 / 3.3 mm RMS but 52 / 49 mm max, at the start of the walk, where
   // the command that starts it is news to a causal filter (11 / 13 mm max after 1.3 s). Online is

@@ -18,7 +18,7 @@ struct ZmpErrorStatistics {
 struct MultibodyValidation {
   std::vector<std::string> configuration_names;  // nq column names of q
   Eigen::MatrixXd q;                       // n x nq, the motion sent to the robot (filtered
-                                           // when the filter ran), robots/README layout
+                                           // when the filter ran), RobotModel's layout
   Eigen::MatrixXd zmp_multibody;           // n x 2, ZMP of the WPG's motion (before the filter)
   Eigen::MatrixXd com_filtered;            // n x 3, WPG CoM + filter correction (empty: no filter)
   Eigen::MatrixXd zmp_multibody_filtered;  // n x 2, ZMP after the filter (empty: no filter)

@@ -8,7 +8,7 @@
 // choice decides where the robot can go. The paper linearizes eq. (18) at the previewed step
 // (Sec. III-E), which faces the step: with an obstacle on the path the border is perpendicular
 // to the command, progress needs lateral steps that J1 charges, and the QP's optimum is to mark
-// time in front of it for good (robots/hrp2/README.md, "Obstacles on the path"). The paper's
+// time in front of it for good (docs/formulation.md, "Obstacles on the path"). The paper's
 // Fig. 2 describes the constraint as "a linearization at a point of the obstacle boundary": this
 // rule picks that point from the CoM and the command instead of from the step:
 //  - the border is a tangent of the circle turned towards the command's direction as far as

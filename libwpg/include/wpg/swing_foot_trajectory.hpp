@@ -8,7 +8,7 @@
 // fraction) and its mirror image down over the second: the step height at mid-swing, zero
 // velocity and acceleration at lift-off, apex and touch-down (C2 throughout). Until
 // 2026-11 this was one degree-6 curve h 64 s^3 (1 - s)^3, with the same apex and end
-// conditions (issue #9 item 9).
+// conditions; the paper uses fifth-order polynomials.
 #include <Eigen/Core>
 
 namespace wpg {

@@ -1,5 +1,5 @@
 #pragma once
-// A walk to a goal instead of a velocity schedule (issue 10): where to go, and how the global
+// A walk to a goal instead of a velocity schedule: where to go, and how the global
 // route planner (planning/: OMPL over the FCL world) and the path follower that turns its route
 // into velocity commands are set up. Plain data like walk_request.hpp: datasets/ reads it from
 // the scenario's `goal:` and `planner:` keys, planning/ plans, follows and replans. libwpg
@@ -22,7 +22,7 @@ struct WalkGoal {
 };
 
 struct RoutePlannerSettings {
-  // One of OMPL's geometric planners by name (planning/README.md lists them): rrtconnect,
+  // One of OMPL's geometric planners by name (docs/goals-and-planners.md lists them): rrtconnect,
   // rrtstar, informedrrtstar, bitstar, prmstar, ...; `none`: no planner, the straight line to
   // the goal (the NMPC alone meets the obstacles).
   std::string algorithm = "rrtconnect";

@@ -19,7 +19,7 @@ enum class GeneratorAlgorithm {
 bool parseGeneratorAlgorithm(const std::string& name, GeneratorAlgorithm* out);
 const char* generatorAlgorithmName(GeneratorAlgorithm algorithm);
 
-// Limits of bounded work (issue #13; datasets/SCENARIOS.md, "Limits").
+// Limits of bounded work (datasets/SCENARIOS.md, "Limits").
 constexpr int kMaxSqpIterations = 1000;     // generator.sqp_iterations, max_sqp_iterations
 constexpr int kMaxQpIterations = 100000;    // generator.max_qp_iterations
 constexpr double kMaxWalkDuration = 3600.0;  // [s] duration of one walk
@@ -67,7 +67,7 @@ struct WalkRequest {
   std::vector<VelocityCommand> reference;  // sorted by t; empty = stand still
   std::vector<Push> pushes;
   std::vector<Obstacle> obstacles;     // convex obstacles to keep the steps away from
-  double robot_mass = 56.037;          // [kg], converts push forces to accelerations (HRP-2, fact sheet 3.1)
+  double robot_mass = 56.037;          // [kg], converts push forces to accelerations (HRP-2: robots/hrp2/README.md)
   GeneratorSettings generator;
 
   // The command in force at time t (the last entry with entry.t <= t), zero before the first.

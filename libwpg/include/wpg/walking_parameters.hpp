@@ -1,9 +1,9 @@
 #pragma once
 // Constant description of a walking robot for the pattern generator: timings, template-model
 // constants, foot geometry, step feasibility, cost weights. Defaults are HRP-2's, from the
-// paper (Naveau et al., RA-L 2017, Sec. V) and ../shared/DESIGN.md; robots/<name>/walking.yaml
+// paper (Naveau et al., RA-L 2017, Sec. V) and the authors' code; robots/<name>/walking.yaml
 // restates them and scenarios may override any field (datasets/SCENARIOS.md). Four defaults
-// differ from the paper's text, on measurement (robots/hrp2/README.md): heading_reference,
+// differ from the paper's text, on measurement (docs/formulation.md): heading_reference,
 // weight_yaw, max_step_yaw_change (the authors' code's value) and obstacle_distance_form.
 #include <array>
 #include <string>
@@ -85,7 +85,7 @@ enum class ObstacleLinearization {
   // With heading_reference: command and a large weight_yaw the robot slides round an obstacle on
   // the path and walks on (paper_experiment_a); with the support-foot heading it turns while it
   // slides and circles the obstacle. Not the default: on cluttered scenes it relaxes rows
-  // (robots/hrp2/README.md, "Obstacles on the path", measured).
+  // (docs/formulation.md, "Obstacles on the path", measured).
   kCommandTangent,
 };
 bool parseObstacleLinearization(const std::string& name, ObstacleLinearization* out);
@@ -139,7 +139,7 @@ struct WalkingParameters {
   // --- orientation, eq. (16): |yaw(step) - yaw(previous step)| <= bound. The authors' code's
   //     0.17 rad: the reference clamp max_angular_velocity (0.2 rad/s, the paper's experiment
   //     B) needs 0.2 * stepDuration() = 0.16 rad per step. The paper's text states 0.05 rad
-  //     (Sec. III-C), which caps turning at 0.0625 rad/s (robots/hrp2/README.md, "The yaw
+  //     (Sec. III-C), which caps turning at 0.0625 rad/s (docs/formulation.md, "The yaw
   //     bound"); max_angular_velocity = 0.0625 makes the clamp agree with it.
   double max_step_yaw_change = 0.17;   // [rad]
   // --- swing-foot landing bound (Sec. III-C3, last paragraph; landing_bound and landing_yaw_bound
@@ -151,7 +151,7 @@ struct WalkingParameters {
   //     yawvmax = 1.5 rad/s). 0 switches the bound off (x and y, or yaw). Off by default: with
   //     the authors' values on HRP-2's `push` the swing foot's peak acceleration rises (18 ->
   //     30 m/s^2, the correction is pushed to the last sample) and a push at 3.9 s that is
-  //     rejected without the bound makes the robot fall (robots/hrp2/README.md).
+  //     rejected without the bound makes the robot fall (docs/formulation.md).
   double max_landing_speed = 0.0;      // [m/s]
   double max_landing_yaw_rate = 0.0;   // [rad/s]
   // --- cost weights, eq. (5) and Sec. V-D ----------------------------------------------------
@@ -164,14 +164,14 @@ struct WalkingParameters {
   int velocity_window_samples = 1;
   // J1 frame and J2 target. kCommand by default (wpg): with the paper's kSupportFoot any yaw a
   // step takes becomes the next step's reference, so a straight walk drifts sideways and a
-  // curve falls behind omega (robots/hrp2/README.md, "Straight walks and turning").
+  // curve falls behind omega (docs/formulation.md, "Straight walks and turning").
   HeadingReference heading_reference = HeadingReference::kCommand;
   // Weight of the angular tracking J2. The paper uses alpha = 2.5 for both (Sec. III-B: "a
   // different weight ... was not necessary"); with it the optimum of (5) yaws the feet towards
   // the yaw bound on straight walks (rotating a foot rotates the next step's feasibility
   // polygon, eq. 14, and lets the feet come closer), 0.05 rad every other foot with the
   // paper's bound, up to 0.13 rad with 0.17. 100 keeps the toe-out below 0.005 rad and the
-  // walk straight (measured in robots/hrp2/README.md); 2.5 is the paper's.
+  // walk straight (measured in docs/formulation.md); 2.5 is the paper's.
   double weight_yaw = 100.0;
   double weight_cop = 1e3;             // beta: CoP close to the support ankle (J3)
   double weight_jerk = 1e-5;           // gamma: jerk regularization (J4)

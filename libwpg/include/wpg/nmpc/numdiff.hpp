@@ -1,5 +1,5 @@
 #pragma once
-// Finite-difference twin of the constraint Jacobians (../shared/STYLE.md item 4): central
+// Finite-difference twin of the constraint Jacobians (each family's is tested with it): central
 // differences of a family's rows (or of every family's) compared with its exact Jacobian. For
 // tests of every family, the built-in ones and any new one.
 #include <Eigen/Core>

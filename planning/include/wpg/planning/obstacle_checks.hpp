@@ -1,5 +1,5 @@
 #pragma once
-// After a run: every landed footstep checked with FCL against every obstacle (issue 3). Two
+// After a run: every landed footstep checked with FCL against every obstacle. Two
 // numbers per step, because the NMPC and the robot see obstacles differently:
 //  - the step centre (ankle) against the obstacle grown by its margin and by the sole radius
 //    obstacle_foot_radius: the constraint the NMPC enforces (eq. 18-19 generalized:

@@ -1,5 +1,5 @@
 #pragma once
-// The path follower (issue 10): from a route (an x-y polyline) and the robot's pose, the
+// The path follower: from a route (an x-y polyline) and the robot's pose, the
 // velocity command [vx, vy, omega] that the NMPC tracks, at every NMPC sample, within the
 // robot's clamps (WalkingParameters::max_*_velocity).
 //

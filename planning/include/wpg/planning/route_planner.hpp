@@ -1,5 +1,5 @@
 #pragma once
-// The global route planner (issue 10): OMPL's geometric planners in SE(2) over the obstacles
+// The global route planner: OMPL's geometric planners in SE(2) over the obstacles
 // the planner knows (an FCL World). A state (x, y, yaw) is valid when the robot's footprint
 // disc of `robot_radius` is clear of every obstacle grown by its margin
 // (World::isStateValid); motions are checked every 2 cm or finer; the objective is the path
@@ -9,9 +9,9 @@
 // Reproducibility: every random number generator a plan creates (state samplers, the
 // planner's own, the simplifier's) is seeded from `seed`, so one seed gives one route whatever
 // else runs in the process or on other threads (OMPL 1.5.2's unseeded RNGs draw from a
-// process-wide sequence: ../shared/TOOLCHAIN.md). Planners that run until their termination
+// process-wide sequence: docs/dependencies.md). Planners that run until their termination
 // condition (the optimizing ones) stop after max_iterations of their iterations, counted on the
-// planning thread, not after a time (planning/README.md lists which planners are reproducible).
+// planning thread, not after a time (docs/goals-and-planners.md lists the reproducible ones).
 #include <cstdint>
 #include <string>
 #include <vector>

@@ -8,7 +8,7 @@
 // prism, all extruded over z in [-h, h] with h = max(1 m, 2 x the bounding radius) so that
 // the vertical direction is never the shortest way out of an obstacle. Ground points and feet
 // live at z = 0. How each query uses FCL, and where it does not (FCL 0.7's EPA penetration
-// depth hangs in some configurations), is explained in planning/README.md.
+// depth hangs in some configurations), is explained in docs/goals-and-planners.md.
 #include <Eigen/Core>
 #include <memory>
 #include <vector>
@@ -37,7 +37,7 @@ class World : public wpg::ObstacleDistanceOracle {
   // included): > 0 outside, < 0 inside, exact in 2-D; `gradient` (optional) receives its
   // gradient with respect to the point, a unit vector pointing away from the obstacle.
   // Outside, from FCL's distance query (nearest points); inside and within 1 mm of the
-  // boundary, from the prism's own faces (README: FCL caveats).
+  // boundary, from the prism's own faces (docs/goals-and-planners.md, "FCL 0.7 caveats").
   // Throws std::out_of_range on a bad index.
   double signedDistance(int obstacle, const Eigen::Vector2d& point,
                         Eigen::Vector2d* gradient) const override;

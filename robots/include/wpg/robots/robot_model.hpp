@@ -7,7 +7,7 @@
 //   q[0..2]  position of the root link frame (BODY for HRP-2) in the world [m]
 //   q[3..6]  orientation of the root link as a unit quaternion, scalar first: w, x, y, z
 //   q[7..]   joint values [rad or m], in the order of the <joint> elements of the URDF file
-//            (for HRP-2 the fact sheet's order: RLEG 0-5, LLEG 0-5, CHEST 0-1, HEAD 0-1,
+//            (for HRP-2 the source model's order: RLEG 0-5, LLEG 0-5, CHEST 0-1, HEAD 0-1,
 //            RARM 0-6, LARM 0-6)
 // Velocity layout (nv = 6 + number of actuated joints):
 //   v[0..2]  linear velocity of the root link origin, world frame [m/s]

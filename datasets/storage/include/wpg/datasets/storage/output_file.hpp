@@ -1,5 +1,5 @@
 #pragma once
-// Output files that never destroy what is not theirs:
+// Output files that never destroy what is not theirs (docs/commands.md):
 //  * checkOutputPath refuses, before anything is computed or written, an output path that is
 //    a folder (or ends with '/'), that exists and is not a regular file (a device such as
 //    /dev/null, a FIFO, /proc/self/fd/1), that is the same file (device and inode, whatever the
