@@ -78,7 +78,18 @@ int compareCommand(const CompareOptions& options) {
     if (fs::exists(folder, error) && !fs::is_directory(folder, error)) {
       throw UsageError("output '" + folder.string() + "' is not a directory");
     }
-    datasets::checkWritableParent(batch_file.string());
+    // Every file the command writes in DIR, held to the main output's rules (output_file.hpp).
+    std::vector<datasets::PlannedOutput> outputs = {
+        {batch_file.string(), datasets::OutputKind::kHdf5},
+        {(folder / "summary.csv").string(), datasets::OutputKind::kText},
+        {(folder / "summary.md").string(), datasets::OutputKind::kText}};
+    if (options.plot) {
+      for (const std::string& name : {std::string("success_rates"), std::string("time_to_goal")})
+        outputs.push_back({(folder / (name + ".png")).string(), datasets::OutputKind::kPng});
+      for (const std::string& name : comparison.worlds)
+        outputs.push_back({(folder / ("top_" + name + ".png")).string(), datasets::OutputKind::kPng});
+    }
+    datasets::checkOutputPaths(outputs, {options.study});
     engine::checkStudyRobotModels(comparison.study, robotsDirectory());
   });
   const datasets::Study& study = comparison.study;

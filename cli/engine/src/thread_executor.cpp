@@ -6,6 +6,7 @@
 #include "batch_run_record.hpp"
 #include "wpg/datasets/input/input_error.hpp"
 #include "wpg/datasets/storage/batch_index.hpp"
+#include "wpg/datasets/storage/output_file.hpp"
 #include "wpg/engine/ordered_parallel.hpp"
 #include "wpg/engine/study_executor.hpp"
 
@@ -25,8 +26,11 @@ class ThreadExecutor : public StudyExecutor {
     const ShardSlice slice = output.shard.value_or(ShardSlice{});
     const std::string shard_label =
         output.shard ? datasets::shardSliceLabel(slice.index, slice.count) : "";
+    // Claimed before the file is examined or truncated, held until the file is closed: a second
+    // writer is refused, the first one's file untouched (output_file.hpp, OutputClaim).
+    std::unique_ptr<datasets::OutputClaim> claim;
     std::unique_ptr<datasets::BatchDatasetWriter> writer =
-        openWriter(study, output, handling, shard_label, observer);
+        openWriter(study, output, handling, shard_label, observer, claim);
 
     std::vector<const datasets::StudyRun*> todo;
     std::size_t slice_runs = 0;
@@ -50,10 +54,16 @@ class ThreadExecutor : public StudyExecutor {
                                                            const StudyOutput& output,
                                                            const StudyRunHandling& handling,
                                                            const std::string& shard_label,
-                                                           StudyObserver& observer) {
+                                                           StudyObserver& observer,
+                                                           std::unique_ptr<datasets::OutputClaim>& claim) {
     std::error_code ec;
     const std::string& path = output.path;
-    if (output.resume && fs::exists(path, ec) && !datasets::isDamagedHdf5File(path)) {
+    const fs::path parent = fs::path(path).parent_path();
+    if (!parent.empty()) fs::create_directories(parent, ec);
+    claim = std::make_unique<datasets::OutputClaim>(path);
+    // A file held by another process was refused above: what is left to judge is damage.
+    const bool existing = output.resume && !claim->created();
+    if (existing && !datasets::isDamagedHdf5File(path)) {
       // A slice finishes its own shard only (and a whole batch is not finished as a slice).
       const std::string label = datasets::readShardContents(path).label;
       if (label != shard_label) {
@@ -64,16 +74,15 @@ class ThreadExecutor : public StudyExecutor {
             " (file left as it is)");
       }
     }
-    if (output.resume && fs::exists(path, ec) && datasets::isDamagedHdf5File(path)) {
+    if (existing && datasets::isDamagedHdf5File(path)) {
       // Nothing of it can be trusted. Kept aside, not removed, and the study starts again (the
-      // same runs give the same file).
+      // same runs give the same file), under a new claim on the new file.
       observer.movedDamagedFile(path, datasets::moveDamagedFileAside(path), false);
-    }
-    if (output.resume && fs::exists(path, ec)) {
+      claim.reset();
+      claim = std::make_unique<datasets::OutputClaim>(path);
+    } else if (existing) {
       return datasets::BatchDatasetWriter::resume(path, study, handling.columns);
     }
-    const fs::path parent = fs::path(path).parent_path();
-    if (!parent.empty()) fs::create_directories(parent, ec);
     return datasets::BatchDatasetWriter::create(path, study, handling.columns, shard_label);
   }
 
