@@ -113,6 +113,30 @@ second_writer | resume_in_use)
   [[ $first_status == 0 ]] || fail "the first batch: exit $first_status ($(cat first.err))"
   "$PYTHON" "$HERE/compare_batch_files.py" reference.h5 out.h5 || fail "the first batch's file differs"
   ;;
+merge_copy_full)
+  # The index of copies cannot be written (a file size limit, as a full disk): exit 3, no
+  # crash, no index and no temporary file left; with SIGXFSZ ignored by the caller or not.
+  "$wpg" batch study.yaml -o s0.h5 --shard 0/2 --no-plot >/dev/null 2>&1
+  "$wpg" batch study.yaml -o s1.h5 --shard 1/2 --no-plot >/dev/null 2>&1
+  for ignore in yes no; do
+    status=0
+    ( [[ $ignore == yes ]] && trap '' XFSZ; ulimit -f 200
+      exec "$wpg" merge idx.h5 s0.h5 s1.h5 --copy --no-plot ) >stdout 2>stderr || status=$?
+    [[ $status == 3 ]] || fail "merge --copy past the size limit (SIGXFSZ ignored: $ignore): exit $status"
+    grep -q "cannot write the index" stderr || fail "merge --copy: $(cat stderr)"
+    [[ ! -e idx.h5 ]] || fail "an index was left"
+    no_leftovers
+  done
+  ;;
+file_size_limit)
+  # Under a plain `ulimit -f`, the write fails as an I/O error: exit 3, nothing left.
+  status=0
+  ( ulimit -f 30; exec "$wpg" run walk_forward -o run.h5 --no-plot ) >stdout 2>stderr || status=$?
+  [[ $status == 3 ]] || fail "run past the file size limit: exit $status, expected 3"
+  grep -q "could not complete" stderr || fail "run past the file size limit: $(cat stderr)"
+  [[ ! -e run.h5 ]] || fail "run.h5 was left"
+  no_leftovers
+  ;;
 *) fail "unknown case $case_name" ;;
 esac
 echo ok

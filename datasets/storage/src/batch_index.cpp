@@ -16,6 +16,7 @@
 #include <set>
 
 #include <H5Cpp.h>
+#include <sys/resource.h>
 
 #include "wpg/datasets/input/input_error.hpp"
 #include "wpg/datasets/storage/output_file.hpp"
@@ -140,6 +141,31 @@ std::string relativeTo(const std::string& shard, const std::string& output) {
   return fs::weakly_canonical(fs::absolute(shard)).lexically_relative(folder).string();
 }
 
+// An index of copies holds every run of the shards: at most their sizes added up. Throws
+// std::runtime_error (an I/O error: exit 3) when the file size limit or the free space of the
+// index's file system is below that.
+void checkRoomForCopy(const std::string& output, const std::string& temporary,
+                      const std::vector<ShardContents>& contents) {
+  std::uintmax_t needed = 0;
+  std::error_code ec;
+  for (const ShardContents& shard : contents) needed += fs::file_size(shard.path, ec);
+  struct rlimit limit {};
+  if (::getrlimit(RLIMIT_FSIZE, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY &&
+      static_cast<std::uintmax_t>(limit.rlim_cur) < needed) {
+    throw std::runtime_error(output + ": cannot write the index: its copies need up to " +
+                             std::to_string(needed) + " bytes, over the file size limit of " +
+                             std::to_string(limit.rlim_cur) + " bytes (ulimit -f)");
+  }
+  const fs::space_info space = fs::space(fs::path(temporary).parent_path().empty()
+                                             ? fs::path(".")
+                                             : fs::path(temporary).parent_path(), ec);
+  if (!ec && space.available < needed) {
+    throw std::runtime_error(output + ": cannot write the index: its copies need up to " +
+                             std::to_string(needed) + " bytes, " +
+                             std::to_string(space.available) + " are free on its file system");
+  }
+}
+
 }  // namespace
 
 std::string shardSliceLabel(int shard, int shard_count) {
@@ -251,6 +277,9 @@ IndexReport writeBatchIndex(const std::string& output, const std::vector<std::st
   for (const auto& shard_rows : rows) report.shards_used += !shard_rows.empty();
 
   TemporaryOutput temporary(output);
+  // HDF5 1.10's H5Ocopy crashes (a segfault in its own clean-up) when a write inside it fails:
+  // the room a copy needs is checked first, so that it never runs out inside H5Ocopy.
+  if (layout == IndexLayout::kCopy) checkRoomForCopy(output, temporary.path(), contents);
   std::lock_guard<std::mutex> lock(hdf5Mutex());
   H5::Exception::dontPrint();
   try {
