@@ -137,6 +137,31 @@ file_size_limit)
   [[ ! -e run.h5 ]] || fail "run.h5 was left"
   no_leftovers
   ;;
+thread_limit)
+  # Worker threads the system refuses (1 GB stacks in 3 GB of address space: about 3 fit):
+  # exit 3, no file left and an old file in its place untouched; never std::terminate.
+  sed -e 's/\[300.0, 3000.0\]/[300, 400, 500, 600, 700, 800, 900, 1000]/' study.yaml >eight.yaml
+  "$wpg" batch study.yaml -o old.h5 --no-plot >/dev/null 2>&1
+  old="$(md5sum <old.h5)"
+  for output in new.h5 old.h5; do
+    status=0
+    ( ulimit -s 1000000; ulimit -v 3000000
+      exec "$wpg" batch eight.yaml -o "$output" -j 8 --no-plot ) >stdout 2>stderr || status=$?
+    [[ $status == 3 ]] || fail "batch -j 8 over the thread limit: exit $status ($(cat stderr))"
+    grep -q "cannot start worker thread" stderr || fail "batch -j 8: $(cat stderr)"
+  done
+  [[ ! -e new.h5 ]] || fail "new.h5 was left"
+  [[ "$(md5sum <old.h5)" == "$old" ]] || fail "old.h5 was modified"
+  status=0
+  ( ulimit -s 1000000; ulimit -v 3000000
+    exec "$wpg" push-sweep --situation forward --phases 2 -j 8 -o ps.h5 --no-plot ) \
+    >stdout 2>stderr || status=$?
+  [[ $status == 3 ]] || fail "push-sweep -j 8 over the thread limit: exit $status ($(cat stderr))"
+  [[ ! -e ps.h5 ]] || fail "ps.h5 was left"
+  # ... and -j far above the runs starts no more workers than runs: it completes.
+  "$wpg" batch study.yaml -o many.h5 -j 100000 --no-plot >/dev/null 2>&1 || fail "-j 100000 failed"
+  no_leftovers
+  ;;
 *) fail "unknown case $case_name" ;;
 esac
 echo ok

@@ -4,12 +4,15 @@
 #include "wpg/datasets/input/input_limits.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <new>
 #include <sstream>
 #include <stdexcept>
+#include <system_error>
 #include <thread>
 
 #include <yaml-cpp/yaml.h>
@@ -155,23 +158,35 @@ double nextUniform(std::uint64_t* state) {
 void loadStudyScenarios(Study* study, int threads, const std::function<void(StudyRun&)>& load) {
   const std::size_t total = study->runs.size();
   std::vector<std::string> errors(total);
+  std::atomic<bool> out_of_memory{false};
   const auto loadRun = [&](std::size_t index) {
     try {
       load(study->runs[index]);
+    } catch (const std::bad_alloc&) {
+      out_of_memory = true;  // not the input's fault: exit 3, as anywhere else
     } catch (const std::exception& e) {
       errors[index] = detail::oneLine(e.what());
     }
   };
   const std::size_t workers =
       std::max<std::size_t>(1, std::min<std::size_t>(threads < 1 ? 1 : static_cast<std::size_t>(threads), total));
+  // Runs handed out one at a time: a thread the system refuses to start (a thread or memory
+  // limit) leaves its share to the others, never std::terminate.
+  std::atomic<std::size_t> next{0};
+  const auto loadRuns = [&] {
+    for (std::size_t i = next++; i < total; i = next++) loadRun(i);
+  };
   std::vector<std::thread> pool;
   for (std::size_t w = 1; w < workers; ++w) {
-    pool.emplace_back([&, w] {
-      for (std::size_t i = w; i < total; i += workers) loadRun(i);
-    });
+    try {
+      pool.emplace_back(loadRuns);
+    } catch (const std::system_error&) {
+      break;
+    }
   }
-  for (std::size_t i = 0; i < total; i += workers) loadRun(i);
+  loadRuns();
   for (std::thread& thread : pool) thread.join();
+  if (out_of_memory) throw std::bad_alloc();
   std::uint64_t hash = 14695981039346656037ull;
   for (std::size_t i = 0; i < total; ++i) {
     if (!errors[i].empty()) throw InputError(errors[i]);
