@@ -24,6 +24,7 @@
 
 #include "goal_dataset.hpp"
 #include "wpg/datasets/storage/output_file.hpp"
+#include "external_link_guard.hpp"
 #include "hdf5_writing.hpp"
 #include "run_group_writing.hpp"
 #include "wpg/datasets/storage/dataset_checks.hpp"
@@ -38,6 +39,9 @@ namespace wpg::datasets {
 
 std::mutex& hdf5Mutex() {
   static std::mutex mutex;
+  // Before any file is opened: external links are followed to regular files only.
+  static const bool guarded = (detail::installExternalLinkGuard(), true);
+  (void)guarded;
   return mutex;
 }
 
