@@ -44,6 +44,43 @@ PY
   rm s0.h5
   refused 2 "/runs/tiny_0: external link to 's0.h5': no such file" analyze idx.h5
   ;;
+expansion_cap)
+  # Runs are counted before they are expanded, against a cap of 10^6, without wrapping; keys
+  # are checked first.
+  values() { "$PYTHON" -c "print('[' + ', '.join(str($2 + i) for i in range($1)) + ']')"; }
+  { echo "name: huge"; echo "base: walk_forward"; echo "sweep:"; echo "  grid:"
+    echo "    walking.weight_cop: $(values 1001 100)"; echo "    walking.weight_jerk: $(values 1000 1)"
+  } >grid.yaml
+  refused 2 "expected at most 1000000 runs" batch grid.yaml -o grid.h5 --no-plot
+  # 16 keys of 16 values: 2^64 runs, a product that wraps to 0 in 64 bits.
+  { echo "name: wraps"; echo "base: walk_forward"; echo "sweep:"; echo "  grid:"
+    for k in $(seq 0 15); do echo "    no_such_key_$k: $(values 16 0)"; done
+  } >wrap.yaml
+  refused 2 "no_such_key_0" batch wrap.yaml -o wrap.h5 --no-plot
+  sed -e 's/^name: tiny/name: samples/' study.yaml >samples.yaml
+  printf '  random: {samples: 2000000, seed: 1, keys: {walking.com_height: {uniform: [0.78, 0.84]}}}\n' >>samples.yaml
+  refused 2 "sweep.random.samples.*at most 1000000" batch samples.yaml -o samples.h5 --no-plot
+  sed -e 's/^seeds: 1$/seeds: 2000000/' compare.yaml >seeds.yaml
+  refused 2 "seeds.*at most 1000000" compare seeds.yaml -o seeds --no-plot
+  [[ ! -e grid.h5 && ! -e wrap.h5 && ! -e samples.h5 && ! -e seeds ]] || fail "an output was written"
+  ;;
+run_name_collision)
+  # World 'a.b' x variant 'c' and world 'a' x variant 'b.c' would both be run 'a.b.c.1':
+  # refused before any walk.
+  cat >collide.yaml <<'YAML'
+name: collide
+base: {robot: hrp2, duration: 3.0, generator: {algorithm: nmpc, sqp_iterations: 1}}
+seeds: 1
+worlds:
+  - {name: a.b, u_trap: {}}
+  - {name: a, u_trap: {}}
+variants:
+  c: {planner.algorithm: none}
+  b.c: {planner.algorithm: none}
+YAML
+  refused 2 "gives the run name 'a.b.c.1'" compare collide.yaml -o out --no-plot
+  [[ ! -e out ]] || fail "compare wrote out/ before refusing"
+  ;;
 *) fail "unknown case $case_name" ;;
 esac
 echo ok

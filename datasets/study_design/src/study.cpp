@@ -98,6 +98,11 @@ std::vector<KeyValues> readRandom(const YAML::Node& node, const Source& source) 
                       "a map with samples, seed and keys", source);
   const int samples = detail::readInteger(detail::entry(entries, "samples"), "sweep.random.samples",
                                           1, "a positive number of samples", source);
+  if (static_cast<std::size_t>(samples) > kMaxStudyRuns) {
+    source.failWith("sweep.random.samples", "expected at most " + std::to_string(kMaxStudyRuns) +
+                                                " samples (the most runs of a study), got " +
+                                                std::to_string(samples));
+  }
   const int seed = detail::readInteger(detail::entry(entries, "seed"), "sweep.random.seed", 0,
                                        "a non-negative integer seed", source);
   struct Range {
@@ -264,12 +269,46 @@ Study loadStudy(const std::string& path, const BaseResolver& resolve_base,
     }
   }
 
-  // Points: grid (first key slowest), then zip, then random (fastest).
+  // The keys first, on the first value of each (a typo is named before any count or
+  // expansion): the scenario must have them all.
+  {
+    std::vector<std::string> overrides;
+    for (const auto* section : {&grid, &zip, &random})
+      for (const KeyValues& key : *section) overrides.push_back(key.key + "=" + key.values.front().value);
+    overrides.push_back("name=" + study.name + "_0");
+    try {
+      (void)loadScenarioText(base_text, base_origin, overrides, robots_dir);
+    } catch (const std::exception& e) {
+      std::string message = detail::oneLine(e.what());
+      for (std::size_t at = message.find("--set '"); at != std::string::npos;
+           at = message.find("--set '", at)) {
+        message.replace(at, 5, "sweep");
+      }
+      throw InputError(path + ": run 0: " + message);
+    }
+  }
+
+  // Points: grid (first key slowest), then zip, then random (fastest); counted against the
+  // cap factor by factor, never wrapping.
+  std::size_t total = 1;
+  std::string factors;
+  const auto multiply = [&](std::size_t factor, const std::string& what) {
+    factors += (factors.empty() ? "" : " x ") + std::to_string(factor) + " " + what;
+    if (factor != 0 && total > kMaxStudyRuns / factor) {
+      source.failWith("sweep", "expected at most " + std::to_string(kMaxStudyRuns) +
+                                   " runs, got more: " + factors + "...");
+    }
+    total *= factor;
+  };
   std::size_t grid_points = 1;
-  for (const KeyValues& key : grid) grid_points *= key.values.size();
+  for (const KeyValues& key : grid) {
+    multiply(key.values.size(), "values of '" + key.key + "'");
+    grid_points *= key.values.size();
+  }
   const std::size_t zip_points = zip.empty() ? 1 : zip.front().values.size();
   const std::size_t random_points = random.empty() ? 1 : random.front().values.size();
-  const std::size_t total = grid_points * zip_points * random_points;
+  multiply(zip_points, "zip entries");
+  multiply(random_points, "random samples");
   const std::size_t digits = std::to_string(total - 1).size();
 
   for (std::size_t index = 0; index < total; ++index) {
