@@ -95,6 +95,14 @@ void checkOptions(const PushSweepOptions& options) {
       options.tolerance >= options.max_force) {
     throw UsageError("--tolerance: expected a force > 0 N and below --max-force");
   }
+  // Below ~1e-12 of the bracket, doubles no longer resolve it (2^-52 relative): a tolerance
+  // the bisection could never reach is bad input, printed as given.
+  const double finest = 1e-12 * options.max_force;
+  if (options.tolerance < finest) {
+    throw UsageError("--tolerance: expected a force of at least " + shortestNumber(finest) +
+                     " N (1e-12 of --max-force: doubles resolve no finer), got " +
+                     shortestNumber(options.tolerance));
+  }
   if (options.output.empty()) throw UsageError("-o: expected the HDF5 file to write (OUT.h5)");
   checkWritable(options.output, "-o", datasets::OutputKind::kHdf5);
   if (!options.json.empty()) checkWritable(options.json, "--json", datasets::OutputKind::kJson);
