@@ -81,6 +81,17 @@ YAML
   refused 2 "gives the run name 'a.b.c.1'" compare collide.yaml -o out --no-plot
   [[ ! -e out ]] || fail "compare wrote out/ before refusing"
   ;;
+planner_time_limit)
+  # An unreachable goal with a planner time limit of 10^9 s planned forever: the key is capped
+  # (600 s), and the walk's duration (3 s) bounds all its planning.
+  cp "$HERE/studies/goal_boxed_in.yaml" boxed.yaml
+  refused 2 "planner.time_limit.*at most 600" run boxed.yaml --set planner.time_limit=1e9 -o a.h5 --no-plot
+  status=0
+  timeout 60 "$wpg" run boxed.yaml -o b.h5 --no-plot >stdout 2>stderr || status=$?
+  [[ $status == 1 ]] || fail "the boxed-in walk: exit $status, expected 1 ($(cat stderr))"
+  planning_ms="$(sed -n 's/.*planning \([0-9]*\) ms.*/\1/p' stdout)"
+  [[ -n "$planning_ms" && "$planning_ms" -le 4000 ]] || fail "planning took ${planning_ms:-?} ms, over the walk's 3 s"
+  ;;
 *) fail "unknown case $case_name" ;;
 esac
 echo ok
