@@ -101,14 +101,25 @@ int compareCommand(const CompareOptions& options) {
       world ? engine::makeMpiExecutor(*world, options.threads_given ? options.threads : 1,
                                       robotsDirectory())
             : engine::makeThreadExecutor(options.threads, robotsDirectory());
-  const engine::ComparisonOutcome outcome =
-      engine::runComparison(comparison, batch_file.string(), *executor, progress);
+  engine::ComparisonOutcome outcome;
+  engine::ComparisonTableFiles files;
+  try {
+    outcome = engine::runComparison(comparison, batch_file.string(), *executor, progress);
+    if (outcome.complete) {
+      files = engine::writeComparisonTableFiles(comparison, outcome.cells, folder.string());
+    }
+  } catch (const datasets::InputError&) {
+    throw;  // refused before anything was written (a file in use is another's)
+  } catch (...) {
+    // Could not complete (a full disk): a comparison is not resumed, its partial file is
+    // of no use; removed, as `wpg run` leaves no partial dataset.
+    if (!world) fs::remove(batch_file, ec);
+    throw;
+  }
   if (!outcome.complete) {  // an MPI rank other than 0
     engine::finishMpi();
     return kExitSuccess;
   }
-  const engine::ComparisonTableFiles files =
-      engine::writeComparisonTableFiles(comparison, outcome.cells, folder.string());
 
   printComparison(outcome.cells);
   std::cout << "wrote " << batch_file.string() << " (" << study.runs.size() << " runs), "

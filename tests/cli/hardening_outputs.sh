@@ -162,6 +162,19 @@ thread_limit)
   "$wpg" batch study.yaml -o many.h5 -j 100000 --no-plot >/dev/null 2>&1 || fail "-j 100000 failed"
   no_leftovers
   ;;
+compare_full_disk)
+  # The disk fills (a file size limit) while the comparison writes: exit 3, no crash, and no
+  # partial DIR/study.h5 left (a comparison is not resumed).
+  status=0
+  ( ulimit -f 50; exec "$wpg" compare compare.yaml -o cmp --no-plot ) >stdout 2>stderr || status=$?
+  [[ $status == 3 ]] || fail "compare on a full disk: exit $status, expected 3 ($(tail -1 stderr))"
+  [[ ! -e cmp/study.h5 ]] || fail "a partial cmp/study.h5 was left"
+  no_leftovers
+  # ... and a batch stops with exit 3 too (its file is kept to be resumed).
+  status=0
+  ( ulimit -f 100; exec "$wpg" batch study.yaml -o out.h5 --no-plot ) >stdout 2>stderr || status=$?
+  [[ $status == 3 ]] || fail "batch on a full disk: exit $status, expected 3 ($(tail -1 stderr))"
+  ;;
 *) fail "unknown case $case_name" ;;
 esac
 echo ok

@@ -132,14 +132,18 @@ BatchDatasetWriter::~BatchDatasetWriter() {
 void BatchDatasetWriter::close() {
   if (!handles_) return;
   std::lock_guard<std::mutex> lock(hdf5Mutex());
+  std::unique_ptr<Handles> handles = std::move(handles_);
   try {
-    std::unique_ptr<Handles> handles = std::move(handles_);
     handles->columns.clear();
     handles->done.close();
     handles->exit_status.close();
     handles->runs.close();
     handles->file.close();
   } catch (const H5::Exception& error) {
+    // HDF5 1.10 frees part of a file whose close failed (a full disk, a file size limit):
+    // closing it again, as the handles' destructors would, crashes. They are left (the process
+    // is about to stop on this error).
+    (void)handles.release();
     rethrowHdf5(path_, "close the batch file", error);
   }
 }
