@@ -92,6 +92,25 @@ planner_time_limit)
   planning_ms="$(sed -n 's/.*planning \([0-9]*\) ms.*/\1/p' stdout)"
   [[ -n "$planning_ms" && "$planning_ms" -le 4000 ]] || fail "planning took ${planning_ms:-?} ms, over the walk's 3 s"
   ;;
+malformed_shard_column)
+  # A shard whose summary column holds text where numbers are: bad input naming the shard and
+  # the column, whichever place the shard is given in; no index written.
+  "$wpg" batch study.yaml -o s0.h5 --shard 0/2 --no-plot >/dev/null 2>&1
+  "$wpg" batch study.yaml -o s1.h5 --shard 1/2 --no-plot >/dev/null 2>&1
+  "$PYTHON" - <<'PY'
+import h5py
+with h5py.File("s1.h5", "r+") as f:
+    table = f["batch/summary"]
+    attrs = dict(table["exit_status"].attrs)
+    del table["exit_status"]
+    column = table.create_dataset("exit_status", data=[b"x", b"y"])
+    for name, value in attrs.items():
+        column.attrs[name] = value
+PY
+  refused 2 "s1.h5: /batch/summary/exit_status: expected numbers" merge idx.h5 s0.h5 s1.h5 --no-plot
+  refused 2 "s1.h5: /batch/summary/exit_status: expected numbers" merge idx.h5 s1.h5 s0.h5 --copy --no-plot
+  [[ ! -e idx.h5 ]] || fail "an index was written"
+  ;;
 *) fail "unknown case $case_name" ;;
 esac
 echo ok

@@ -239,6 +239,34 @@ IndexReport writeBatchIndex(const std::string& output, const std::vector<std::st
           throw InputError(shard.path + ": its summary columns differ from those of " + first.path +
                            " (written by another wpg command or version?)");
         }
+        // Each column one value per run, of the first shard's type: rows are copied between
+        // them as they are (a string column where numbers are would fail mid-write).
+        const H5::H5File first_file(first.path, H5F_ACC_RDONLY);
+        const H5::Group table = file.openGroup(kSummaryPath);
+        const H5::Group first_table = first_file.openGroup(kSummaryPath);
+        for (const std::string& column : columns) {
+          const std::string where = shard.path + ": " + kSummaryPath + "/" + column;
+          if (!table.nameExists(column) || table.childObjType(column) != H5O_TYPE_DATASET)
+            throw InputError(where + ": expected a summary column (a dataset), got none");
+          const H5::DataSet data = table.openDataSet(column);
+          const H5::DataSpace space = data.getSpace();
+          hsize_t rows = 0;
+          if (space.getSimpleExtentNdims() != 1 || (space.getSimpleExtentDims(&rows), rows) !=
+                                                       static_cast<hsize_t>(shard.done.size()))
+            throw InputError(where + ": expected one value per run (" +
+                             std::to_string(shard.done.size()) + " rows)");
+          const bool result_column =
+              std::find(columns.begin(), columns.end(), "done") <=
+              std::find(columns.begin(), columns.end(), column);
+          if (result_column && data.getTypeClass() != H5T_INTEGER &&
+              data.getTypeClass() != H5T_FLOAT)
+            throw InputError(where + ": expected numbers (a result column), got " +
+                             (data.getTypeClass() == H5T_STRING ? "text" : "another type"));
+          if (!(data.getDataType() == first_table.openDataSet(column).getDataType()))
+            throw InputError(where + ": expected the type of the column in " + first.path +
+                             " (" + (data.getTypeClass() == H5T_STRING ? "got text" : "got another type") +
+                             ")");
+        }
       }
     } catch (const H5::Exception& error) {
       throw InputError("merge: cannot read the shards' summary tables (" + error.getDetailMsg() + ")");
