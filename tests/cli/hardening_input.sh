@@ -111,6 +111,20 @@ PY
   refused 2 "s1.h5: /batch/summary/exit_status: expected numbers" merge idx.h5 s1.h5 s0.h5 --copy --no-plot
   [[ ! -e idx.h5 ]] || fail "an index was written"
   ;;
+messages)
+  # Values as given, never rounded away: 1e-320 s is not "0.000000".
+  refused 2 "got 1e-320" run walk_forward --set duration=1e-320 -o a.h5 --no-plot
+  # A `base:` naming a system file: refused without a line of it in the message.
+  printf 'name: sys\nbase: /etc/passwd\nsweep: {grid: {duration: [1.0]}}\n' >sys.yaml
+  refused 2 "/etc/passwd: expected a map of scenario keys" batch sys.yaml -o sys.h5 --no-plot
+  if grep -q "root:" stderr; then fail "a line of /etc/passwd was echoed: $(cat stderr)"; fi
+  # A batch file of a later layout (batch_schema_version 2) is not resumed into.
+  "$wpg" batch study.yaml -o future.h5 --no-plot >/dev/null 2>&1
+  "$PYTHON" -c "import h5py; h5py.File('future.h5', 'r+').attrs['batch_schema_version'] = 2"
+  sum="$(md5sum <future.h5)"
+  refused 2 "batch_schema_version is 2, this wpg writes 1" batch study.yaml -o future.h5 --resume --no-plot
+  [[ "$(md5sum <future.h5)" == "$sum" ]] || fail "the file of a later layout was modified"
+  ;;
 *) fail "unknown case $case_name" ;;
 esac
 echo ok

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <limits>
 #include <mutex>
+#include <sstream>
 #include <stdexcept>
 
 #include <H5Cpp.h>
@@ -255,6 +256,16 @@ std::unique_ptr<BatchDatasetWriter> BatchDatasetWriter::resume(
       if (name != study.name || fingerprint != study.fingerprint) {
         refuse("it holds study '" + name + "' (fingerprint " + fingerprint + "), not '" +
                study.name + "' (fingerprint " + study.fingerprint + ")");
+      }
+      // A layout this wpg does not know (a later version's) is not written into.
+      if (!file.attrExists("batch_schema_version")) refuse("no root attribute batch_schema_version");
+      const double version =
+          detail::readNumberAttribute(file, "batch_schema_version", path, "/:");
+      if (version != kBatchDatasetSchemaVersion) {
+        std::ostringstream text;
+        text << version;
+        refuse("its batch_schema_version is " + text.str() + ", this wpg writes " +
+               std::to_string(kBatchDatasetSchemaVersion));
       }
       if (!file.nameExists("batch") || !file.nameExists(kSummaryPath)) refuse("no /batch/summary");
       const H5::Group table = file.openGroup(kSummaryPath);
