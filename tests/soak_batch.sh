@@ -32,7 +32,7 @@ while (( rounds++ < 4 * kills + 20 )); do
   "$wpg" "${args[@]}" >batch.out 2>batch.err &
   pid=$!
   # a concurrent reader, and a kill after a random delay (while kills remain)
-  ( timeout 60 "$wpg" analyze soak.h5 >/dev/null 2>reader.err; echo $? >reader.status ) &
+  ( s=0; timeout 60 "$wpg" analyze soak.h5 >/dev/null 2>reader.err || s=$?; echo "$s" >reader.status ) &
   reader=$!
   if (( killed < kills )); then
     sleep "$("$python" -c "import random; print(round(random.uniform(0.05, 1.5), 3))")"

@@ -39,9 +39,7 @@ namespace wpg::datasets {
 
 std::mutex& hdf5Mutex() {
   static std::mutex mutex;
-  // Before any file is opened: external links are followed to regular files only.
-  static const bool guarded = (detail::installExternalLinkGuard(), true);
-  (void)guarded;
+  [[maybe_unused]] static const bool links_checked = (detail::installExternalLinkGuard(), true);
   return mutex;
 }
 
