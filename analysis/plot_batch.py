@@ -14,8 +14,8 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from wpg_file_reading import (BadFile, Reader, import_h5py, open_file, png_metadata,  # noqa: E402
-                              run_script)
+from wpg_file_reading import (  # noqa: E402
+    BadFile, Reader, import_h5py, open_file, png_metadata, run_script, save_figure)
 
 SCRIPT = "plot_batch.py"
 import_h5py(SCRIPT)
@@ -85,7 +85,7 @@ def main():
             ax.grid(alpha=0.3)
     fig.suptitle(f"study {study}: {int(done.sum())} runs, {int(failed.sum())} failed")
     fig.tight_layout()
-    fig.savefig(args.output, dpi=100, metadata=png_metadata(args.batch_file))
+    save_figure(fig, args.output, dpi=100, metadata=png_metadata(args.batch_file))
     return 0
 
 

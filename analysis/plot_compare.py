@@ -19,8 +19,8 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from wpg_file_reading import (Reader, import_h5py, open_file, png_metadata,  # noqa: E402
-                              run_script)
+from wpg_file_reading import (  # noqa: E402
+    Reader, import_h5py, open_file, png_metadata, run_script, save_figure)
 
 SCRIPT = "plot_compare.py"
 import_h5py(SCRIPT)
@@ -178,8 +178,7 @@ def main():
         ax.legend(fontsize=8, ncol=min(len(variants), 4), loc="upper center",
                   bbox_to_anchor=(0.5, -0.1))
         fig.tight_layout()
-        fig.savefig(os.path.join(args.output, "success_rates.png"), dpi=110,
-                    metadata=png_metadata(args.study_file))
+        save_figure(fig, os.path.join(args.output, "success_rates.png"), dpi=110, metadata=png_metadata(args.study_file))
         plt.close(fig)
 
         # Time to goal: a box per world x variant (reached runs only; empty boxes say "none").
@@ -210,8 +209,7 @@ def main():
         axes[0][0].set_ylabel("time to goal [s]")
         fig.suptitle("%s: time to goal of the runs that reached it" % study, fontsize=10)
         fig.tight_layout()
-        fig.savefig(os.path.join(args.output, "time_to_goal.png"), dpi=110,
-                    metadata=png_metadata(args.study_file))
+        save_figure(fig, os.path.join(args.output, "time_to_goal.png"), dpi=110, metadata=png_metadata(args.study_file))
         plt.close(fig)
 
         # A top view per world.
@@ -252,8 +250,7 @@ def main():
             # Beside the axes: inside, "best" can cover obstacles.
             ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.02, 1.0))
             fig.tight_layout()
-            fig.savefig(os.path.join(args.output, "top_%s.png" % world), dpi=110,
-                        bbox_inches="tight", metadata=png_metadata(args.study_file))
+            save_figure(fig, os.path.join(args.output, "top_%s.png" % world), dpi=110, bbox_inches="tight", metadata=png_metadata(args.study_file))
             plt.close(fig)
     return 0
 

@@ -14,8 +14,8 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from wpg_file_reading import (BadFile, Reader, import_h5py, open_file, png_metadata,  # noqa: E402
-                              run_script)
+from wpg_file_reading import (  # noqa: E402
+    BadFile, Reader, import_h5py, open_file, png_metadata, run_script, save_figure)
 
 SCRIPT = "plot_push_sweep.py"
 import_h5py(SCRIPT)
@@ -84,7 +84,7 @@ def main():
         title += "\n--set " + " ".join(overrides)
     fig.suptitle(title, fontsize=10)
     fig.tight_layout()
-    fig.savefig(args.output, dpi=110, metadata=png_metadata(args.sweep_file))
+    save_figure(fig, args.output, dpi=110, metadata=png_metadata(args.sweep_file))
     return 0
 
 

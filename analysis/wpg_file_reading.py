@@ -60,6 +60,28 @@ def png_metadata(source):
             "Source": os.path.basename(str(source))}
 
 
+def save_figure(fig, output, **savefig_options):
+    """fig as a PNG at `output`, atomically: an exclusive temporary file beside it, renamed over
+    it (a symlink, a FIFO or a half-written figure is never left at `output`)."""
+    import tempfile
+    folder = os.path.dirname(os.path.abspath(output))
+    fd, temporary = tempfile.mkstemp(prefix="." + os.path.basename(output) + ".",
+                                     suffix=".tmp", dir=folder)
+    try:
+        with os.fdopen(fd, "wb") as stream:
+            fig.savefig(stream, format="png", **savefig_options)
+        umask = os.umask(0)
+        os.umask(umask)
+        os.chmod(temporary, 0o666 & ~umask)
+        os.replace(temporary, output)
+    except BaseException:
+        try:
+            os.unlink(temporary)
+        except OSError:
+            pass
+        raise
+
+
 def import_h5py(script):
     """h5py and numpy, or one line and exit 2 naming the Debian packages."""
     try:

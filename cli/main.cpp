@@ -1,5 +1,6 @@
 // The `wpg` executable: one registration per subcommand (commands/registration.cpp holds their
 // options), then the chosen subcommand runs and its errors become the exit codes.
+#include <csignal>
 #include <cstdlib>
 #include <exception>
 #include <iostream>
@@ -32,6 +33,10 @@ namespace {
 
 int main(int argc, char** argv) {
   using namespace wpg::cli;
+  // Past a file size limit (`ulimit -f`) the kernel's SIGXFSZ would kill the process with its
+  // temporary file left behind: ignored, the write fails with EFBIG instead, an I/O error like
+  // a full disk (exit 3, the temporary file removed). Inherited by the plot scripts too.
+  std::signal(SIGXFSZ, SIG_IGN);
 
   CLI::App app{
       "wpg: walking pattern generator for humanoid robots, after Naveau et al., \"A Reactive "

@@ -100,9 +100,11 @@ int batchCommand(const BatchOptions& options) {
     study = datasets::loadStudy(
         options.study, [](const std::string& base) { return resolveScenarioPath(base); },
         robotsDirectory(), options.threads);
-    // Never over the study, a device, a folder or a file that is not HDF5 (output_file.hpp).
-    datasets::checkOutputPath(options.output, datasets::OutputKind::kHdf5, {options.study});
-    datasets::checkWritableParent(options.output);
+    // Never over the study, a device, a folder, a link or a file of another kind, for the
+    // batch file and every file beside it (output_file.hpp); a shard has no summary files.
+    std::vector<datasets::PlannedOutput> outputs = engine::batchOutputs(options.output, options.plot);
+    if (slice) outputs.resize(1);
+    datasets::checkOutputPaths(outputs, {options.study});
     engine::checkStudyRobotModels(study, robotsDirectory());
   };
   std::optional<engine::MpiWorld> world;

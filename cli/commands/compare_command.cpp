@@ -83,7 +83,18 @@ int compareCommand(const CompareOptions& options) {
     if (fs::exists(folder, error) && !fs::is_directory(folder, error)) {
       throw UsageError("output '" + folder.string() + "' is not a directory");
     }
-    datasets::checkWritableParent(batch_file.string());
+    // Every file the command writes in DIR, held to the main output's rules (output_file.hpp).
+    std::vector<datasets::PlannedOutput> outputs = {
+        {batch_file.string(), datasets::OutputKind::kHdf5},
+        {(folder / "summary.csv").string(), datasets::OutputKind::kText},
+        {(folder / "summary.md").string(), datasets::OutputKind::kText}};
+    if (options.plot) {
+      for (const std::string& name : {std::string("success_rates"), std::string("time_to_goal")})
+        outputs.push_back({(folder / (name + ".png")).string(), datasets::OutputKind::kPng});
+      for (const std::string& name : comparison.worlds)
+        outputs.push_back({(folder / ("top_" + name + ".png")).string(), datasets::OutputKind::kPng});
+    }
+    datasets::checkOutputPaths(outputs, {options.study});
     engine::checkStudyRobotModels(comparison.study, robotsDirectory());
     if (!options.ompl_log.empty()) {
       try {
@@ -102,14 +113,25 @@ int compareCommand(const CompareOptions& options) {
       world ? engine::makeMpiExecutor(*world, options.threads_given ? options.threads : 1,
                                       robotsDirectory())
             : engine::makeThreadExecutor(options.threads, robotsDirectory());
-  const engine::ComparisonOutcome outcome =
-      engine::runComparison(comparison, batch_file.string(), *executor, progress);
+  engine::ComparisonOutcome outcome;
+  engine::ComparisonTableFiles files;
+  try {
+    outcome = engine::runComparison(comparison, batch_file.string(), *executor, progress);
+    if (outcome.complete) {
+      files = engine::writeComparisonTableFiles(comparison, outcome.cells, folder.string());
+    }
+  } catch (const datasets::InputError&) {
+    throw;  // refused before anything was written (a file in use is another's)
+  } catch (...) {
+    // Could not complete (a full disk): a comparison is not resumed, its partial file is
+    // of no use; removed, as `wpg run` leaves no partial dataset.
+    if (!world) fs::remove(batch_file, ec);
+    throw;
+  }
   if (!outcome.complete) {  // an MPI rank other than 0
     engine::finishMpi();
     return kExitSuccess;
   }
-  const engine::ComparisonTableFiles files =
-      engine::writeComparisonTableFiles(comparison, outcome.cells, folder.string());
 
   printComparison(outcome.cells);
   std::cout << "wrote " << batch_file.string() << " (" << study.runs.size() << " runs), "

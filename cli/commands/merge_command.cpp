@@ -10,6 +10,7 @@
 #include "exit_codes.hpp"
 #include "wpg/datasets/storage/batch_index.hpp"
 #include "wpg/datasets/storage/output_file.hpp"
+#include "wpg/engine/study_summary.hpp"
 
 namespace fs = std::filesystem;
 
@@ -38,8 +39,8 @@ int mergeCommand(const MergeOptions& options) {
     }
   }
   // Never over a shard (by identity, whatever the name), a folder or a file of another kind.
-  datasets::checkOutputPath(options.output, datasets::OutputKind::kHdf5, shards);
-  datasets::checkWritableParent(options.output);
+  // ... and so are the summary files beside the index (a shard named OUT.summary.csv).
+  datasets::checkOutputPaths(engine::batchOutputs(options.output, options.plot), shards);
   const datasets::IndexReport report = datasets::writeBatchIndex(
       options.output, shards, options.copy ? datasets::IndexLayout::kCopy : datasets::IndexLayout::kLinks);
   (void)report;

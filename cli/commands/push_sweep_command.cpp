@@ -71,6 +71,13 @@ void checkWritable(const std::string& path, const char* option, datasets::Output
   }
 }
 
+// OUT.h5 -> OUT.<suffix>
+std::string besideOutput(const std::string& output, const std::string& suffix) {
+  fs::path path = output;
+  path.replace_extension("." + suffix);
+  return path.string();
+}
+
 void checkOptions(const PushSweepOptions& options) {
   if (options.situation != "both" && options.situation != "forward" && options.situation != "on_spot") {
     throw UsageError("--situation: expected forward, on_spot or both, got '" + options.situation + "'");
@@ -88,16 +95,29 @@ void checkOptions(const PushSweepOptions& options) {
       options.tolerance >= options.max_force) {
     throw UsageError("--tolerance: expected a force > 0 N and below --max-force");
   }
+  // Below ~1e-12 of the bracket, doubles no longer resolve it (2^-52 relative): a tolerance
+  // the bisection could never reach is bad input, printed as given.
+  const double finest = 1e-12 * options.max_force;
+  if (options.tolerance < finest) {
+    throw UsageError("--tolerance: expected a force of at least " + shortestNumber(finest) +
+                     " N (1e-12 of --max-force: doubles resolve no finer), got " +
+                     shortestNumber(options.tolerance));
+  }
   if (options.output.empty()) throw UsageError("-o: expected the HDF5 file to write (OUT.h5)");
   checkWritable(options.output, "-o", datasets::OutputKind::kHdf5);
   if (!options.json.empty()) checkWritable(options.json, "--json", datasets::OutputKind::kJson);
-}
-
-// OUT.h5 -> OUT.<suffix>
-std::string besideOutput(const std::string& output, const std::string& suffix) {
-  fs::path path = output;
-  path.replace_extension("." + suffix);
-  return path.string();
+  // Every other file beside OUT.h5, held to the same rules (output_file.hpp) before any work.
+  std::vector<datasets::PlannedOutput> outputs = {{options.output, datasets::OutputKind::kHdf5}};
+  if (!options.json.empty()) outputs.push_back({options.json, datasets::OutputKind::kJson});
+  if (options.plot) outputs.push_back({besideOutput(options.output, "png"), datasets::OutputKind::kPng});
+  if (!options.overrides.empty()) {
+    for (const SituationSource& source : kSituations) {
+      if (options.situation == "both" || options.situation == source.name)
+        outputs.push_back({besideOutput(options.output, std::string(source.name) + ".yaml"),
+                           datasets::OutputKind::kText});
+    }
+  }
+  datasets::checkOutputPaths(outputs);
 }
 
 // The situation's base scenario with the overrides, and its swept step (the engine runs the
@@ -116,11 +136,10 @@ PushSituation loadSituation(const SituationSource& source, const PushSweepOption
 // with the overrides (its pushes[0] is what the JSON's push replaces).
 void writeSituationScenario(const PushSituation& situation, const SituationSource& source,
                             const std::vector<std::string>& overrides) {
-  std::ofstream file(situation.scenario);
-  file << "# " << source.scenario << " with --set";
-  for (const std::string& o : overrides) file << " " << o;
-  file << " (wpg push-sweep)\n" << situation.base.resolved_yaml;
-  if (!file) throw std::runtime_error("cannot write " + situation.scenario);
+  std::string text = "# " + std::string(source.scenario) + " with --set";
+  for (const std::string& o : overrides) text += " " + o;
+  text += " (wpg push-sweep)\n" + situation.base.resolved_yaml;
+  datasets::writeFileAtomically(situation.scenario, text);  // never through a link
 }
 
 void printTable(const std::vector<datasets::PushSweepRow>& rows, int phases) {

@@ -14,9 +14,18 @@ namespace wpg::detail {
   throw std::invalid_argument(what + "'" + key + "': expected " + expected + ", got " + got);
 }
 
+// The shortest text that reads back as `value` (1e-320 stays "1e-320", 0.1 "0.1"): a message
+// shows the value given, never a rounding of it ("0.000000").
 inline std::string formatValue(double value) {
   std::ostringstream os;
-  os << value;
+  for (int digits = 1; digits <= 17; ++digits) {
+    os.str("");
+    os.precision(digits);
+    os << value;
+    std::istringstream back(os.str());
+    double parsed = 0.0;
+    if (back >> parsed && (parsed == value || value != value)) break;
+  }
   return os.str();
 }
 

@@ -20,8 +20,10 @@ void GoalRequest::validate() const {
   detail::requireValue(std::isfinite(goal.yaw), "", "goal.yaw", "an angle in rad", goal.yaw);
   requirePositive(goal.tolerance, "goal.tolerance", "a positive distance in m");
   requirePositive(goal.yaw_tolerance, "goal.yaw_tolerance", "a positive angle in rad");
-  detail::requireValue(std::isfinite(planner.time_limit) && planner.time_limit > 0.0, "",
-                       "planner.time_limit", "a positive time in s", planner.time_limit);
+  detail::requireValue(std::isfinite(planner.time_limit) && planner.time_limit > 0.0 &&
+                           planner.time_limit <= kMaxPlannerTimeLimit,
+                       "", "planner.time_limit", "a positive time in s, at most 600",
+                       planner.time_limit);
   detail::requireValue(planner.max_iterations > 0, "", "planner.max_iterations",
                        "a positive number of iterations", planner.max_iterations);
   detail::requireValue(std::isfinite(planner.robot_radius) && planner.robot_radius >= 0.0, "",

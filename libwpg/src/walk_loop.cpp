@@ -7,6 +7,7 @@
 
 #include "wpg/obstacles.hpp"
 #include "wpg/online_walking_generator.hpp"
+#include "value_checks.hpp"
 
 namespace wpg {
 namespace {
@@ -53,15 +54,15 @@ void checkWalkSize(const WalkingParameters& parameters, const WalkRequest& reque
   if (!(request.duration >= 0.5 * parameters.sampling_period)) {
     throw std::invalid_argument(
         "'duration': expected at least half a sampling period (" +
-        std::to_string(0.5 * parameters.sampling_period) +
-        " s: one NMPC iteration), got " + std::to_string(request.duration));
+        detail::formatValue(0.5 * parameters.sampling_period) +
+        " s: one NMPC iteration), got " + detail::formatValue(request.duration));
   }
   const double periods = request.duration / parameters.control_period;
   if (!(periods <= kMaxControlPeriods)) {
     throw std::invalid_argument(
         "'duration': expected at most " + std::to_string(static_cast<long long>(kMaxControlPeriods)) +
-        " control periods of " + std::to_string(parameters.control_period) +
-        " s (the walk is kept in memory, ~0.3 kB a period), got " + std::to_string(periods));
+        " control periods of " + detail::formatValue(parameters.control_period) +
+        " s (the walk is kept in memory, ~0.3 kB a period), got " + detail::formatValue(periods));
   }
 }
 

@@ -1,6 +1,7 @@
 // The walk to a goal: route planner + path follower + online generator (goal_walk.hpp).
 #include "wpg/planning/goal_walk.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -267,7 +268,13 @@ class GoalCommands final : public CommandSource {
       result_.plans.push_back(std::move(record));
       return true;
     }
-    const RoutePlanner planner(World(knownObstacles(request_, known_)), goal_.planner, radius_,
+    // The walk's duration bounds its planning: all plans together get at most that many
+    // seconds of planning (an unreachable goal replans at each step, each plan to its limit).
+    RoutePlannerSettings settings = goal_.planner;
+    const double remaining = request_.duration - result_.planning_time;
+    // Spent: one last plan of 1 ms, which an unreachable goal ends as a timeout.
+    settings.time_limit = std::max(1e-3, std::min(settings.time_limit, remaining));
+    const RoutePlanner planner(World(knownObstacles(request_, known_)), settings, radius_,
                                bounds_);
     for (const bool k : known_) record.known_obstacles += k ? 1 : 0;
     Eigen::Vector2d from = pose.head<2>();

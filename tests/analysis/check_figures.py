@@ -65,6 +65,8 @@ def compare_figures(study_file, out):
     sys.argv = ["plot_compare.py", study_file, "-o", out]
     try:
         plot_compare.plt.close = lambda *a, **k: None  # keep the figures open for the checks
+        # The script saves through save_figure (a temporary file renamed): capture its figures.
+        plot_compare.save_figure = lambda fig, output, **kwargs: capture(fig, output)
         plot_compare.main()
     finally:
         matplotlib.figure.Figure.savefig = original

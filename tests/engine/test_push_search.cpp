@@ -5,6 +5,7 @@
 // that recovers again (recovery not monotone in the force) moves the search above it.
 #include <cmath>
 #include <functional>
+#include <stdexcept>
 
 #include <gtest/gtest.h>
 
@@ -109,4 +110,22 @@ TEST(PushSearch, AStrongerPushBeyondTheBoundIsReportedAtTheBound) {
   EXPECT_FALSE(r.stronger_fails);
   EXPECT_GE(r.force, settings.max_force);
   EXPECT_TRUE(recovered(r.force));
+}
+
+TEST(PushSearch, AToleranceBelowWhatDoublesResolveStopsWhenTheBracketStopsShrinking) {
+  // 1e-300 N: no two doubles near 123 N are that close, the bracket stops shrinking at one ulp
+  // (~1.4e-14 N) after about 55 halvings; the bisection must stop there, not loop forever.
+  PushSearchSettings settings;
+  settings.tolerance = 1e-300;
+  const double bound = 123.456;
+  int calls = 0;
+  const PushSearchResult r = searchLargestRecoveredForce(
+      [&](double f) {
+        if (++calls > 10000) throw std::runtime_error("the bisection does not end");
+        return f <= bound;
+      },
+      settings);
+  EXPECT_LE(r.force, bound);
+  EXPECT_GE(r.force, std::nextafter(bound, 0.0));  // the bracket is one ulp wide
+  EXPECT_LT(calls, 2 * 64);
 }

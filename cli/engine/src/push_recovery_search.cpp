@@ -63,6 +63,8 @@ PushSearchResult searchLargestRecoveredForce(const std::function<bool(double for
   const auto bisect = [&] {
     while (high - low > settings.tolerance) {
       const double middle = 0.5 * (low + high);
+      // Adjacent doubles: the bracket cannot shrink further, whatever the tolerance asked.
+      if (middle <= low || middle >= high) break;
       (recovers(middle) ? low : high) = middle;
     }
   };

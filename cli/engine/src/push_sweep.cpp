@@ -1,6 +1,7 @@
 // The paper's push-recovery test (push_sweep.hpp).
 #include "wpg/engine/push_sweep.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
@@ -86,7 +87,9 @@ std::vector<datasets::PushSweepRow> runPushSweep(const std::vector<PushSituation
     }
   }
 
-  const int workers = threads < 1 ? 1 : threads;
+  // Never more workers than bisections (runOrdered): one robot model cache each.
+  const int workers = static_cast<int>(std::max<std::size_t>(
+      1, std::min<std::size_t>(threads < 1 ? 1 : static_cast<std::size_t>(threads), jobs.size())));
   std::vector<RobotModelCache> models;
   for (int worker = 0; worker < workers; ++worker) models.emplace_back(robots_directory);
   std::vector<datasets::PushSweepRow> rows;

@@ -2,11 +2,12 @@
 #include "wpg/engine/study_summary.hpp"
 
 #include <filesystem>
-#include <fstream>
+#include <sstream>
 #include <stdexcept>
 
 #include "wpg/analysis/run_metrics.hpp"
 #include "wpg/datasets/storage/provenance.hpp"
+#include "wpg/datasets/storage/output_file.hpp"
 
 namespace fs = std::filesystem;
 
@@ -53,7 +54,7 @@ std::vector<double> runSummaryValues(const RunResult& result) {
 }
 
 void writeTableCsv(const datasets::BatchSummaryTable& table, const std::string& path) {
-  std::ofstream out(path);
+  std::ostringstream out;
   const auto quoted = [](const std::string& cell) {
     if (cell.find_first_of(",\"\n") == std::string::npos) return cell;
     std::string text = "\"";
@@ -70,12 +71,12 @@ void writeTableCsv(const datasets::BatchSummaryTable& table, const std::string& 
     }
     out << "\n";
   }
-  if (!out) throw std::runtime_error("cannot write " + path);
+  datasets::writeFileAtomically(path, out.str());  // never a half table, never through a link
 }
 
 void writeTableMarkdown(const datasets::BatchSummaryTable& table, const std::string& path,
                         const std::string& title, const std::string& intro) {
-  std::ofstream out(path);
+  std::ostringstream out;
   out << "# " << title << "\n\n" << intro << "\n\n|";
   for (std::size_t c = 0; c < table.column_names.size(); ++c) {
     const std::string& unit = table.column_units[c];
@@ -97,13 +98,22 @@ void writeTableMarkdown(const datasets::BatchSummaryTable& table, const std::str
   const datasets::Provenance who = datasets::currentProvenance();  // as every file of wpg
   out << "\nWritten by wpg " << who.version << " (commit " << who.commit << ") on " << who.machine
       << " at " << who.date << ".\n";
-  if (!out) throw std::runtime_error("cannot write " + path);
+  datasets::writeFileAtomically(path, out.str());
 }
 
 std::string batchSummaryPath(const std::string& batch_file, const std::string& extension) {
   fs::path path = batch_file;
   path.replace_extension(".summary." + extension);
   return path.string();
+}
+
+std::vector<datasets::PlannedOutput> batchOutputs(const std::string& batch_file, bool plot) {
+  std::vector<datasets::PlannedOutput> outputs = {
+      {batch_file, datasets::OutputKind::kHdf5},
+      {batchSummaryPath(batch_file, "csv"), datasets::OutputKind::kText},
+      {batchSummaryPath(batch_file, "md"), datasets::OutputKind::kText}};
+  if (plot) outputs.push_back({batchSummaryPath(batch_file, "png"), datasets::OutputKind::kPng});
+  return outputs;
 }
 
 BatchSummaryFiles writeBatchSummaryFiles(const std::string& batch_file) {

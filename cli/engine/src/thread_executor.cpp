@@ -1,11 +1,14 @@
 // A study on this process's worker threads (study_executor.hpp, makeThreadExecutor).
+#include <algorithm>
 #include <filesystem>
+#include <functional>
 #include <system_error>
 #include <utility>
 
 #include "batch_run_record.hpp"
 #include "wpg/datasets/input/input_error.hpp"
 #include "wpg/datasets/storage/batch_index.hpp"
+#include "wpg/datasets/storage/output_file.hpp"
 #include "wpg/engine/ordered_parallel.hpp"
 #include "wpg/engine/study_executor.hpp"
 
@@ -25,35 +28,51 @@ class ThreadExecutor : public StudyExecutor {
     const ShardSlice slice = output.shard.value_or(ShardSlice{});
     const std::string shard_label =
         output.shard ? datasets::shardSliceLabel(slice.index, slice.count) : "";
+    // Claimed before the file is examined or truncated, held until the file is closed: a second
+    // writer is refused, the first one's file untouched (output_file.hpp, OutputClaim).
+    std::unique_ptr<datasets::OutputClaim> claim;
     std::unique_ptr<datasets::BatchDatasetWriter> writer =
-        openWriter(study, output, handling, shard_label, observer);
+        openWriter(study, output, handling, shard_label, observer, claim);
 
     std::vector<const datasets::StudyRun*> todo;
     std::size_t slice_runs = 0;
     for (const datasets::StudyRun& run : study.runs) {
       if (!datasets::inShardSlice(run.index, slice.index, slice.count)) continue;
       ++slice_runs;
-      if (!writer->done()[run.index]) todo.push_back(&run);
+      if (!writer || !writer->done()[run.index]) todo.push_back(&run);
     }
     if (todo.size() < slice_runs) observer.resuming(slice_runs - todo.size(), slice_runs, output.path);
     observer.started(todo.size());
-    runInto(todo, handling, *writer, observer);
+    // A new file is created once every worker thread has started: a thread the system refuses
+    // leaves no file (exit 3), and an old file in its place untouched.
+    runInto(todo, handling, writer, observer, [&] {
+      if (!writer) {
+        writer = datasets::BatchDatasetWriter::create(output.path, study, handling.columns,
+                                                      shard_label);
+      }
+    });
     observer.finished();
     writer->close();
     return true;
   }
 
  private:
-  // The batch file to write: a new one, or with `resume` the one there (moved aside first when
+  // The batch file to resume (none: a new one, created by run()), with `resume` the one there (moved aside first when
   // HDF5 cannot read it: killed inside a write).
   std::unique_ptr<datasets::BatchDatasetWriter> openWriter(const datasets::Study& study,
                                                            const StudyOutput& output,
                                                            const StudyRunHandling& handling,
                                                            const std::string& shard_label,
-                                                           StudyObserver& observer) {
+                                                           StudyObserver& observer,
+                                                           std::unique_ptr<datasets::OutputClaim>& claim) {
     std::error_code ec;
     const std::string& path = output.path;
-    if (output.resume && fs::exists(path, ec) && !datasets::isDamagedHdf5File(path)) {
+    const fs::path parent = fs::path(path).parent_path();
+    if (!parent.empty()) fs::create_directories(parent, ec);
+    claim = std::make_unique<datasets::OutputClaim>(path);
+    // A file held by another process was refused above: what is left to judge is damage.
+    const bool existing = output.resume && !claim->created();
+    if (existing && !datasets::isDamagedHdf5File(path)) {
       // A slice finishes its own shard only (and a whole batch is not finished as a slice).
       const std::string label = datasets::readShardContents(path).label;
       if (label != shard_label) {
@@ -64,29 +83,32 @@ class ThreadExecutor : public StudyExecutor {
             " (file left as it is)");
       }
     }
-    if (output.resume && fs::exists(path, ec) && datasets::isDamagedHdf5File(path)) {
+    if (existing && datasets::isDamagedHdf5File(path)) {
       // Nothing of it can be trusted. Kept aside, not removed, and the study starts again (the
-      // same runs give the same file).
+      // same runs give the same file), under a new claim on the new file.
       observer.movedDamagedFile(path, datasets::moveDamagedFileAside(path), false);
-    }
-    if (output.resume && fs::exists(path, ec)) {
+      claim.reset();
+      claim = std::make_unique<datasets::OutputClaim>(path);
+    } else if (existing) {
       return datasets::BatchDatasetWriter::resume(path, study, handling.columns);
     }
-    const fs::path parent = fs::path(path).parent_path();
-    if (!parent.empty()) fs::create_directories(parent, ec);
-    return datasets::BatchDatasetWriter::create(path, study, handling.columns, shard_label);
+    return nullptr;  // created by run() once its workers have started
   }
 
   // The runs on the workers, their datasets compressed there, written in study order.
   void runInto(const std::vector<const datasets::StudyRun*>& runs,
-               const StudyRunHandling& handling, datasets::BatchDatasetWriter& writer,
-               StudyObserver& observer) {
+               const StudyRunHandling& handling,
+               std::unique_ptr<datasets::BatchDatasetWriter>& writer, StudyObserver& observer,
+               const std::function<void()>& ready) {
+    // Never more workers than runs (runOrdered): one robot model cache each.
+    const int workers = static_cast<int>(
+        std::max<std::size_t>(1, std::min<std::size_t>(static_cast<std::size_t>(threads_), runs.size())));
     std::vector<RobotModelCache> models;
-    for (int worker = 0; worker < threads_; ++worker) models.emplace_back(robots_directory_);
+    for (int worker = 0; worker < workers; ++worker) models.emplace_back(robots_directory_);
     // Each slot is written by the worker of its run, then read by the writer: none is shared.
     std::vector<datasets::PreparedRun> prepared(runs.size());
     runOrdered<RunResult>(
-        runs.size(), threads_,
+        runs.size(), workers,
         [&](std::size_t position, int worker) {
           RunSettings settings{robots_directory_, &models[static_cast<std::size_t>(worker)]};
           RunResult result = runScenario(runs[position]->scenario, settings);
@@ -98,13 +120,14 @@ class ThreadExecutor : public StudyExecutor {
           const datasets::StudyRun& run = *runs[position];
           BatchRunRecordOf record(run, result);
           record.record().values = handling.summary_values(run, result);
-          writer.write(record.record(), &prepared[position]);
+          writer->write(record.record(), &prepared[position]);
           prepared[position] = datasets::PreparedRun{};  // free the chunks
           if (handling.report && handling.collect) {
             handling.collect(run.index, handling.report(run, result));
           }
           observer.runFinished(result.exitStatus() != 0);
-        });
+        },
+        ready);
   }
 
   int threads_;

@@ -41,7 +41,7 @@ Scenario loadScenarioTree(YAML::Node root, const std::string& path,
     if (root.IsNull() && !overrides.empty()) root = YAML::Node(YAML::NodeType::Map);
     if (!root.IsMap()) {
       source.failFile("expected a map of scenario keys (" + joinNames(topLevelKeys()) +
-                      "), got " + (root.IsNull() ? std::string("an empty file") : describe(root)));
+                      "), got " + describeDocument(root));
     }
     std::vector<ParsedOverride> parsed_overrides;
     for (const std::string& text : overrides) {

@@ -230,13 +230,21 @@ std::string readName(const YAML::Node& node, const std::string& key, const std::
   return text;
 }
 
+std::string describeDocument(const YAML::Node& node) {
+  if (!node.IsDefined() || node.IsNull()) return "an empty file";
+  if (node.IsScalar())
+    return "a single text of " + std::to_string(node.Scalar().size()) + " characters (not a map)";
+  if (node.IsSequence()) return "a list of " + std::to_string(node.size()) + " entries (not a map)";
+  return describe(node);
+}
+
 Entries readMap(const YAML::Node& node, const std::string& key,
                 const std::vector<std::string>& known_keys, const std::string& expected,
                 const Source& source, bool null_is_empty) {
   Entries entries;
   if (null_is_empty && node.IsDefined() && node.IsNull()) return entries;
   if (!node.IsDefined() || !node.IsMap()) {
-    if (key.empty()) source.failFile("expected " + expected + ", got " + describe(node));
+    if (key.empty()) source.failFile("expected " + expected + ", got " + describeDocument(node));
     source.fail(key, expected, node);
   }
   for (const auto& pair : node) {

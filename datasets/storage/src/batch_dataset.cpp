@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <limits>
 #include <mutex>
+#include <sstream>
 #include <stdexcept>
 
 #include <H5Cpp.h>
@@ -133,14 +134,18 @@ BatchDatasetWriter::~BatchDatasetWriter() {
 void BatchDatasetWriter::close() {
   if (!handles_) return;
   std::lock_guard<std::mutex> lock(hdf5Mutex());
+  std::unique_ptr<Handles> handles = std::move(handles_);
   try {
-    std::unique_ptr<Handles> handles = std::move(handles_);
     handles->columns.clear();
     handles->done.close();
     handles->exit_status.close();
     handles->runs.close();
     handles->file.close();
   } catch (const H5::Exception& error) {
+    // HDF5 1.10 frees part of a file whose close failed (a full disk, a file size limit):
+    // closing it again, as the handles' destructors would, crashes. They are left (the process
+    // is about to stop on this error).
+    (void)handles.release();
     rethrowHdf5(path_, "close the batch file", error);
   }
 }
@@ -253,6 +258,16 @@ std::unique_ptr<BatchDatasetWriter> BatchDatasetWriter::resume(
       if (name != study.name || fingerprint != study.fingerprint) {
         refuse("it holds study '" + name + "' (fingerprint " + fingerprint + "), not '" +
                study.name + "' (fingerprint " + study.fingerprint + ")");
+      }
+      // A layout this wpg does not know (a later version's) is not written into.
+      if (!file.attrExists("batch_schema_version")) refuse("no root attribute batch_schema_version");
+      const double version =
+          detail::readNumberAttribute(file, "batch_schema_version", path, "/:");
+      if (version != kBatchDatasetSchemaVersion) {
+        std::ostringstream text;
+        text << version;
+        refuse("its batch_schema_version is " + text.str() + ", this wpg writes " +
+               std::to_string(kBatchDatasetSchemaVersion));
       }
       if (!file.nameExists("batch") || !file.nameExists(kSummaryPath)) refuse("no /batch/summary");
       const H5::Group table = file.openGroup(kSummaryPath);

@@ -16,6 +16,7 @@
 #include <set>
 
 #include <H5Cpp.h>
+#include <sys/resource.h>
 
 #include "wpg/datasets/input/input_error.hpp"
 #include "wpg/datasets/storage/output_file.hpp"
@@ -140,6 +141,31 @@ std::string relativeTo(const std::string& shard, const std::string& output) {
   return fs::weakly_canonical(fs::absolute(shard)).lexically_relative(folder).string();
 }
 
+// An index of copies holds every run of the shards: at most their sizes added up. Throws
+// std::runtime_error (an I/O error: exit 3) when the file size limit or the free space of the
+// index's file system is below that.
+void checkRoomForCopy(const std::string& output, const std::string& temporary,
+                      const std::vector<ShardContents>& contents) {
+  std::uintmax_t needed = 0;
+  std::error_code ec;
+  for (const ShardContents& shard : contents) needed += fs::file_size(shard.path, ec);
+  struct rlimit limit {};
+  if (::getrlimit(RLIMIT_FSIZE, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY &&
+      static_cast<std::uintmax_t>(limit.rlim_cur) < needed) {
+    throw std::runtime_error(output + ": cannot write the index: its copies need up to " +
+                             std::to_string(needed) + " bytes, over the file size limit of " +
+                             std::to_string(limit.rlim_cur) + " bytes (ulimit -f)");
+  }
+  const fs::space_info space = fs::space(fs::path(temporary).parent_path().empty()
+                                             ? fs::path(".")
+                                             : fs::path(temporary).parent_path(), ec);
+  if (!ec && space.available < needed) {
+    throw std::runtime_error(output + ": cannot write the index: its copies need up to " +
+                             std::to_string(needed) + " bytes, " +
+                             std::to_string(space.available) + " are free on its file system");
+  }
+}
+
 }  // namespace
 
 std::string shardSliceLabel(int shard, int shard_count) {
@@ -213,6 +239,34 @@ IndexReport writeBatchIndex(const std::string& output, const std::vector<std::st
           throw InputError(shard.path + ": its summary columns differ from those of " + first.path +
                            " (written by another wpg command or version?)");
         }
+        // Each column one value per run, of the first shard's type: rows are copied between
+        // them as they are (a string column where numbers are would fail mid-write).
+        const H5::H5File first_file(first.path, H5F_ACC_RDONLY);
+        const H5::Group table = file.openGroup(kSummaryPath);
+        const H5::Group first_table = first_file.openGroup(kSummaryPath);
+        for (const std::string& column : columns) {
+          const std::string where = shard.path + ": " + kSummaryPath + "/" + column;
+          if (!table.nameExists(column) || table.childObjType(column) != H5O_TYPE_DATASET)
+            throw InputError(where + ": expected a summary column (a dataset), got none");
+          const H5::DataSet data = table.openDataSet(column);
+          const H5::DataSpace space = data.getSpace();
+          hsize_t rows = 0;
+          if (space.getSimpleExtentNdims() != 1 || (space.getSimpleExtentDims(&rows), rows) !=
+                                                       static_cast<hsize_t>(shard.done.size()))
+            throw InputError(where + ": expected one value per run (" +
+                             std::to_string(shard.done.size()) + " rows)");
+          const bool result_column =
+              std::find(columns.begin(), columns.end(), "done") <=
+              std::find(columns.begin(), columns.end(), column);
+          if (result_column && data.getTypeClass() != H5T_INTEGER &&
+              data.getTypeClass() != H5T_FLOAT)
+            throw InputError(where + ": expected numbers (a result column), got " +
+                             (data.getTypeClass() == H5T_STRING ? "text" : "another type"));
+          if (!(data.getDataType() == first_table.openDataSet(column).getDataType()))
+            throw InputError(where + ": expected the type of the column in " + first.path +
+                             " (" + (data.getTypeClass() == H5T_STRING ? "got text" : "got another type") +
+                             ")");
+        }
       }
     } catch (const H5::Exception& error) {
       throw InputError("merge: cannot read the shards' summary tables (" + error.getDetailMsg() + ")");
@@ -251,6 +305,9 @@ IndexReport writeBatchIndex(const std::string& output, const std::vector<std::st
   for (const auto& shard_rows : rows) report.shards_used += !shard_rows.empty();
 
   TemporaryOutput temporary(output);
+  // HDF5 1.10's H5Ocopy crashes (a segfault in its own clean-up) when a write inside it fails:
+  // the room a copy needs is checked first, so that it never runs out inside H5Ocopy.
+  if (layout == IndexLayout::kCopy) checkRoomForCopy(output, temporary.path(), contents);
   std::lock_guard<std::mutex> lock(hdf5Mutex());
   H5::Exception::dontPrint();
   try {

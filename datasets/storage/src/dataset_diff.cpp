@@ -18,6 +18,8 @@
 
 #include <H5Cpp.h>
 
+#include "external_link_guard.hpp"
+
 #include "hdf5_bounded_reading.hpp"
 #include "wpg/datasets/storage/read_limits.hpp"
 #include "wpg/datasets/storage/run_dataset.hpp"
@@ -414,6 +416,7 @@ DatasetDiff diffDatasets(const std::string& path_a, const std::string& path_b,
     comparison.compareGroups("/", file_a.openGroup("/"), file_b.openGroup("/"));
     return std::move(comparison.result);
   } catch (const H5::Exception& error) {
+    if (std::string why = detail::takeExternalLinkRefusal(); !why.empty()) throw InputError(why);
     throw InputError(current + ": cannot read the file (" + error.getFuncName() + ": " +
                      error.getDetailMsg() + ")");
   }

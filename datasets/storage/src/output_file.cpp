@@ -14,6 +14,7 @@
 #include <stdexcept>
 
 #include <fcntl.h>
+#include <sys/file.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -128,6 +129,12 @@ bool holdsKind(const std::string& path, OutputKind kind, std::uintmax_t size) {
       const std::size_t space = first.find(' ');
       return space != std::string::npos && first.compare(space, 9, " version ") == 0;
     }
+    case OutputKind::kText: {
+      char c = 0;
+      for (int i = 0; i < (1 << 16) && in.get(c); ++i)
+        if (c == '\0') return false;
+      return true;
+    }
   }
   return false;
 }
@@ -146,6 +153,7 @@ const char* outputKindName(OutputKind kind) {
     case OutputKind::kJson: return "a JSON file";
     case OutputKind::kHtml: return "an HTML page";
     case OutputKind::kBenchmarkLog: return "a benchmark log";
+    case OutputKind::kText: return "a text file";
   }
   return "a file";
 }
@@ -169,10 +177,12 @@ void checkOutputPath(const std::string& path, OutputKind kind,
                            std::to_string(kTemporaryNameExtra) + ")");
   }
   struct stat target {};
-  if (::stat(path.c_str(), &target) != 0) {
+  if (::lstat(path.c_str(), &target) != 0) {
     if (errno == ENOENT) return;  // a new file (its folder is created when written)
     refuse(path, kind, std::string("a path that cannot be examined: ") + std::strerror(errno));
   }
+  // Never followed: the link's target may be an input, another user's file, a device.
+  if (S_ISLNK(target.st_mode)) refuse(path, kind, "a symbolic link (not followed)");
   if (!S_ISREG(target.st_mode)) refuse(path, kind, fileType(target));
   for (const std::string& input : inputs) {
     struct stat other {};
@@ -199,6 +209,76 @@ void checkWritableParent(const std::string& output) {
     }
     if (folder == folder.parent_path()) break;
   }
+}
+
+void checkOutputPaths(const std::vector<PlannedOutput>& outputs,
+                      const std::vector<std::string>& inputs) {
+  for (std::size_t i = 0; i < outputs.size(); ++i) {
+    checkOutputPath(outputs[i].path, outputs[i].kind, inputs);
+    checkWritableParent(outputs[i].path);
+    for (std::size_t j = 0; j < i; ++j)
+      if (fs::path(outputs[i].path).lexically_normal() == fs::path(outputs[j].path).lexically_normal())
+        refuse(outputs[i].path, outputs[i].kind, "a path the command also writes another output to");
+  }
+}
+
+void writeFileAtomically(const std::string& path, const std::string& content) {
+  TemporaryOutput temporary(path);
+  const int fd = ::open(temporary.path().c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC);
+  if (fd < 0) throw std::runtime_error("cannot write " + path + ": " + std::strerror(errno));
+  std::size_t written = 0;
+  while (written < content.size()) {
+    const ssize_t n = ::write(fd, content.data() + written, content.size() - written);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      const int error = n < 0 ? errno : EIO;
+      ::close(fd);
+      throw std::runtime_error("cannot write " + path + ": " + std::strerror(error));
+    }
+    written += static_cast<std::size_t>(n);
+  }
+  if (::close(fd) != 0)
+    throw std::runtime_error("cannot write " + path + ": " + std::strerror(errno));
+  temporary.commit();
+}
+
+OutputClaim::OutputClaim(const std::string& path) : path_(path) {
+  const auto in_use = [&] {
+    return InputError("'" + escapeControlCharacters(path) +
+                      "': in use by another wpg or HDF5 program (nothing written)");
+  };
+  // Never O_TRUNC here: the file is examined before anything of it may change.
+  fd_ = ::open(path.c_str(), O_RDWR | O_CLOEXEC | O_NOFOLLOW);
+  if (fd_ < 0 && errno == ENOENT) {
+    fd_ = ::open(path.c_str(), O_RDWR | O_CREAT | O_EXCL | O_CLOEXEC | O_NOFOLLOW, creationMode());
+    created_ = fd_ >= 0;
+  }
+  if (fd_ < 0)
+    throw std::runtime_error("cannot open " + path + ": " + std::strerror(errno));
+  struct flock claim {};
+  claim.l_type = F_WRLCK;
+  claim.l_whence = SEEK_SET;  // l_start = l_len = 0: the whole file
+  if (::fcntl(fd_, F_OFD_SETLK, &claim) != 0) {
+    ::close(fd_);
+    fd_ = -1;
+    throw in_use();
+  }
+  // HDF5's own lock (a flock, held while a program has the file open): probed, then released
+  // so that this process's HDF5 can take it.
+  if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
+    if (created_) ::unlink(path.c_str());
+    ::close(fd_);
+    fd_ = -1;
+    throw in_use();
+  }
+  ::flock(fd_, LOCK_UN);
+}
+
+OutputClaim::~OutputClaim() {
+  if (fd_ < 0) return;
+  struct stat s {};
+  if (created_ && ::fstat(fd_, &s) == 0 && s.st_size == 0) ::unlink(path_.c_str());
+  ::close(fd_);  // releases the claim
 }
 
 TemporaryOutput::TemporaryOutput(const std::string& target) : target_(target) {

@@ -24,6 +24,7 @@
 
 #include "goal_dataset.hpp"
 #include "wpg/datasets/storage/output_file.hpp"
+#include "external_link_guard.hpp"
 #include "hdf5_writing.hpp"
 #include "provenance_attributes.hpp"
 #include "run_group_writing.hpp"
@@ -39,6 +40,7 @@ namespace wpg::datasets {
 
 std::mutex& hdf5Mutex() {
   static std::mutex mutex;
+  [[maybe_unused]] static const bool links_checked = (detail::installExternalLinkGuard(), true);
   return mutex;
 }
 

@@ -19,6 +19,8 @@
 
 #include <H5Cpp.h>
 
+#include "external_link_guard.hpp"
+
 #include "hdf5_bounded_reading.hpp"
 #include "wpg/datasets/storage/read_limits.hpp"
 #include "wpg/datasets/storage/run_dataset.hpp"
@@ -394,6 +396,7 @@ std::vector<std::string> listRuns(const std::string& path) {
     std::sort(names.begin(), names.end());
     return names;
   } catch (const H5::Exception& error) {
+    if (std::string why = detail::takeExternalLinkRefusal(); !why.empty()) throw InputError(why);
     throw InputError(path + ": cannot read the file (" + error.getFuncName() + ": " +
                      error.getDetailMsg() + ")");
   }
@@ -406,6 +409,7 @@ StoredRun readRunDataset(const std::string& path, const std::string& run_name) {
   try {
     return readFile(path, run_name);
   } catch (const H5::Exception& error) {
+    if (std::string why = detail::takeExternalLinkRefusal(); !why.empty()) throw InputError(why);
     throw InputError(path + ": cannot read the run file (" + error.getFuncName() + ": " +
                      error.getDetailMsg() + ")");
   }

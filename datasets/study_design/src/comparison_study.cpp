@@ -139,6 +139,10 @@ std::vector<int> readSeeds(const YAML::Node& node, const Source& source) {
   }
   const int count = detail::readInteger(node, "seeds", 1,
                                         "a positive count (seeds 1..count) or a list of seeds", source);
+  if (static_cast<std::size_t>(count) > kMaxStudyRuns) {
+    source.failWith("seeds", "expected at most " + std::to_string(kMaxStudyRuns) +
+                                 " seeds (the most runs of a study), got " + std::to_string(count));
+  }
   for (int seed = 1; seed <= count; ++seed) seeds.push_back(seed);
   return seeds;
 }
@@ -225,7 +229,16 @@ ComparisonStudy loadComparisonStudy(const std::string& path, const BaseResolver&
     }
   }
 
+  // worlds x variants x seeds, within the cap (each factor is at most the cap: no wrap).
+  const std::size_t cells = worlds.size() * comparison.variants.size();
+  if (cells > kMaxStudyRuns / comparison.seeds.size()) {
+    source.failWith("seeds", "expected at most " + std::to_string(kMaxStudyRuns) + " runs, got " +
+                                 std::to_string(worlds.size()) + " worlds x " +
+                                 std::to_string(comparison.variants.size()) + " variants x " +
+                                 std::to_string(comparison.seeds.size()) + " seeds");
+  }
   study.keys = {"world", "variant", "seed"};
+  std::set<std::string> run_names;
   int widest_seed = 0;
   for (const int seed : comparison.seeds) widest_seed = std::max(widest_seed, seed);
   const int digits = static_cast<int>(std::to_string(widest_seed).size());
@@ -247,6 +260,13 @@ ComparisonStudy loadComparisonStudy(const std::string& path, const BaseResolver&
         seed_value.numeric = true;
         seed_value.number = seed;
         run.swept = {world_value, variant_value, seed_value};
+        // Names join world, variant and seed with '.', which names may hold too: two cells
+        // that give one name ('a.b' x 'c', 'a' x 'b.c') are refused before any walk.
+        if (!run_names.insert(run.name).second) {
+          source.failWith("variants", "world '" + worlds[w].name + "' x variant '" +
+                                          comparison.variants[v] + "' gives the run name '" +
+                                          run.name + "' of another world x variant (rename one)");
+        }
         study.runs.push_back(std::move(run));
         comparison.runs.push_back({w, v, seed});
       }

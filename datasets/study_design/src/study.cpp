@@ -4,12 +4,15 @@
 #include "wpg/datasets/input/input_limits.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <new>
 #include <sstream>
 #include <stdexcept>
+#include <system_error>
 #include <thread>
 
 #include <yaml-cpp/yaml.h>
@@ -95,6 +98,11 @@ std::vector<KeyValues> readRandom(const YAML::Node& node, const Source& source) 
                       "a map with samples, seed and keys", source);
   const int samples = detail::readInteger(detail::entry(entries, "samples"), "sweep.random.samples",
                                           1, "a positive number of samples", source);
+  if (static_cast<std::size_t>(samples) > kMaxStudyRuns) {
+    source.failWith("sweep.random.samples", "expected at most " + std::to_string(kMaxStudyRuns) +
+                                                " samples (the most runs of a study), got " +
+                                                std::to_string(samples));
+  }
   const int seed = detail::readInteger(detail::entry(entries, "seed"), "sweep.random.seed", 0,
                                        "a non-negative integer seed", source);
   struct Range {
@@ -155,23 +163,35 @@ double nextUniform(std::uint64_t* state) {
 void loadStudyScenarios(Study* study, int threads, const std::function<void(StudyRun&)>& load) {
   const std::size_t total = study->runs.size();
   std::vector<std::string> errors(total);
+  std::atomic<bool> out_of_memory{false};
   const auto loadRun = [&](std::size_t index) {
     try {
       load(study->runs[index]);
+    } catch (const std::bad_alloc&) {
+      out_of_memory = true;  // not the input's fault: exit 3, as anywhere else
     } catch (const std::exception& e) {
       errors[index] = detail::oneLine(e.what());
     }
   };
   const std::size_t workers =
       std::max<std::size_t>(1, std::min<std::size_t>(threads < 1 ? 1 : static_cast<std::size_t>(threads), total));
+  // Runs handed out one at a time: a thread the system refuses to start (a thread or memory
+  // limit) leaves its share to the others, never std::terminate.
+  std::atomic<std::size_t> next{0};
+  const auto loadRuns = [&] {
+    for (std::size_t i = next++; i < total; i = next++) loadRun(i);
+  };
   std::vector<std::thread> pool;
   for (std::size_t w = 1; w < workers; ++w) {
-    pool.emplace_back([&, w] {
-      for (std::size_t i = w; i < total; i += workers) loadRun(i);
-    });
+    try {
+      pool.emplace_back(loadRuns);
+    } catch (const std::system_error&) {
+      break;
+    }
   }
-  for (std::size_t i = 0; i < total; i += workers) loadRun(i);
+  loadRuns();
   for (std::thread& thread : pool) thread.join();
+  if (out_of_memory) throw std::bad_alloc();
   std::uint64_t hash = 14695981039346656037ull;
   for (std::size_t i = 0; i < total; ++i) {
     if (!errors[i].empty()) throw InputError(errors[i]);
@@ -249,12 +269,46 @@ Study loadStudy(const std::string& path, const BaseResolver& resolve_base,
     }
   }
 
-  // Points: grid (first key slowest), then zip, then random (fastest).
+  // The keys first, on the first value of each (a typo is named before any count or
+  // expansion): the scenario must have them all.
+  {
+    std::vector<std::string> overrides;
+    for (const auto* section : {&grid, &zip, &random})
+      for (const KeyValues& key : *section) overrides.push_back(key.key + "=" + key.values.front().value);
+    overrides.push_back("name=" + study.name + "_0");
+    try {
+      (void)loadScenarioText(base_text, base_origin, overrides, robots_dir);
+    } catch (const std::exception& e) {
+      std::string message = detail::oneLine(e.what());
+      for (std::size_t at = message.find("--set '"); at != std::string::npos;
+           at = message.find("--set '", at)) {
+        message.replace(at, 5, "sweep");
+      }
+      throw InputError(path + ": run 0: " + message);
+    }
+  }
+
+  // Points: grid (first key slowest), then zip, then random (fastest); counted against the
+  // cap factor by factor, never wrapping.
+  std::size_t total = 1;
+  std::string factors;
+  const auto multiply = [&](std::size_t factor, const std::string& what) {
+    factors += (factors.empty() ? "" : " x ") + std::to_string(factor) + " " + what;
+    if (factor != 0 && total > kMaxStudyRuns / factor) {
+      source.failWith("sweep", "expected at most " + std::to_string(kMaxStudyRuns) +
+                                   " runs, got more: " + factors + "...");
+    }
+    total *= factor;
+  };
   std::size_t grid_points = 1;
-  for (const KeyValues& key : grid) grid_points *= key.values.size();
+  for (const KeyValues& key : grid) {
+    multiply(key.values.size(), "values of '" + key.key + "'");
+    grid_points *= key.values.size();
+  }
   const std::size_t zip_points = zip.empty() ? 1 : zip.front().values.size();
   const std::size_t random_points = random.empty() ? 1 : random.front().values.size();
-  const std::size_t total = grid_points * zip_points * random_points;
+  multiply(zip_points, "zip entries");
+  multiply(random_points, "random samples");
   const std::size_t digits = std::to_string(total - 1).size();
 
   for (std::size_t index = 0; index < total; ++index) {

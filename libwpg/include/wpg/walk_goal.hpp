@@ -21,6 +21,10 @@ struct WalkGoal {
   double yaw_tolerance = 0.1;  // and within this of `yaw` [rad] (when has_yaw)
 };
 
+// planner.time_limit at most this [s]: a plan never runs for days. A walk's plans together
+// also get at most its duration of planning (planning/goal_walk.cpp).
+constexpr double kMaxPlannerTimeLimit = 600.0;
+
 struct RoutePlannerSettings {
   // One of OMPL's geometric planners by name (docs/goals-and-planners.md lists them): rrtconnect,
   // rrtstar, informedrrtstar, bitstar, prmstar, ...; `none`: no planner, the straight line to

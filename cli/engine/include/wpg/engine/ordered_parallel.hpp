@@ -8,8 +8,17 @@
 //
 // An exception thrown by `work` or `deliver` stops the hand-out of new jobs; the running jobs
 // finish, and the first exception is rethrown to the caller.
+//
+// Workers are never more than the jobs. Every worker thread is started before the first job is
+// handed out and before `all_started` (may be empty; e.g. creating the output file) is called: a
+// thread the system refuses (a thread or memory limit) is a std::runtime_error ("cannot start
+// worker thread k of n") with no job run and `all_started` not called, never std::terminate.
+#include <condition_variable>
 #include <cstddef>
 #include <exception>
+#include <stdexcept>
+#include <string>
+#include <system_error>
 #include <functional>
 #include <map>
 #include <mutex>
@@ -23,14 +32,21 @@ namespace wpg::engine {
 template <typename Outcome>
 void runOrdered(std::size_t count, int threads,
                 const std::function<Outcome(std::size_t job, int worker)>& work,
-                const std::function<void(std::size_t job, Outcome&& outcome)>& deliver) {
+                const std::function<void(std::size_t job, Outcome&& outcome)>& deliver,
+                const std::function<void()>& all_started = {}) {
   std::mutex mutex;
+  std::condition_variable go_signal;
+  bool go = false;
   std::map<std::size_t, Outcome> ready;  // finished, waiting for an earlier job
   std::size_t next_job = 0, next_delivery = 0;
   bool delivering = false;
   std::exception_ptr error;
 
   const auto worker = [&](int worker_index) {
+    {
+      std::unique_lock<std::mutex> lock(mutex);
+      go_signal.wait(lock, [&] { return go; });
+    }
     while (true) {
       std::size_t job = 0;
       {
@@ -70,9 +86,31 @@ void runOrdered(std::size_t count, int threads,
     }
   };
 
-  const int count_threads = threads < 1 ? 1 : threads;
+  const std::size_t wanted = threads < 1 ? 1 : static_cast<std::size_t>(threads);
+  const int count_threads = static_cast<int>(count < wanted ? (count < 1 ? 1 : count) : wanted);
   std::vector<std::thread> pool;
-  for (int t = 1; t < count_threads; ++t) pool.emplace_back(worker, t);
+  pool.reserve(static_cast<std::size_t>(count_threads));
+  for (int t = 1; t < count_threads && !error; ++t) {
+    try {
+      pool.emplace_back(worker, t);
+    } catch (const std::system_error& e) {
+      error = std::make_exception_ptr(std::runtime_error(
+          "cannot start worker thread " + std::to_string(t + 1) + " of " +
+          std::to_string(count_threads) + " (-j): " + e.what()));
+    }
+  }
+  if (!error && all_started) {
+    try {
+      all_started();
+    } catch (...) {
+      error = std::current_exception();
+    }
+  }
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    go = true;  // with an error, the workers stop before their first job
+  }
+  go_signal.notify_all();
   worker(0);  // the calling thread is worker 0
   for (std::thread& thread : pool) thread.join();
   if (error) std::rethrow_exception(error);

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "wpg/datasets/storage/batch_dataset.hpp"
+#include "wpg/datasets/storage/output_file.hpp"
 #include "wpg/engine/scenario_run.hpp"
 
 namespace wpg::engine {
@@ -24,6 +25,10 @@ void writeTableMarkdown(const datasets::BatchSummaryTable& table, const std::str
 
 // OUT.h5 -> OUT.summary.<extension>: the files beside a batch file.
 std::string batchSummaryPath(const std::string& batch_file, const std::string& extension);
+
+// Every file a batch (or merge) writes: OUT.h5, OUT.summary.csv, OUT.summary.md and, with
+// `plot`, OUT.summary.png; checked together before any work (datasets::checkOutputPaths).
+std::vector<datasets::PlannedOutput> batchOutputs(const std::string& batch_file, bool plot);
 
 // OUT.summary.csv and OUT.summary.md of a batch file or index, from its /batch/summary.
 struct BatchSummaryFiles {

@@ -34,4 +34,10 @@ constexpr std::size_t kMaxNameLength = 128;
 // (`<study>_<number>`, `<world>.<variant>.<seed>`) and is a scenario name.
 constexpr std::size_t kMaxStudyNameLength = 32;
 
+// Runs a study (grid x zip x random samples) or a comparison study (worlds x variants x seeds)
+// expands to, at most; also the most `sweep.random.samples` and a count of `seeds`. Every run
+// is a loaded scenario held in memory before the first walk (~10 kB each): a grid of 10^9
+// would eat gigabytes before anything ran, a product of 2^64 wrap to 0.
+constexpr std::size_t kMaxStudyRuns = 1000000;
+
 }  // namespace wpg::datasets

@@ -27,6 +27,9 @@ std::string indexKey(const std::string& parent, std::size_t index);        // pa
 bool isQuoted(const YAML::Node& node);
 
 // What a node is, for "got ..." in messages.
+// A whole document that should have been a map, described without quoting it ("a single text
+// of 1234 characters"): the file may be anything (a `base:` naming /etc/passwd).
+std::string describeDocument(const YAML::Node& node);
 std::string describe(const YAML::Node& node);
 
 // Shortest text that reads back to the same double, always recognisable as a float by YAML

@@ -5,7 +5,8 @@
 //    /dev/null, a FIFO, /proc/self/fd/1), that is the same file (device and inode, whatever the
 //    name) as one of the command's inputs, or that exists and holds another kind of data than
 //    the command writes there (an HDF5 output over a scenario or a figure, a figure over a
-//    dataset). Policy for an existing output of the same kind (an HDF5 file where wpg writes a
+//    dataset). A symbolic link is refused too (never followed: its target may be anything).
+//    Policy for an existing output of the same kind (an HDF5 file where wpg writes a
 //    dataset, a PNG where it draws a figure, a JSON file where it writes JSON): it is replaced,
 //    atomically. Empty files count as any kind.
 //  * TemporaryOutput is where the data is written before it replaces the target: a file created
@@ -24,6 +25,7 @@ enum class OutputKind {
   kJson,  // first non-blank character '{' or '['
   kHtml,  // first non-blank character '<' (the pages of `wpg view`)
   kBenchmarkLog,  // first line "<library> version <number>" (OMPL's benchmark log format)
+  kText,  // CSV, Markdown, YAML: no NUL byte in the first 64 KiB (a dataset or figure has one)
 };
 const char* outputKindName(OutputKind kind);  // "an HDF5 file", "a PNG image", "a JSON file"
 
@@ -32,6 +34,43 @@ const char* outputKindName(OutputKind kind);  // "an HDF5 file", "a PNG image", 
 // (above). `inputs`: the files the command reads (missing ones are skipped).
 void checkOutputPath(const std::string& path, OutputKind kind,
                      const std::vector<std::string>& inputs = {});
+
+// Every file a command will write, checked together before any work (checkOutputPath on each,
+// checkWritableParent on each, and no two outputs the same path): side outputs (a batch's
+// OUT.summary.csv/.md/.png, a comparison's DIR/summary.*, push-sweep's OUT.<situation>.yaml)
+// are held to the same rules as the main output.
+struct PlannedOutput {
+  std::string path;
+  OutputKind kind;
+};
+void checkOutputPaths(const std::vector<PlannedOutput>& outputs,
+                      const std::vector<std::string>& inputs = {});
+
+// Writes `content` to `path` atomically (TemporaryOutput, then rename). Throws
+// std::runtime_error naming `path` on an I/O error (a full disk, a file size limit: EFBIG),
+// leaving neither the temporary file nor a partial `path`.
+void writeFileAtomically(const std::string& path, const std::string& content);
+
+// An exclusive claim on an output file that is written in place for a long time (a batch file,
+// resumed later): an open-file-description lock (fcntl F_OFD_SETLK) on the file itself, held
+// until destruction, taken BEFORE the file is truncated or its health examined. A file another
+// process holds (another wpg writing it, or any program with it open through HDF5, whose lock
+// is a flock) is refused with InputError "'<path>': in use by another wpg or HDF5 program
+// (nothing written)" and left untouched. A file created by acquire() that is still empty when
+// the claim ends is removed.
+class OutputClaim {
+ public:
+  explicit OutputClaim(const std::string& path);
+  ~OutputClaim();
+  OutputClaim(const OutputClaim&) = delete;
+  OutputClaim& operator=(const OutputClaim&) = delete;
+  bool created() const { return created_; }  // the file did not exist before
+
+ private:
+  std::string path_;
+  int fd_ = -1;
+  bool created_ = false;
+};
 
 // Throws InputError ("cannot write output '<output>': '<folder>' is not a writable directory")
 // unless the nearest existing folder above `output` is a directory this process may write in.

@@ -1,0 +1,130 @@
+#!/usr/bin/env bash
+# hardening_input.sh WPG CASE: hostile files and values given to the study commands end in
+# bounded time with one clear line (exit 2 bad input, exit 3 could not complete), never a hang
+# or unbounded work (datasets/SCENARIOS.md "Limits", datasets/SCHEMA.md "Reading").
+set -euo pipefail
+# shellcheck source=common.sh
+source "$(dirname "$0")/common.sh"
+wpg="$(readlink -f "$1")"
+case_name="$2"
+make_workdir
+cd "$WORKDIR"
+cp "$HERE/studies/tiny_batch.yaml" study.yaml
+cp "$HERE/studies/tiny_compare.yaml" compare.yaml
+
+# refused STATUS PATTERN ARGS...: exit STATUS within 20 s, one line on stderr matching PATTERN.
+refused() {
+  local expected="$1" pattern="$2" status=0
+  shift 2
+  timeout 20 "$wpg" "$@" >stdout 2>stderr || status=$?
+  [[ $status == "$expected" ]] || fail "wpg $*: exit $status, expected $expected ($(cat stderr))"
+  [[ "$(wc -l <stderr)" == 1 ]] || fail "wpg $*: not one line on stderr: $(cat stderr)"
+  grep -q -- "$pattern" stderr || fail "wpg $*: expected '$pattern': $(cat stderr)"
+}
+
+case "$case_name" in
+external_link_special)
+  # An index whose links lead to a FIFO, a device, a missing file: refused, naming the run and
+  # the link, never opened (a FIFO would block analyze and diff forever).
+  "$wpg" batch study.yaml -o s0.h5 --shard 0/1 --no-plot >/dev/null 2>&1
+  "$wpg" merge idx.h5 s0.h5 --no-plot >/dev/null
+  mv s0.h5 real.h5
+  mkfifo s0.h5
+  refused 2 "/runs/tiny_0: external link to 's0.h5': expected a regular file, got a FIFO" analyze idx.h5
+  refused 2 "/runs/tiny_0: external link to 's0.h5': expected a regular file, got a FIFO" diff idx.h5 real.h5
+  "$PYTHON" - <<'PY'
+import h5py
+with h5py.File("device.h5", "w") as f:
+    for name, value in h5py.File("idx.h5", "r").attrs.items():
+        f.attrs[name] = value
+    f.create_group("runs")["tiny_0"] = h5py.ExternalLink("/dev/zero", "/runs/tiny_0")
+PY
+  refused 2 "/runs/tiny_0: external link to '/dev/zero': expected a regular file, got a character device" \
+    diff device.h5 real.h5
+  rm s0.h5
+  refused 2 "/runs/tiny_0: external link to 's0.h5': no such file" analyze idx.h5
+  ;;
+expansion_cap)
+  # Runs are counted before they are expanded, against a cap of 10^6, without wrapping; keys
+  # are checked first.
+  values() { "$PYTHON" -c "print('[' + ', '.join(str($2 + i) for i in range($1)) + ']')"; }
+  { echo "name: huge"; echo "base: walk_forward"; echo "sweep:"; echo "  grid:"
+    echo "    walking.weight_cop: $(values 1001 100)"; echo "    walking.weight_jerk: $(values 1000 1)"
+  } >grid.yaml
+  refused 2 "expected at most 1000000 runs" batch grid.yaml -o grid.h5 --no-plot
+  # 16 keys of 16 values: 2^64 runs, a product that wraps to 0 in 64 bits.
+  { echo "name: wraps"; echo "base: walk_forward"; echo "sweep:"; echo "  grid:"
+    for k in $(seq 0 15); do echo "    no_such_key_$k: $(values 16 0)"; done
+  } >wrap.yaml
+  refused 2 "no_such_key_0" batch wrap.yaml -o wrap.h5 --no-plot
+  sed -e 's/^name: tiny/name: samples/' study.yaml >samples.yaml
+  printf '  random: {samples: 2000000, seed: 1, keys: {walking.com_height: {uniform: [0.78, 0.84]}}}\n' >>samples.yaml
+  refused 2 "sweep.random.samples.*at most 1000000" batch samples.yaml -o samples.h5 --no-plot
+  sed -e 's/^seeds: 1$/seeds: 2000000/' compare.yaml >seeds.yaml
+  refused 2 "seeds.*at most 1000000" compare seeds.yaml -o seeds --no-plot
+  [[ ! -e grid.h5 && ! -e wrap.h5 && ! -e samples.h5 && ! -e seeds ]] || fail "an output was written"
+  ;;
+run_name_collision)
+  # World 'a.b' x variant 'c' and world 'a' x variant 'b.c' would both be run 'a.b.c.1':
+  # refused before any walk.
+  cat >collide.yaml <<'YAML'
+name: collide
+base: {robot: hrp2, duration: 3.0, generator: {algorithm: nmpc, sqp_iterations: 1}}
+seeds: 1
+worlds:
+  - {name: a.b, u_trap: {}}
+  - {name: a, u_trap: {}}
+variants:
+  c: {planner.algorithm: none}
+  b.c: {planner.algorithm: none}
+YAML
+  refused 2 "gives the run name 'a.b.c.1'" compare collide.yaml -o out --no-plot
+  [[ ! -e out ]] || fail "compare wrote out/ before refusing"
+  ;;
+planner_time_limit)
+  # An unreachable goal with a planner time limit of 10^9 s planned forever: the key is capped
+  # (600 s), and the walk's duration (3 s) bounds all its planning.
+  cp "$HERE/studies/goal_boxed_in.yaml" boxed.yaml
+  refused 2 "planner.time_limit.*at most 600" run boxed.yaml --set planner.time_limit=1e9 -o a.h5 --no-plot
+  status=0
+  timeout 60 "$wpg" run boxed.yaml -o b.h5 --no-plot >stdout 2>stderr || status=$?
+  [[ $status == 1 ]] || fail "the boxed-in walk: exit $status, expected 1 ($(cat stderr))"
+  planning_ms="$(sed -n 's/.*planning \([0-9]*\) ms.*/\1/p' stdout)"
+  [[ -n "$planning_ms" && "$planning_ms" -le 4000 ]] || fail "planning took ${planning_ms:-?} ms, over the walk's 3 s"
+  ;;
+malformed_shard_column)
+  # A shard whose summary column holds text where numbers are: bad input naming the shard and
+  # the column, whichever place the shard is given in; no index written.
+  "$wpg" batch study.yaml -o s0.h5 --shard 0/2 --no-plot >/dev/null 2>&1
+  "$wpg" batch study.yaml -o s1.h5 --shard 1/2 --no-plot >/dev/null 2>&1
+  "$PYTHON" - <<'PY'
+import h5py
+with h5py.File("s1.h5", "r+") as f:
+    table = f["batch/summary"]
+    attrs = dict(table["exit_status"].attrs)
+    del table["exit_status"]
+    column = table.create_dataset("exit_status", data=[b"x", b"y"])
+    for name, value in attrs.items():
+        column.attrs[name] = value
+PY
+  refused 2 "s1.h5: /batch/summary/exit_status: expected numbers" merge idx.h5 s0.h5 s1.h5 --no-plot
+  refused 2 "s1.h5: /batch/summary/exit_status: expected numbers" merge idx.h5 s1.h5 s0.h5 --copy --no-plot
+  [[ ! -e idx.h5 ]] || fail "an index was written"
+  ;;
+messages)
+  # Values as given, never rounded away: 1e-320 s is not "0.000000".
+  refused 2 "got 1e-320" run walk_forward --set duration=1e-320 -o a.h5 --no-plot
+  # A `base:` naming a system file: refused without a line of it in the message.
+  printf 'name: sys\nbase: /etc/passwd\nsweep: {grid: {duration: [1.0]}}\n' >sys.yaml
+  refused 2 "/etc/passwd: expected a map of scenario keys" batch sys.yaml -o sys.h5 --no-plot
+  if grep -q "root:" stderr; then fail "a line of /etc/passwd was echoed: $(cat stderr)"; fi
+  # A batch file of a later layout (batch_schema_version 2) is not resumed into.
+  "$wpg" batch study.yaml -o future.h5 --no-plot >/dev/null 2>&1
+  "$PYTHON" -c "import h5py; h5py.File('future.h5', 'r+').attrs['batch_schema_version'] = 2"
+  sum="$(md5sum <future.h5)"
+  refused 2 "batch_schema_version is 2, this wpg writes 1" batch study.yaml -o future.h5 --resume --no-plot
+  [[ "$(md5sum <future.h5)" == "$sum" ]] || fail "the file of a later layout was modified"
+  ;;
+*) fail "unknown case $case_name" ;;
+esac
+echo ok
