@@ -7,6 +7,7 @@
 
 #include <Eigen/Core>
 
+#include "wpg/analysis/command_tracking.hpp"
 #include "wpg/analysis/run_summary.hpp"
 #include "wpg/analysis/sample_statistics.hpp"
 #include "wpg/support_polygon.hpp"
@@ -159,6 +160,11 @@ RunMetrics computeRunMetrics(const WalkingParameters& walking, const WalkRequest
   metrics.steps = static_cast<double>(summary.steps);
   metrics.duration = summary.duration;
   velocityError(walking, request, trajectory, &metrics);
+  const SteadyTracking steady = steadyTracking(walking, request, trajectory);
+  metrics.steady_vx = steady.vx;
+  metrics.steady_vy = steady.vy;
+  metrics.steady_omega = steady.omega;
+  metrics.steady_tracking = steady.score;
   copMargin(walking, trajectory, &metrics);
   stepMargins(walking, trajectory, &metrics);
   metrics.obstacle_clearance_min = obstacleClearance(walking, request, trajectory);
@@ -179,6 +185,10 @@ const std::vector<MetricDefinition>& runMetricTable() {
       {"duration", "s", false, false, &RunMetrics::duration},
       {"velocity_error_rms", "m/s", false, false, &RunMetrics::velocity_error_rms},
       {"velocity_error_max", "m/s", false, false, &RunMetrics::velocity_error_max},
+      {"steady_vx", "m/s", false, false, &RunMetrics::steady_vx},
+      {"steady_vy", "m/s", false, false, &RunMetrics::steady_vy},
+      {"steady_omega", "rad/s", false, false, &RunMetrics::steady_omega},
+      {"steady_tracking", "1", false, false, &RunMetrics::steady_tracking},
       {"cop_margin_min", "m", false, false, &RunMetrics::cop_margin_min},
       {"cop_margin_p05", "m", false, false, &RunMetrics::cop_margin_p05},
       {"cop_margin_median", "m", false, false, &RunMetrics::cop_margin_median},

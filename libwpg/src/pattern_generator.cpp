@@ -35,6 +35,8 @@ PatternGenerator::PatternGenerator(const WalkingParameters& parameters,
       problem_(model_.makeProblem()),
       gait_(parameters),
       references_(parameters),
+      planned_velocity_x_(Eigen::VectorXd::Zero(parameters.horizon_length)),
+      planned_velocity_y_(Eigen::VectorXd::Zero(parameters.horizon_length)),
       omega0_(std::sqrt(parameters.gravity / parameters.com_height)) {
   reset();
 }
@@ -87,8 +89,18 @@ const MpcIterationLog& PatternGenerator::update(double time, const Eigen::Vector
 
   // The problem of this sample: phase structure, cost references, CoM state, obstacles.
   gait_.fillPhase(model_, problem_.phase);
+  if (gait_.standing() || gait_.starting()) references_.forgetWalkedSamples();
+  // The CoM velocities the warm start (the previous plan, shifted) predicts: J1's window
+  // takes its turn there (reference_builder.hpp).
+  const LipmPrediction& P = model_.prediction();
+  const NmpcLayout& L = model_.layout();
+  planned_velocity_x_.noalias() = P.velocity_state * com_x_;
+  planned_velocity_x_.noalias() += P.velocity_jerk * solver_.plan().segment(L.jerkX(), L.horizon);
+  planned_velocity_y_.noalias() = P.velocity_state * com_y_;
+  planned_velocity_y_.noalias() += P.velocity_jerk * solver_.plan().segment(L.jerkY(), L.horizon);
   references_.build(command, gait_.phaseSample(), gait_.feetMeanYaw(),
-                    Eigen::Vector2d(com_x_(1), com_y_(1)), problem_);
+                    Eigen::Vector2d(com_x_(1), com_y_(1)), planned_velocity_x_,
+                    planned_velocity_y_, problem_);
   problem_.com_x = com_x_;
   problem_.com_y = com_y_;
   // Landing bound (landing_bound family): the landing planned at the previous sample is the
@@ -119,6 +131,7 @@ const MpcIterationLog& PatternGenerator::update(double time, const Eigen::Vector
     turnReferenceAlongBorders(problem_.obstacle_normal, problem_.velocity_x,
                               problem_.velocity_y);
   }
+  references_.addSway(problem_);
 
   solve();
   readPlan(time);

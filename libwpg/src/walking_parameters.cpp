@@ -39,6 +39,28 @@ const char* headingReferenceName(HeadingReference reference) {
   return reference == HeadingReference::kCommand ? "command" : "support_foot";
 }
 
+bool parseVelocityTracking(const std::string& name, VelocityTracking* out) {
+  if (name == "instantaneous") {
+    *out = VelocityTracking::kInstantaneous;
+  } else if (name == "window") {
+    *out = VelocityTracking::kWindow;
+  } else if (name == "with_sway") {
+    *out = VelocityTracking::kWithSway;
+  } else {
+    return false;
+  }
+  return true;
+}
+
+const char* velocityTrackingName(VelocityTracking tracking) {
+  switch (tracking) {
+    case VelocityTracking::kInstantaneous: return "instantaneous";
+    case VelocityTracking::kWindow: return "window";
+    case VelocityTracking::kWithSway: return "with_sway";
+  }
+  return "unknown";
+}
+
 bool parseZeroCommandGait(const std::string& name, ZeroCommandGait* out) {
   if (name == "stop") {
     *out = ZeroCommandGait::kStop;

@@ -77,6 +77,49 @@ def quantile(values, q):
     return float(np.percentile(values, 100 * q)) if len(values) else math.nan
 
 
+def steady_tracking(w, t, run, reference):
+    """steady_vx/vy/omega and steady_tracking of datasets/METRICS.md."""
+    keys = ("steady_vx", "steady_vy", "steady_omega", "steady_tracking")
+    nan = {key: math.nan for key in keys}
+    if not reference:
+        return nan
+    command = np.array(reference[-1]["v"], dtype=float)
+    t_c = reference[-1]["t"]
+    cycle = 2 * (w["single_support_samples"] + w["double_support_samples"]) * w["sampling_period"]
+    h = int(round(cycle / (2 * w["control_period"])))
+    n = len(t)
+    if h == 0 or n < 2 * h + 1:
+        return nan
+    psi = np.unwrap(run["free_flyer_yaw"][:])
+    sums = np.concatenate([[0.0], np.cumsum(psi)])
+
+    def heading(i):
+        return (sums[i + h] - sums[i - h]) / (2 * h)
+    landings = [s[0] for s in run["footsteps"][2:] if s[0] >= t_c + 15.0 - 1e-9]
+
+    def sample(time):
+        return int(np.searchsorted(t, time - 1e-9))
+    steps = 0
+    for k in range(2, len(landings), 2):
+        if sample(landings[k]) + h <= n:
+            steps = k
+    if steps == 0:
+        return nan
+    a, b = sample(landings[0]), sample(landings[steps])
+    if a < h or b <= a:
+        return nan
+    vel = run["com_vel"][a:b, :2]
+    psi_bar = np.array([heading(i) for i in range(a, b)])
+    c, s = np.cos(psi_bar), np.sin(psi_bar)
+    vx = float(np.mean(c * vel[:, 0] + s * vel[:, 1]))
+    vy = float(np.mean(-s * vel[:, 0] + c * vel[:, 1]))
+    omega = float((heading(b) - heading(a)) / (t[b] - t[a]))
+    score = max(abs(vx - command[0]) / max(0.1 * abs(command[0]), 0.01),
+                abs(vy - command[1]) / max(0.1 * abs(command[1]), 0.01),
+                abs(omega - command[2]) / max(0.1 * abs(command[2]), 0.01))
+    return dict(zip(keys, (vx, vy, omega, float(score))))
+
+
 def recompute(run, scenario):
     w = scenario["walking"]
     t = run["time"][:]
@@ -113,6 +156,8 @@ def recompute(run, scenario):
         errs.append(np.hypot(*(mean_v - mean_ref)))
     m["velocity_error_rms"] = float(np.sqrt(np.mean(np.square(errs)))) if errs else math.nan
     m["velocity_error_max"] = float(np.max(errs)) if errs else math.nan
+
+    m.update(steady_tracking(w, t, run, reference))
 
     # CoP margin: the sole (single support) or the hull of both soles (double support)
     margins = []

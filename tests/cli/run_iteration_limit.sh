@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # run_iteration_limit.sh WPG: a QP capped at 1 active-set iteration (`--set
-# generator.max_qp_iterations=1`, which caps 63 of walk_forward's 100 QPs; with today's
+# generator.max_qp_iterations=1`, which caps 23 of walk_forward's 100 QPs; with today's
 # defaults none needs more than 2, the paper's cost capped 40 at 2) makes the walk fail
 # honestly: exit 1, the dataset still written, its mpc/status holding iteration_limit (code 3)
 # rows, the run's `success` attribute 0, and the summary counting exactly those rows as

@@ -112,7 +112,7 @@ TEST(ShippedScenarios, WalkForward) {
 TEST(ShippedScenarios, WalkSideways) {
   const Scenario s = loadShipped("walk_sideways");
   ASSERT_EQ(s.request.reference.size(), 2u);
-  EXPECT_EQ(s.request.reference[1].velocity, Eigen::Vector3d(0.0, 0.15, 0.0));
+  EXPECT_EQ(s.request.reference[1].velocity, Eigen::Vector3d(0.0, 0.1, 0.0));
   EXPECT_DOUBLE_EQ(s.request.duration, 10.0);
 }
 

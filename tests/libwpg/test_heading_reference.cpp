@@ -57,6 +57,9 @@ TEST(HeadingReference, CommandHeadingTracksTheIntegralOfOmega) {
 TEST(HeadingReference, IntegratesOmegaFromTheHeadingAtTheStart) {
   wpg::WalkingParameters parameters;
   parameters.heading_reference = wpg::HeadingReference::kCommand;
+  // J1 on the instantaneous velocity: its reference is the turned command itself (a window
+  // averages it, test_velocity_window.cpp).
+  parameters.velocity_tracking = wpg::VelocityTracking::kInstantaneous;
   wpg::PatternGenerator generator(parameters, wpg::GeneratorSettings());
   generator.reset(Eigen::Vector3d(1.0, 2.0, 0.5));
   EXPECT_DOUBLE_EQ(generator.commandedHeading(), 0.5);

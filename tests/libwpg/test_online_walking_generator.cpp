@@ -166,7 +166,10 @@ TEST(OnlineWalkingGenerator, SwingFootLandsWhereTheLandingIsReported) {
 // A command given between two NMPC samples changes nothing before the next one, and is the
 // reference of J1 from it on.
 TEST(OnlineWalkingGenerator, ACommandTakesEffectAtTheNextNmpcSample) {
-  const WalkingParameters w;
+  // J1 on the instantaneous velocity, whose reference is the turned command itself (with a
+  // window the new command enters the window's mean, test_velocity_window.cpp).
+  WalkingParameters w;
+  w.velocity_tracking = wpg::VelocityTracking::kInstantaneous;
   OnlineWalkingGenerator changed(w, GeneratorSettings()), reference(w, GeneratorSettings());
   for (OnlineWalkingGenerator* g : {&changed, &reference}) {
     g->setCommand(Vector3d(0.2, 0.0, 0.0));

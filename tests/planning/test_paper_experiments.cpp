@@ -120,7 +120,7 @@ TEST(PaperExperimentA, ThePapersLiteralFormulationStaysBlockedInFront) {
   // support foot's heading, alpha on J2): the robot walks up to the margin and marks time
   // there, never entering it (docs/formulation.md, "Obstacles on the path").
   const Experiment e = run("paper_experiment_a", {"walking.obstacle_linearization=step",
-                                                  "walking.velocity_window_samples=1",
+                                                  "walking.velocity_tracking=instantaneous",
                                                   "walking.heading_reference=support_foot",
                                                   "walking.weight_yaw=2.5"});
   expectEveryStepClear(e);
@@ -150,8 +150,11 @@ TEST(PaperExperimentA, CommandTangentPassesOnTheSideTheFeetAreOn) {
   EXPECT_LT(y_max, 0.1);  // the gait's sway only
 }
 
-TEST(PaperExperimentB, BlockedInTranslationItTurnsOnTheSpotThenResumesItsCircle) {
-  const Experiment e = run("paper_experiment_b");
+// The paper's experiment B with its J1 (the instantaneous CoM velocity, one key away): the
+// obstacle's margin lies across the commanded circle, the robot is blocked in translation,
+// turns on the spot, then resumes its circle (the paper's Fig. 8, bottom).
+TEST(PaperExperimentB, WithThePapersJ1BlockedItTurnsOnTheSpotThenResumesItsCircle) {
+  const Experiment e = run("paper_experiment_b", {"walking.velocity_tracking=instantaneous"});
   expectEveryStepClear(e);
   const wpg::WalkTrajectory& t = e.result.trajectory;
   // A stretch of 2.5 s with (almost) no translation while the yaw keeps turning (measured
@@ -177,6 +180,36 @@ TEST(PaperExperimentB, BlockedInTranslationItTurnsOnTheSpotThenResumesItsCircle)
   // ... then the circle resumes: more than a metre of walking afterwards.
   EXPECT_GT((t.com.back() - t.com[blocked_end]).head<2>().norm(), 1.0);
   RecordProperty("blocked_turn_rad", std::to_string(blocked_turn));
+}
+
+// With the default J1 (velocity_tracking: with_sway) the robot can step aside: it slides
+// along the margin on the inside of its circle without stopping, and turns the whole circle.
+TEST(PaperExperimentB, WithTheDefaultJ1ItSlidesAlongTheMarginWithoutStopping) {
+  const Experiment e = run("paper_experiment_b");
+  expectEveryStepClear(e);
+  const wpg::WalkTrajectory& t = e.result.trajectory;
+  const wpg::Obstacle& obstacle = e.scenario.request.obstacles.at(0);
+  // Never held: over every 2.5 s from the first step on, the CoM moves more than 0.15 m
+  // (measured at least 0.27 m; 0.5 m at 0.2 m/s).
+  const std::size_t window = sampleAt(t, 2.5);
+  double least = 1e9;
+  for (std::size_t i = sampleAt(t, 2.5); i + window < t.time.size(); i += 10)
+    least = std::min(least, (t.com[i + window] - t.com[i]).head<2>().norm());
+  EXPECT_GT(least, 0.15);
+  // It came to the margin (a step centre within 5 cm of the NMPC's circle) ...
+  EXPECT_LT(e.steps.min_centre_clearance, 0.05);
+  // ... and walked round the circle: 29 s of 0.2 rad/s, 5.8 rad commanded (measured 5.79).
+  EXPECT_NEAR(t.free_flyer_yaw.back(), 0.2 * 29.0, 0.3);
+  // Where it came nearest the obstacle, its CoM was inside the commanded circle (centre
+  // (0, 1), radius 1 m), between the circle's centre and the obstacle (1.36 m from it).
+  const Eigen::Vector2d centre(0.0, 1.0);
+  std::size_t nearest = 0;
+  for (std::size_t i = 0; i < t.com.size(); ++i)
+    if ((t.com[i].head<2>() - obstacle.center).norm() <
+        (t.com[nearest].head<2>() - obstacle.center).norm())
+      nearest = i;
+  EXPECT_LT((t.com[nearest].head<2>() - centre).norm(), 1.0);
+  RecordProperty("least_motion_in_2_5_s_m", std::to_string(least));
 }
 
 }  // namespace

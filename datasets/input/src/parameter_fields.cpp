@@ -29,6 +29,13 @@ const WalkingChoice kHeadingReference{
     },
     [](const WalkingParameters& p) { return headingReferenceName(p.heading_reference); }};
 
+const WalkingChoice kVelocityTracking{
+    "instantaneous, window or with_sway",
+    [](const std::string& name, WalkingParameters* p) {
+      return parseVelocityTracking(name, &p->velocity_tracking);
+    },
+    [](const WalkingParameters& p) { return velocityTrackingName(p.velocity_tracking); }};
+
 const WalkingChoice kObstacleDistanceForm{
     "sole_clearance or paper",
     [](const std::string& name, WalkingParameters* p) {
@@ -80,6 +87,7 @@ const std::vector<WalkingField>& walkingFields() {
       choiceField("standing_push_response", &kStandingPushResponse),
       integerField("push_start_double_support_samples", &P::push_start_double_support_samples),
       integerField("push_step_swing_samples", &P::push_step_swing_samples),
+      choiceField("velocity_tracking", &kVelocityTracking),
       integerField("velocity_window_samples", &P::velocity_window_samples),
       choiceField("heading_reference", &kHeadingReference),
       numberField("control_period", &P::control_period),

@@ -108,6 +108,8 @@ class PatternGenerator {
   NmpcProblem problem_;
   GaitScheduler gait_;
   ReferenceBuilder references_;
+  // CoM velocities at the horizon's samples predicted by the warm start (J1's window)
+  Eigen::VectorXd planned_velocity_x_, planned_velocity_y_;
   double omega0_ = 0.0;  // sqrt(g / h) of the LIPM (eq. 3), for the capture point
   ObstacleSelector obstacles_;
   SamplePlan plan_;

@@ -2,9 +2,10 @@
 // Constant description of a walking robot for the pattern generator: timings, template-model
 // constants, foot geometry, step feasibility, cost weights. Defaults are HRP-2's, from the
 // paper (Naveau et al., RA-L 2017, Sec. V) and the authors' code; robots/<name>/walking.yaml
-// restates them and scenarios may override any field (datasets/SCENARIOS.md). Four defaults
-// differ from the paper's text, on measurement (docs/formulation.md): heading_reference,
-// weight_yaw, max_step_yaw_change (the authors' code's value) and obstacle_distance_form.
+// restates them and scenarios may override any field (datasets/SCENARIOS.md). Five defaults
+// differ from the paper's text, on measurement (docs/formulation.md,
+// docs/command_tracking.md): velocity_tracking, heading_reference, weight_yaw,
+// max_step_yaw_change (the authors' code's value) and obstacle_distance_form.
 #include <array>
 #include <string>
 #include <vector>
@@ -31,6 +32,28 @@ enum class HeadingReference {
 // Parses "support_foot" / "command"; returns false on anything else.
 bool parseHeadingReference(const std::string& name, HeadingReference* out);
 const char* headingReferenceName(HeadingReference reference);
+
+// What J1 (eq. 5's linear velocity tracking) compares with the command at each previewed
+// sample (docs/command_tracking.md).
+enum class VelocityTracking {
+  // The paper's J1 as written: the instantaneous CoM velocity C'_{k+1} of every sample
+  // against the command. The CoM's sway from foot to foot is charged as a tracking error, and
+  // walking sideways needs alternating wide and narrow steps, whose sway costs more than the
+  // missing velocity: the robot hardly walks sideways (5 % of 0.1 m/s).
+  kInstantaneous,
+  // The mean of the velocity over the velocity_window_samples samples ending at each sample
+  // (the walked ones from the history), and of the command over the same samples, in the
+  // robot's frame (wpg's earlier option for obstacles).
+  kWindow,
+  // wpg default: the velocity of kWindow (velocity_window_samples = 1: the paper's
+  // instantaneous velocity) against a command whose lateral (robot-frame y) part also holds
+  // the sway the robot walked at the same phase one gait cycle (two steps) earlier: the sway
+  // from foot to foot, that walking sideways needs, is not charged; the mean velocity over the
+  // cycle is, and so is any change from the last cycle's sway (a push).
+  kWithSway,
+};
+bool parseVelocityTracking(const std::string& name, VelocityTracking* out);
+const char* velocityTrackingName(VelocityTracking tracking);
 
 // What the gait does with a zero velocity command.
 enum class ZeroCommandGait {
@@ -156,11 +179,12 @@ struct WalkingParameters {
   double max_landing_yaw_rate = 0.0;   // [rad/s]
   // --- cost weights, eq. (5) and Sec. V-D ----------------------------------------------------
   double weight_velocity = 2.5;        // alpha: linear velocity tracking (J1)
-  // J1 tracks the CoM velocity averaged over this many samples (the current one and those
-  // before it, past samples from the walk's history). 1 = the paper's instantaneous velocity;
-  // single_support_samples + double_support_samples = the mean over one step, which does not
-  // charge the lateral sway of every step to the tracking (sideways walking, going around
-  // obstacles).
+  // What J1 tracks (see the enum); kInstantaneous is the paper's eq. (5).
+  VelocityTracking velocity_tracking = VelocityTracking::kWithSway;
+  // Samples of J1's mean (kWindow, kWithSway; the current one and those before it, walked
+  // samples from the walk's history). 1 by default: the paper's instantaneous velocity. Longer
+  // windows track the forward speed closer (95 % with 4, 99 % with 8, 93 % with 1) but
+  // charge a push's velocity for longer (docs/command_tracking.md has the measurements).
   int velocity_window_samples = 1;
   // J1 frame and J2 target. kCommand by default (wpg): with the paper's kSupportFoot any yaw a
   // step takes becomes the next step's reference, so a straight walk drifts sideways and a
@@ -183,6 +207,10 @@ struct WalkingParameters {
   double max_angular_velocity = 0.2;   // |omega| [rad/s]
 
   int stepSamples() const { return single_support_samples + double_support_samples; }
+  // Samples of J1's mean: 1 with the paper's instantaneous velocity.
+  int trackedVelocityWindow() const {
+    return velocity_tracking == VelocityTracking::kInstantaneous ? 1 : velocity_window_samples;
+  }
   double stepDuration() const { return stepSamples() * sampling_period; }
   double copHalfLength() const { return 0.5 * foot_length - cop_margin_x; }
   double copHalfWidth() const { return 0.5 * foot_width - cop_margin_y; }

@@ -51,7 +51,7 @@ NmpcModel::NmpcModel(const WalkingParameters& parameters, int obstacle_slots)
 
   // J1's velocity: the mean over a window of K samples of the predicted velocities (K = 1:
   // the paper's instantaneous C'_{k+1}); the window of sample j reaches back to j - K + 1.
-  const int K = parameters_.velocity_window_samples;
+  const int K = parameters_.trackedVelocityWindow();
   Eigen::MatrixXd window = Eigen::MatrixXd::Zero(N, N);
   for (int j = 0; j < N; ++j)
     for (int i = std::max(0, j - K + 1); i <= j; ++i) window(j, i) = 1.0 / K;

@@ -1,6 +1,6 @@
 #pragma once
 // The metrics of one walk (`wpg analyze`, the columns of a batch's /batch/summary): velocity
-// tracking, CoP margin to the support polygon, step feasibility and yaw-bound margins, obstacle
+// tracking (and steady-state command tracking), CoP margin to the support polygon, step feasibility and yaw-bound margins, obstacle
 // clearance, ZMP error before/after the filter, QP iterations, relaxed/failed iterations and
 // NMPC time. Each is defined once, with its unit, in datasets/METRICS.md; runMetricTable()
 // lists them in that order with the same names.
@@ -22,6 +22,10 @@ struct RunMetrics {
   double duration = 0.0;      // [s] covered by the samples
   double velocity_error_rms = 0.0;  // [m/s] METRICS.md: gait-cycle mean velocity vs. reference
   double velocity_error_max = 0.0;  // [m/s]
+  double steady_vx = 0.0;     // [m/s] command_tracking.hpp: steady robot-frame CoM velocity
+  double steady_vy = 0.0;     // [m/s]
+  double steady_omega = 0.0;  // [rad/s] steady heading rate
+  double steady_tracking = 0.0;  // [1] largest component error / its tolerance (<= 1: tracked)
   double cop_margin_min = 0.0;      // [m] least CoP distance inside the sole / double-support hull
   double cop_margin_p05 = 0.0;      // [m] 5th percentile of that distance over the samples
   double cop_margin_median = 0.0;   // [m]

@@ -51,9 +51,13 @@ struct NmpcProblem {
   Eigen::Matrix2Xd obstacle_normal;
   Eigen::Vector3d com_x = Eigen::Vector3d::Zero();  // [c, c', c''] along world x
   Eigen::Vector3d com_y = Eigen::Vector3d::Zero();
-  Eigen::VectorXd velocity_x, velocity_y;  // N: world reference velocity per sample (J1)
-  // N: the part of each sample's windowed mean velocity that comes from samples already
-  // walked (0 with the paper's instantaneous tracking, velocity_window_samples = 1)
+  // N: world reference velocity per sample (J1): the command turned by the sample's heading,
+  // or with a window (WalkingParameters::velocity_tracking) the window's mean of the command
+  // and the sway (reference_builder.hpp)
+  Eigen::VectorXd velocity_x, velocity_y;
+  // N: the part of each sample's windowed mean velocity that does not depend on U: the samples
+  // already walked, and the turn of the previewed ones taken at the previous plan (0 with the
+  // paper's instantaneous tracking)
   Eigen::VectorXd velocity_past_x, velocity_past_y;
   Eigen::VectorXd yaw_reference;           // nf: reference yaw of each step (J2)
   // Swing-foot landing bound (landing_bound, landing_yaw_bound families): while a foot swings, the landing
