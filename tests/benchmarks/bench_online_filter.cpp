@@ -8,7 +8,7 @@
 //    period + the 0.8 s preview + 1 = 181 samples at 5 ms), on a window of a steady forward
 //    walk; BM_FilterWindowSimbody the same with Simbody's inverse dynamics (the previous
 //    version's window, for comparison).
-// Timings are quoted as medians of --benchmark_repetitions (STYLE.md).
+// Timings are quoted as medians of --benchmark_repetitions.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
