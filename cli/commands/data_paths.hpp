@@ -1,27 +1,16 @@
 #pragma once
-// Where `wpg` finds robots/, datasets/scenarios/ and analysis/, and how a SCENARIO argument
-// becomes a file path.
-#include <string>
-#include <vector>
+// The data folders and SCENARIO arguments of the subcommands: the engine's
+// (wpg/engine/data_paths.hpp), named in the CLI's namespace.
+#include "wpg/engine/data_paths.hpp"
 
 namespace wpg::cli {
 
-// The folder holding robots/, datasets/scenarios/ and analysis/: $WPG_DATA_DIR when set and
-// non-empty, else the source tree the executable was built from when it still exists, else
-// the installed share/wpg.
-std::string dataDirectory();
-std::string robotsDirectory();
-std::string scenariosDirectory();
-std::string plotScriptPath();
-
-// The name of the default scenario (datasets/scenarios/<name>.yaml).
-constexpr const char* kDefaultScenario = "walk_forward";
-
-// Names of the shipped scenarios (file stems of datasets/scenarios/*.yaml), sorted.
-std::vector<std::string> shippedScenarioNames();
-
-// A SCENARIO argument is an existing file path, or the name of a shipped scenario (with or
-// without ".yaml"). Returns the file path; throws UsageError naming the argument otherwise.
-std::string resolveScenarioPath(const std::string& argument);
+using engine::dataDirectory;
+using engine::kDefaultScenario;
+using engine::plotScriptPath;
+using engine::resolveScenarioPath;
+using engine::robotsDirectory;
+using engine::scenariosDirectory;
+using engine::shippedScenarioNames;
 
 }  // namespace wpg::cli

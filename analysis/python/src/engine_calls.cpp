@@ -25,10 +25,6 @@ namespace {
 
 using datasets::InputError;
 
-std::string scenariosDirectory() {
-  return (fs::path(dataDirectory()) / "datasets" / "scenarios").string();
-}
-
 // Every bad-input message names the scenario file (the loader's messages usually do already).
 std::string aboutFile(const std::string& path, const std::string& message) {
   if (message.find(path) != std::string::npos) return message;
@@ -48,51 +44,6 @@ void requireStudyFile(const std::string& study) {
 }
 
 }  // namespace
-
-std::string dataDirectory() {
-  if (const char* from_env = std::getenv("WPG_DATA_DIR"); from_env && *from_env) return from_env;
-  std::error_code ec;
-  // Built from a source tree that is still there: its scenarios and robots, edits included.
-  if (fs::is_directory(fs::path(WPG_SOURCE_DATA_DIR) / "robots", ec)) return WPG_SOURCE_DATA_DIR;
-  return WPG_INSTALLED_DATA_DIR;
-}
-
-std::string robotsDirectory() { return (fs::path(dataDirectory()) / "robots").string(); }
-
-std::vector<std::string> shippedScenarioNames() {
-  std::vector<std::string> names;
-  std::error_code ec;
-  for (fs::directory_iterator it(scenariosDirectory(), ec), end; !ec && it != end;
-       it.increment(ec)) {
-    if (it->path().extension() == ".yaml") names.push_back(it->path().stem().string());
-  }
-  std::sort(names.begin(), names.end());
-  return names;
-}
-
-std::string resolveScenarioPath(const std::string& argument) {
-  if (argument.empty()) throw InputError("empty scenario name");
-  const std::string shown = datasets::escapeControlCharacters(argument);
-  std::error_code ec;
-  const fs::path as_path(argument);
-  if (fs::exists(as_path, ec)) {
-    if (fs::is_directory(as_path, ec)) {
-      throw InputError("cannot read scenario '" + shown + "': it is a directory");
-    }
-    return argument;
-  }
-  if (as_path.has_parent_path()) {
-    throw InputError("cannot read scenario file '" + shown + "': no such file");
-  }
-  fs::path shipped = fs::path(scenariosDirectory()) / as_path;
-  if (shipped.extension() != ".yaml") shipped += ".yaml";
-  if (fs::is_regular_file(shipped, ec)) return shipped.string();
-  std::string known;
-  for (const std::string& name : shippedScenarioNames()) known += (known.empty() ? "" : ", ") + name;
-  throw InputError("cannot read scenario '" + shown +
-                   "': no such file, and no shipped scenario of that name (shipped: " +
-                   (known.empty() ? "none found in " + scenariosDirectory() : known) + ")");
-}
 
 std::shared_ptr<RunSession> runScenarioFile(const std::string& scenario,
                                             std::vector<std::string> overrides, bool replay,

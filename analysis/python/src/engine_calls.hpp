@@ -9,20 +9,16 @@
 #include <vector>
 
 #include "wpg/datasets/input/scenario.hpp"
+#include "wpg/engine/data_paths.hpp"
 #include "wpg/engine/scenario_run.hpp"
 
 namespace wpg::python {
 
-// The folder holding robots/, datasets/scenarios/ and analysis/, found as `wpg` finds it:
-// $WPG_DATA_DIR when set and non-empty, else the source tree the module was built from when it
-// still exists, else the installed share/wpg.
-std::string dataDirectory();
-std::string robotsDirectory();
-std::vector<std::string> shippedScenarioNames();  // sorted file stems of datasets/scenarios/
-
-// A scenario argument (an existing file, or a shipped scenario's name with or without ".yaml")
-// -> its path; InputError naming the argument otherwise (as `wpg run`).
-std::string resolveScenarioPath(const std::string& argument);
+// The data folders and scenario arguments, found as `wpg` finds them (the engine's).
+using engine::dataDirectory;
+using engine::resolveScenarioPath;
+using engine::robotsDirectory;
+using engine::shippedScenarioNames;
 
 // A run held for Python: the scenario it ran and its result. A run read back from a file has
 // `stored_file` set and no replay (its multibody datasets stay in the file).

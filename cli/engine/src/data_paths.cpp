@@ -1,16 +1,17 @@
-// Where `wpg` finds robots/, datasets/scenarios/ and analysis/, and how a SCENARIO argument
-// becomes a file path.
+// Where wpg finds robots/, datasets/scenarios/ and analysis/, and how a SCENARIO argument
+// becomes a file path (data_paths.hpp).
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <system_error>
 
-#include "data_paths.hpp"
-#include "exit_codes.hpp"
+#include "wpg/engine/data_paths.hpp"
+
+#include "wpg/datasets/input/input_error.hpp"
 
 namespace fs = std::filesystem;
 
-namespace wpg::cli {
+namespace wpg::engine {
 
 std::string dataDirectory() {
   if (const char* from_env = std::getenv("WPG_DATA_DIR"); from_env && *from_env) {
@@ -45,27 +46,28 @@ std::vector<std::string> shippedScenarioNames() {
 }
 
 std::string resolveScenarioPath(const std::string& argument) {
-  if (argument.empty()) throw UsageError("empty scenario name");
+  if (argument.empty()) throw datasets::InputError("empty scenario name");
+  const std::string shown = datasets::escapeControlCharacters(argument);
   std::error_code ec;
   const fs::path as_path(argument);
   if (fs::exists(as_path, ec)) {
     if (fs::is_directory(as_path, ec)) {
-      throw UsageError("cannot read scenario '" + argument + "': it is a directory");
+      throw datasets::InputError("cannot read scenario '" + shown + "': it is a directory");
     }
     return argument;
   }
   // A path with a folder part must exist; a bare name may be a shipped scenario.
   if (as_path.has_parent_path()) {
-    throw UsageError("cannot read scenario file '" + argument + "': no such file");
+    throw datasets::InputError("cannot read scenario file '" + shown + "': no such file");
   }
   fs::path shipped = fs::path(scenariosDirectory()) / as_path;
   if (shipped.extension() != ".yaml") shipped += ".yaml";
   if (fs::is_regular_file(shipped, ec)) return shipped.string();
   std::string known;
   for (const std::string& name : shippedScenarioNames()) known += (known.empty() ? "" : ", ") + name;
-  throw UsageError("cannot read scenario '" + argument +
+  throw datasets::InputError("cannot read scenario '" + shown +
                    "': no such file, and no shipped scenario of that name (shipped: " +
                    (known.empty() ? "none found in " + scenariosDirectory() : known) + ")");
 }
 
-}  // namespace wpg::cli
+}  // namespace wpg::engine
