@@ -1,4 +1,4 @@
-// NMPC speed (issue acceptance 5): one real-time iteration (build the problem, linearize,
+// NMPC speed: one real-time iteration (build the problem, linearize,
 // one QP) of HRP-2's NMPC, N = 16, nf = 2, in steady walking; and a whole 20 s walk
 // (generation + 5 ms interpolation + HDF5 write). Per-iteration times are also reported as
 // median / p99 counters (manual timing of each update()).

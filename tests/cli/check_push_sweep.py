@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """check_push_sweep.py WPG SWEEP.h5 SWEEP.json K SITUATION...: the files of `wpg push-sweep`
-agree with each other and with the issue's format, and the JSON's pushes replay: for one
+agree with each other and with the documented format, and the JSON's pushes replay: for one
 sagittal and one coronal entry (the largest recovered force of the first non-zero phase),
 `wpg run <scenario> --set 'pushes[0]={t: .., force: [..], duration: 0.1}'` exits 0 and the same
 push 15 % stronger exits 1 (the walk fails: a fall or a relaxed constraint).

@@ -1,4 +1,4 @@
-// Acceptance invariants of the issue on every shipped scenario: run the whole walk as
+// The physical invariants on every shipped scenario: run the whole walk as
 // `wpg run` does and check the physical properties of the result (libwpg/walk_checks).
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // Hard obstacle worlds: no crash, no NaN; either a clear input error or a run that ends with
-// its status recorded (the obstacle issue's acceptance 4). libwpg's exact 2-D distance is the
+// its status recorded. libwpg's exact 2-D distance is the
 // world model here (planning/'s FCL world is checked against it in tests/planning).
 #include <gtest/gtest.h>
 
