@@ -8,4 +8,9 @@ set -euo pipefail
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="$(realpath -m -- "${WPG_BUILD_DIR:-$repo/build}")"
 "$repo/scripts/setup.sh" --for-tests
+# The tests' temporary folders in the tree (kept there when a test fails), out of reach of
+# whatever cleans /tmp meanwhile.
+export TMPDIR="$build/tmp"
+rm -rf "$TMPDIR"
+mkdir -p "$TMPDIR"
 exec ctest --test-dir "$build" --output-on-failure -j"$(nproc)" "$@"
