@@ -131,7 +131,9 @@ TEST(RoutePlanner, RoutesOfEveryPlannerFamilyStayClearOfTheGrownObstacles) {
     EXPECT_GE(s.solution_clearance, -1e-9) << algorithm;
     EXPECT_LE(s.simplified_solution_length, s.solution_length + 1e-9) << algorithm;
     EXPECT_GE(s.simplification_time, 0.0);
-    EXPECT_LE(s.time, 1.0 + 0.2) << algorithm;
+    // The planner stops at its 1 s time limit (wall time: the bound is loose, so that a loaded
+    // machine does not fail the test; a planner ignoring its limit would run much longer).
+    EXPECT_LE(s.time, 1.0 + 3.0) << algorithm;
   }
 }
 
