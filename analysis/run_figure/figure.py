@@ -2,11 +2,10 @@
 the run was replayed), written atomically as a PNG."""
 import math
 import os
-import tempfile
 
 import matplotlib.pyplot as plt
 
-from wpg_file_reading import png_metadata, walking_number
+from wpg_file_reading import png_metadata, save_figure, walking_number
 
 from .fig6 import draw_fig6
 from .scenario_text import describe_command, fmt_number, scenario_obstacles, scenario_pushes
@@ -55,20 +54,6 @@ def draw(runs, source_path):
 
 
 def save_atomically(fig, output, source=""):
-    folder = os.path.dirname(os.path.abspath(output))
-    fd, temporary = tempfile.mkstemp(prefix="." + os.path.basename(output) + ".",
-                                     suffix=".tmp", dir=folder)
-    try:
-        with os.fdopen(fd, "wb") as stream:
-            fig.savefig(stream, format="png", dpi=110, bbox_inches="tight",
-                        metadata=png_metadata(source))
-        umask = os.umask(0)
-        os.umask(umask)
-        os.chmod(temporary, 0o666 & ~umask)
-        os.replace(temporary, output)
-    except BaseException:
-        try:
-            os.unlink(temporary)
-        except OSError:
-            pass
-        raise
+    """The run's figure at `output`, through wpg_file_reading.save_figure (temporary file and
+    rename), with the PNG text naming `source`."""
+    save_figure(fig, output, dpi=110, bbox_inches="tight", metadata=png_metadata(source))
