@@ -7,14 +7,13 @@
 #include <stdexcept>
 #include <system_error>
 
-#include "wpg/analysis/zmp_error.hpp"
 #include "wpg/datasets/input/input_error.hpp"
 #include "wpg/datasets/storage/output_file.hpp"
 #include "wpg/datasets/storage/run_dataset_reader.hpp"
-#include "wpg/datasets/storage/stored_run_consistency.hpp"
 #include "wpg/datasets/study_design/study.hpp"
 #include "wpg/engine/comparison_run.hpp"
 #include "wpg/engine/run_input_checks.hpp"
+#include "wpg/engine/stored_runs.hpp"
 #include "wpg/engine/study_executor.hpp"
 #include "wpg/engine/study_summary.hpp"
 
@@ -92,26 +91,15 @@ std::vector<std::string> storedRunNames(const std::string& path) {
 
 std::shared_ptr<RunSession> loadStoredRun(const std::string& path, const std::string& name) {
   auto run = std::make_shared<RunSession>();
-  datasets::StoredRun stored = datasets::readRunDataset(path, name);
+  // As `wpg analyze`: the walk checked against its stored scenario, the metrics recomputed
+  // from it with the stored ZMP errors.
+  engine::StoredRunAnalysis analyzed = engine::analyzeStoredRun(path, name, robotsDirectory());
+  datasets::StoredRun& stored = analyzed.stored;
   run->stored_file = path;
   run->stored_name = stored.name;
-  // As `wpg analyze` (engine/stored_runs.cpp): the walk checked against its stored scenario,
-  // the metrics recomputed from it with the stored ZMP errors.
-  run->scenario = datasets::loadScenarioText(
-      stored.scenario_yaml, path + ":/runs/" + stored.name + "/scenario", {}, robotsDirectory());
-  datasets::checkStoredRunMatchesScenario(path, stored, run->scenario);
-  analysis::ZmpErrorComparison zmp;
-  if (stored.zmp_error) {
-    zmp.filtered = stored.zmp_error->filtered;
-    zmp.before.rms = stored.zmp_error->rms_before;
-    zmp.before.max = stored.zmp_error->max_before;
-    zmp.after.rms = stored.zmp_error->rms_after;
-    zmp.after.max = stored.zmp_error->max_after;
-  }
+  run->scenario = std::move(analyzed.scenario);
   engine::RunResult& result = run->result;
-  result.metrics = analysis::computeRunMetrics(
-      run->scenario.walking, run->scenario.request, stored.result.trajectory,
-      stored.result.success, stored.zmp_error ? &zmp : nullptr);
+  result.metrics = std::move(analyzed.metrics);
   result.outcome =
       stored.result.success ? engine::RunOutcome::kSucceeded : engine::RunOutcome::kWalkFailed;
   result.failure = stored.result.message;

@@ -9,25 +9,33 @@
 
 namespace wpg::engine {
 
+StoredRunAnalysis analyzeStoredRun(const std::string& path, const std::string& name,
+                                   const std::string& robots_directory) {
+  StoredRunAnalysis run;
+  run.stored = datasets::readRunDataset(path, name);
+  const datasets::StoredRun& stored = run.stored;
+  run.scenario = datasets::loadScenarioText(
+      stored.scenario_yaml, path + ":/runs/" + stored.name + "/scenario", {}, robots_directory);
+  datasets::checkStoredRunMatchesScenario(path, stored, run.scenario);
+  analysis::ZmpErrorComparison zmp;
+  if (stored.zmp_error) {
+    zmp.filtered = stored.zmp_error->filtered;
+    zmp.before.rms = stored.zmp_error->rms_before;
+    zmp.before.max = stored.zmp_error->max_before;
+    zmp.after.rms = stored.zmp_error->rms_after;
+    zmp.after.max = stored.zmp_error->max_after;
+  }
+  run.metrics = analysis::computeRunMetrics(run.scenario.walking, run.scenario.request,
+                                            stored.result.trajectory, stored.result.success,
+                                            stored.zmp_error ? &zmp : nullptr);
+  return run;
+}
+
 std::vector<StoredRunMetrics> analyzeRunFile(const std::string& path,
                                              const std::string& robots_directory) {
   std::vector<StoredRunMetrics> runs;
   for (const std::string& name : datasets::listRuns(path)) {
-    const datasets::StoredRun stored = datasets::readRunDataset(path, name);
-    const datasets::Scenario scenario = datasets::loadScenarioText(
-        stored.scenario_yaml, path + ":/runs/" + name + "/scenario", {}, robots_directory);
-    datasets::checkStoredRunMatchesScenario(path, stored, scenario);
-    analysis::ZmpErrorComparison zmp;
-    if (stored.zmp_error) {
-      zmp.filtered = stored.zmp_error->filtered;
-      zmp.before.rms = stored.zmp_error->rms_before;
-      zmp.before.max = stored.zmp_error->max_before;
-      zmp.after.rms = stored.zmp_error->rms_after;
-      zmp.after.max = stored.zmp_error->max_after;
-    }
-    runs.push_back({name, analysis::computeRunMetrics(
-                              scenario.walking, scenario.request, stored.result.trajectory,
-                              stored.result.success, stored.zmp_error ? &zmp : nullptr)});
+    runs.push_back({name, analyzeStoredRun(path, name, robots_directory).metrics});
   }
   return runs;
 }

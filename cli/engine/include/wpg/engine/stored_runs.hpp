@@ -23,6 +23,17 @@ struct StoredRunMetrics {
 std::vector<StoredRunMetrics> analyzeRunFile(const std::string& path,
                                              const std::string& robots_directory);
 
+// One run of a file (`name` as datasets::readRunDataset takes it): the stored walk, its stored
+// scenario (the walk checked against it) and the metrics recomputed from them, with the stored
+// ZMP errors.
+struct StoredRunAnalysis {
+  datasets::StoredRun stored;
+  datasets::Scenario scenario;
+  analysis::RunMetrics metrics;
+};
+StoredRunAnalysis analyzeStoredRun(const std::string& path, const std::string& name,
+                                   const std::string& robots_directory);
+
 // The run of a run file with its stored scenario, the replay switched on (and the filter when
 // `filter`, offline: a stored walk cannot be filtered while it is generated): the scenario the
 // rewritten dataset stores. `origin` ("RUN.h5:/scenario") names it in messages.
