@@ -60,6 +60,16 @@ void checkTrajectorySize(const RobotModel& model, const Eigen::Ref<const Eigen::
   }
 }
 
+void checkComForce(const Eigen::Ref<const Eigen::MatrixXd>& q,
+                   const Eigen::Ref<const Eigen::MatrixXd>& com_force) {
+  if (com_force.rows() != q.rows() || com_force.cols() != 3 || !com_force.allFinite()) {
+    throw std::invalid_argument("multibody replay: CoM force of size " +
+                                std::to_string(com_force.rows()) + " x " +
+                                std::to_string(com_force.cols()) + ", expected " +
+                                std::to_string(q.rows()) + " x 3, finite");
+  }
+}
+
 void checkedTranspose(const RobotModel& model, const Eigen::Ref<const Eigen::MatrixXd>& q,
                       double dt, Eigen::MatrixXd& qt) {
   checkTrajectorySize(model, q, dt);

@@ -20,6 +20,11 @@ void checkedTranspose(const RobotModel& model, const Eigen::Ref<const Eigen::Mat
 void checkTrajectorySize(const RobotModel& model, const Eigen::Ref<const Eigen::MatrixXd>& q,
                          double dt);
 
+// Throws std::invalid_argument unless the CoM force (the pushes removed from the ZMP) is
+// n x 3, n the samples of q, and finite.
+void checkComForce(const Eigen::Ref<const Eigen::MatrixXd>& q,
+                   const Eigen::Ref<const Eigen::MatrixXd>& com_force);
+
 // Velocity and acceleration (nv x n) of the configurations qt (nq x n, n >= 3); `before` and
 // `after` are scratch vectors (resized to nv). No allocation once every buffer has its size.
 void differentiateSamples(const Eigen::MatrixXd& qt, double dt, Eigen::MatrixXd& vt,

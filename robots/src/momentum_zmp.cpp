@@ -207,12 +207,7 @@ const MultibodyReplayResult& MomentumZmp::run(const Eigen::Ref<const Eigen::Matr
 const MultibodyReplayResult& MomentumZmp::run(const Eigen::Ref<const Eigen::MatrixXd>& q,
                                               double dt,
                                               const Eigen::Ref<const Eigen::MatrixXd>& com_force) {
-  if (com_force.rows() != q.rows() || com_force.cols() != 3 || !com_force.allFinite()) {
-    throw std::invalid_argument("multibody replay: CoM force of size " +
-                                std::to_string(com_force.rows()) + " x " +
-                                std::to_string(com_force.cols()) + ", expected " +
-                                std::to_string(q.rows()) + " x 3, finite");
-  }
+  detail::checkComForce(q, com_force);
   return runImpl(q, dt, &com_force);
 }
 
