@@ -1,5 +1,7 @@
 #include "wpg/convex_polygon.hpp"
 
+#include "convex_hull_chain.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -16,6 +18,41 @@ double cross(const Eigen::Vector2d& o, const Eigen::Vector2d& a, const Eigen::Ve
 }
 
 }  // namespace
+
+namespace detail {
+
+int monotoneChain(const Eigen::Vector2d* sorted, int n, Eigen::Vector2d* hull) {
+  if (n < 3) {
+    std::copy(sorted, sorted + n, hull);
+    return n;
+  }
+  int k = 0;
+  for (int i = 0; i < n; ++i) {
+    while (k >= 2 && cross(hull[k - 2], hull[k - 1], sorted[i]) <= 0.0) --k;
+    hull[k++] = sorted[i];
+  }
+  for (int i = n - 2, lower = k + 1; i >= 0; --i) {
+    while (k >= lower && cross(hull[k - 2], hull[k - 1], sorted[i]) <= 0.0) --k;
+    hull[k++] = sorted[i];
+  }
+  int m = k - 1;
+  // The exact chain keeps vertices that are collinear up to rounding (feet side by side):
+  // drop them so that setVertices() accepts the hull.
+  for (bool changed = true; changed && m > 3;) {
+    changed = false;
+    for (int i = 0; i < m; ++i) {
+      if (cross(hull[(i + m - 1) % m], hull[i], hull[(i + 1) % m]) <= kCollinear) {
+        std::copy(hull + i + 1, hull + m, hull + i);
+        --m;
+        changed = true;
+        break;
+      }
+    }
+  }
+  return m;
+}
+
+}  // namespace detail
 
 bool ConvexPolygon::setVertices(const std::vector<Eigen::Vector2d>& vertices, std::string* why) {
   auto fail = [why](const std::string& reason) {
@@ -97,29 +134,7 @@ std::vector<Eigen::Vector2d> convexHull(std::vector<Eigen::Vector2d> points) {
   const int n = static_cast<int>(points.size());
   if (n < 3) return points;
   std::vector<Eigen::Vector2d> hull(2 * n);
-  int k = 0;
-  for (int i = 0; i < n; ++i) {
-    while (k >= 2 && cross(hull[k - 2], hull[k - 1], points[i]) <= 0.0) --k;
-    hull[k++] = points[i];
-  }
-  for (int i = n - 2, lower = k + 1; i >= 0; --i) {
-    while (k >= lower && cross(hull[k - 2], hull[k - 1], points[i]) <= 0.0) --k;
-    hull[k++] = points[i];
-  }
-  hull.resize(k - 1);
-  // The exact chain keeps vertices that are collinear up to rounding (feet side by side):
-  // drop them so that setVertices() accepts the hull.
-  for (bool changed = true; changed && hull.size() > 3;) {
-    changed = false;
-    const std::size_t m = hull.size();
-    for (std::size_t i = 0; i < m; ++i) {
-      if (cross(hull[(i + m - 1) % m], hull[i], hull[(i + 1) % m]) <= kCollinear) {
-        hull.erase(hull.begin() + static_cast<std::ptrdiff_t>(i));
-        changed = true;
-        break;
-      }
-    }
-  }
+  hull.resize(detail::monotoneChain(points.data(), n, hull.data()));
   return hull;
 }
 

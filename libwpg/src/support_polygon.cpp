@@ -1,7 +1,10 @@
 // The support polygon's violation without allocation (support_polygon.hpp). Every expression
-// is the one of convex_polygon.cpp (rectangleCorners, convexHull, setVertices, violation), on
-// arrays of at most 8 corners: the numbers are the same to the last bit (tested).
+// is the one of convex_polygon.cpp (rectangleCorners, setVertices, violation; convexHull's
+// monotone chain is shared: convex_hull_chain.hpp), on arrays of at most 8 corners: the
+// numbers are the same to the last bit (tested).
 #include "wpg/support_polygon.hpp"
+
+#include "convex_hull_chain.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -46,32 +49,7 @@ int hullOf(Eigen::Vector2d* points, int n, Eigen::Vector2d* hull) {
       points[j] = points[j - 1];
     points[j] = point;
   }
-  if (n < 3) {
-    std::copy(points, points + n, hull);
-    return n;
-  }
-  int k = 0;
-  for (int i = 0; i < n; ++i) {
-    while (k >= 2 && cross(hull[k - 2], hull[k - 1], points[i]) <= 0.0) --k;
-    hull[k++] = points[i];
-  }
-  for (int i = n - 2, lower = k + 1; i >= 0; --i) {
-    while (k >= lower && cross(hull[k - 2], hull[k - 1], points[i]) <= 0.0) --k;
-    hull[k++] = points[i];
-  }
-  int m = k - 1;
-  for (bool changed = true; changed && m > 3;) {
-    changed = false;
-    for (int i = 0; i < m; ++i) {
-      if (cross(hull[(i + m - 1) % m], hull[i], hull[(i + 1) % m]) <= kCollinear) {
-        std::copy(hull + i + 1, hull + m, hull + i);
-        --m;
-        changed = true;
-        break;
-      }
-    }
-  }
-  return m;
+  return detail::monotoneChain(points, n, hull);
 }
 
 // setVertices(vertices[0..n)) then violation(p); +infinity where setVertices fails.
