@@ -15,6 +15,7 @@
 #include <H5Cpp.h>
 #include <sys/stat.h>
 
+#include "file_type_name.hpp"
 #include "wpg/datasets/input/input_error.hpp"
 
 namespace wpg::datasets::detail {
@@ -32,15 +33,6 @@ std::string nameOf(hid_t id, bool file) {
   if (file) H5Fget_name(id, text.data(), text.size());
   else H5Iget_name(id, text.data(), text.size());
   return std::string(text.data());
-}
-
-const char* kindOf(const struct stat& s) {
-  if (S_ISDIR(s.st_mode)) return "a folder";
-  if (S_ISCHR(s.st_mode)) return "a character device";
-  if (S_ISBLK(s.st_mode)) return "a block device";
-  if (S_ISFIFO(s.st_mode)) return "a FIFO (pipe)";
-  if (S_ISSOCK(s.st_mode)) return "a socket";
-  return "not a regular file";
 }
 
 hid_t traverse(const char* link_name, hid_t group, const void* data, size_t size, hid_t,
@@ -75,7 +67,9 @@ hid_t traverse(const char* link_name, hid_t group, const void* data, size_t size
   for (const fs::path& candidate : candidates) {
     struct stat s {};
     if (::stat(candidate.c_str(), &s) != 0) continue;
-    if (!S_ISREG(s.st_mode)) return refuse(std::string("expected a regular file, got ") + kindOf(s));
+    if (!S_ISREG(s.st_mode)) {
+      return refuse(std::string("expected a regular file, got ") + detail::fileTypeName(s));
+    }
     const hid_t parent_file = H5Iget_file_id(group);
     unsigned intent = H5F_ACC_RDONLY;
     if (parent_file >= 0) {

@@ -18,6 +18,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "file_type_name.hpp"
 #include "wpg/datasets/input/input_error.hpp"
 
 namespace wpg::datasets {
@@ -79,15 +80,6 @@ mode_t creationMode() {
 }
 
 // --- kinds ----------------------------------------------------------------------------------
-
-const char* fileType(const struct stat& s) {
-  if (S_ISDIR(s.st_mode)) return "a folder";
-  if (S_ISCHR(s.st_mode)) return "a character device";
-  if (S_ISBLK(s.st_mode)) return "a block device";
-  if (S_ISFIFO(s.st_mode)) return "a FIFO (pipe)";
-  if (S_ISSOCK(s.st_mode)) return "a socket";
-  return "not a regular file";
-}
 
 bool hasSignatureAt(std::ifstream& in, std::streamoff offset, const char (&signature)[9]) {
   char bytes[8] = {};
@@ -183,7 +175,7 @@ void checkOutputPath(const std::string& path, OutputKind kind,
   }
   // Never followed: the link's target may be an input, another user's file, a device.
   if (S_ISLNK(target.st_mode)) refuse(path, kind, "a symbolic link (not followed)");
-  if (!S_ISREG(target.st_mode)) refuse(path, kind, fileType(target));
+  if (!S_ISREG(target.st_mode)) refuse(path, kind, detail::fileTypeName(target));
   for (const std::string& input : inputs) {
     struct stat other {};
     if (::stat(input.c_str(), &other) == 0 && other.st_dev == target.st_dev &&
