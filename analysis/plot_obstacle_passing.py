@@ -14,9 +14,9 @@ its stored scenario: the obstacle's margin circle has radius R + m about its cen
   commanded speed along +x with |free-flyer yaw| < 0.1 rad.
 Outcome: "passed" when past within max(10 s, 2 m / v) of reached, at >= min(0.1 m/s, v / 2)
 along +x while passing (10 s and 0.1 m/s at 0.2 and 0.3 m/s; a command of 0.1 m/s walks the
-same way for twice as long, at half the speed), never inside, walking on; "slow" when past but not so; "blocked" when never past; "failed" when the
-walk failed (exit status 1). Checked reads (wpg_file_reading.py): a bad
-file is one line and exit status 2.
+same way for twice as long, at half the speed), never inside, walking on; "slow" when past
+but not so; "blocked" when never past; "failed" when the walk failed (exit status 1).
+Checked reads (wpg_file_reading.py): a bad file is one line and exit status 2.
 """
 import argparse
 import math
@@ -167,8 +167,9 @@ def draw(cells, path, title):
 
 
 def write_table(cells, path):
-    lines = ["| v [m/s] | R [m] | margin [m] | met at [m] | offset [m] | outcome | time to pass [s] "
-             "| speed passing [m/s] | largest \\|y\\| [m] |", "|---|---|---|---|---|---|---|---|---|"]
+    lines = ["| v [m/s] | R [m] | margin [m] | met at [m] | offset [m] | outcome "
+             "| time to pass [s] | speed passing [m/s] | largest \\|y\\| [m] |",
+             "|---|---|---|---|---|---|---|---|---|"]
     for c in sorted(cells, key=lambda c: (c["command"], c["radius"], c["margin"], c["reach"],
                                           c["offset"])):
         lines.append("| %g | %g | %g | %g | %g | %s | %s | %s | %.2f |" % (
