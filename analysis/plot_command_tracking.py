@@ -78,7 +78,8 @@ def read(path):
         fx = [float(v) for v in w["feasibility_x"]]
         fy = [float(v) for v in w["feasibility_y"]]
     except (KeyError, TypeError, ValueError):
-        raise BadFile("%s: %s: expected the walking timings and feasibility polygon" % (path, where))
+        raise BadFile("%s: %s: expected the walking timings and feasibility polygon"
+                      % (path, where))
     if len(fx) != 5 or len(fy) != 5 or not step > 0:
         raise BadFile("%s: %s: expected a 5-vertex feasibility polygon" % (path, where))
     return data, step, fx, fy

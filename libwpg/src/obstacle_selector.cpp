@@ -41,6 +41,12 @@ void ObstacleSelector::tangentNormals(const Eigen::Vector2d& com,
                                       const Eigen::Ref<const Eigen::VectorXi>& slots,
                                       Eigen::Ref<Eigen::Matrix2Xd> normals) {
   normals.setZero();
+  // Among other obstacles a circle keeps the row at the step: their half-planes, each turned
+  // towards the command on its own, may leave no room between them (obstacle_cluttered: rows
+  // relaxed, a step 4 cm inside a margin).
+  int in_reach = 0;
+  for (int k = 0; k < slots.size(); ++k) in_reach += slots(k) >= 0 ? 1 : 0;
+  if (in_reach > 1) return;
   for (int k = 0; k < slots.size(); ++k) {
     const int index = slots(k);
     if (index < 0) continue;

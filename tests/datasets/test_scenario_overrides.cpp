@@ -99,12 +99,11 @@ TEST(Overrides, ObstacleDistanceFormRoundTrips) {
 
 TEST(Overrides, ObstacleLinearizationRoundTrips) {
   const Scenario defaults = loadShipped("walk_forward");
-  EXPECT_EQ(defaults.walking.obstacle_linearization, wpg::ObstacleLinearization::kStep);
-  const Scenario s =
-      loadShipped("walk_forward", {"walking.obstacle_linearization=command_tangent"});
-  EXPECT_EQ(s.walking.obstacle_linearization, wpg::ObstacleLinearization::kCommandTangent);
-  EXPECT_NE(s.resolved_yaml.find("obstacle_linearization: command_tangent"), std::string::npos);
+  EXPECT_EQ(defaults.walking.obstacle_linearization, wpg::ObstacleLinearization::kCommandTangent);
+  const Scenario s = loadShipped("walk_forward", {"walking.obstacle_linearization=step"});
+  EXPECT_EQ(s.walking.obstacle_linearization, wpg::ObstacleLinearization::kStep);
+  EXPECT_NE(s.resolved_yaml.find("obstacle_linearization: step"), std::string::npos);
   const Scenario again =
       wpg::datasets::loadScenarioText(s.resolved_yaml, "run.h5:/scenario", {}, kRobotsDir);
-  EXPECT_EQ(again.walking.obstacle_linearization, wpg::ObstacleLinearization::kCommandTangent);
+  EXPECT_EQ(again.walking.obstacle_linearization, wpg::ObstacleLinearization::kStep);
 }

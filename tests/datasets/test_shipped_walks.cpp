@@ -227,13 +227,13 @@ TEST(ShippedWalks, CurveRealTimeIterationStaysWithFullSqp) {
 // written, (f - c)^2 >= R^2 + m^2: on experiment B (R = m = 0.25 m) the step centres keep
 // sqrt(R^2 + m^2) = 0.354 m from the centre (measured 0.366) and, as the paper allows, land
 // on or inside the margin circle R + m = 0.5 m (two steps; the default keeps them
-// R + m + obstacle_foot_radius = 0.629 m away). With the paper's J1 (instantaneous velocity),
-// which holds the robot pressing against the obstacle; the default J1 slides along it and
-// keeps its steps 0.501 m away.
+// R + m + obstacle_foot_radius = 0.629 m away). With the paper's J1 (instantaneous velocity)
+// and linearization (at the step), which hold the robot pressing against the obstacle.
 TEST(ShippedWalks, PaperObstacleFormStepsInsideTheMarginCircle) {
   const wpg::datasets::Scenario s =
       load("paper_experiment_b", {"walking.obstacle_distance_form=paper",
-                                  "walking.velocity_tracking=instantaneous"});
+                                  "walking.velocity_tracking=instantaneous",
+                                  "walking.obstacle_linearization=step"});
   ASSERT_EQ(s.walking.obstacle_distance_form, wpg::ObstacleDistanceForm::kPaper);
   const wpg::WalkResult r = wpg::generateWalk(s.walking, s.request);
   ASSERT_TRUE(r.success) << r.message;

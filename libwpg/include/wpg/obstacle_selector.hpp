@@ -31,7 +31,8 @@ class ObstacleSelector {
   // command_tangent linearization (obstacle_tangent.hpp): column k of `normals` <- the
   // half-plane normal of the circle in slot k (grown by its margin and `foot_radius`), from the
   // CoM, the command's world `direction` and the obstacle's passing side; zero for an empty slot
-  // or a box or polygon (their rows keep the linearization at the step). The side is chosen
+  // or a box or polygon (their rows keep the linearization at the step), and all zero when more
+  // than one obstacle is in the slots (a circle among others keeps it too). The side is chosen
   // from `feet_middle` when the obstacle comes within reach (select()) and kept while it stays
   // there, so that the robot does not change its mind half-way round. Does not allocate.
   void tangentNormals(const Eigen::Vector2d& com, const Eigen::Vector2d& feet_middle,

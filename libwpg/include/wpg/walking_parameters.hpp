@@ -2,10 +2,11 @@
 // Constant description of a walking robot for the pattern generator: timings, template-model
 // constants, foot geometry, step feasibility, cost weights. Defaults are HRP-2's, from the
 // paper (Naveau et al., RA-L 2017, Sec. V) and the authors' code; robots/<name>/walking.yaml
-// restates them and scenarios may override any field (datasets/SCENARIOS.md). Five defaults
+// restates them and scenarios may override any field (datasets/SCENARIOS.md). Six defaults
 // differ from the paper's text, on measurement (docs/formulation.md,
-// docs/command_tracking.md): velocity_tracking, heading_reference, weight_yaw,
-// max_step_yaw_change (the authors' code's value) and obstacle_distance_form.
+// docs/command_tracking.md, docs/obstacle_passing.md): velocity_tracking, heading_reference,
+// weight_yaw, max_step_yaw_change (the authors' code's value), obstacle_distance_form and
+// obstacle_linearization.
 #include <array>
 #include <string>
 #include <vector>
@@ -107,8 +108,9 @@ enum class ObstacleLinearization {
   // (libwpg/include/wpg/obstacle_tangent.hpp). Fixed during a sample (exact Jacobian: constant).
   // With heading_reference: command and a large weight_yaw the robot slides round an obstacle on
   // the path and walks on (paper_experiment_a); with the support-foot heading it turns while it
-  // slides and circles the obstacle. Not the default: on cluttered scenes it relaxes rows
-  // (docs/formulation.md, "Obstacles on the path", measured).
+  // slides and circles the obstacle. Only for a circle alone in the QP: among other obstacles
+  // each row keeps the linearization at the step (tangents turned towards the command one by
+  // one may leave no room between them). The default (docs/obstacle_passing.md).
   kCommandTangent,
 };
 bool parseObstacleLinearization(const std::string& name, ObstacleLinearization* out);
@@ -154,7 +156,7 @@ struct WalkingParameters {
   ObstacleDistanceForm obstacle_distance_form = ObstacleDistanceForm::kSoleClearance;
   // How a circle obstacle's row is linearized (see the enum). Boxes and polygons keep the
   // signed-distance row linearized at the step in both cases.
-  ObstacleLinearization obstacle_linearization = ObstacleLinearization::kStep;
+  ObstacleLinearization obstacle_linearization = ObstacleLinearization::kCommandTangent;
   // --- step feasibility polygon for a LEFT step, in the right (support) foot frame (Fig. 5);
   //     a right step uses the mirror image (y -> -y). Counter-clockwise order not required.
   std::array<double, 5> feasibility_x{-0.28, -0.2, 0.0, 0.2, 0.28};  // [m]
