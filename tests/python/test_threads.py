@@ -1,5 +1,7 @@
 """Walks release the GIL: Python threads run them in parallel, with the results of one at a time."""
+import sys
 import threading
+import time
 
 import numpy as np
 
@@ -36,13 +38,29 @@ def test_two_threads_give_the_results_of_one_at_a_time():
 
 
 def test_python_runs_while_a_walk_runs():
-    # With the GIL held for the whole walk this loop would not get to run until it ended.
-    done = threading.Event()
-    thread = threading.Thread(target=lambda: (wpg.run("walk_forward",
-                                                      overrides={"duration": 30}), done.set()))
-    thread.start()
-    turns = 0
-    while not done.is_set() and thread.is_alive():
-        turns += 1
-    thread.join()
-    assert turns > 1000
+    # A second thread counts, handing the GIL back at every turn (sleep(0)). With a switch
+    # interval of 100 s this thread is never asked to drop the GIL between its own statements, so
+    # the count can move between `before` and `after` only if the walk releases the GIL (checked:
+    # a regular expression that holds it gives 0, a sleep thousands). No timing is asserted.
+    count = [0]
+    stop = [False]
+
+    def spin():
+        while not stop[0]:
+            count[0] += 1
+            time.sleep(0)
+    interval = sys.getswitchinterval()
+    sys.setswitchinterval(100.0)
+    try:
+        thread = threading.Thread(target=spin)
+        thread.start()
+        while count[0] == 0:
+            time.sleep(0.001)
+        before = count[0]
+        wpg.run("walk_forward", overrides={"duration": 60})
+        after = count[0]
+        stop[0] = True
+        thread.join()
+    finally:
+        sys.setswitchinterval(interval)
+    assert after > before, "no Python turn while the walk ran"
