@@ -23,6 +23,7 @@
 #include <yaml-cpp/eventhandler.h>
 
 #include "wpg/datasets/input/input_limits.hpp"
+#include "wpg/nearest_name.hpp"
 
 namespace wpg::datasets::detail {
 namespace {
@@ -257,7 +258,8 @@ Entries readMap(const YAML::Node& node, const std::string& key,
     bool known = false;
     for (const std::string& k : known_keys) known = known || k == name;
     if (!known) {
-      source.failWith(full, "unknown key (a typo?); known keys" +
+      source.failWith(full, "unknown key (a typo?)" + didYouMean(name, known_keys) +
+                                "; known keys" +
                                 (key.empty() ? std::string() : " of '" + key + "'") + ": " +
                                 joinNames(known_keys));
     }

@@ -15,6 +15,7 @@
 
 #include "world_generators.hpp"
 #include "wpg/datasets/input/yaml_input.hpp"
+#include "wpg/nearest_name.hpp"
 
 namespace wpg::datasets {
 namespace {
@@ -86,8 +87,9 @@ WorldSpec readWorld(const YAML::Node& node, std::size_t index, const std::string
       const std::string name = item.first.IsScalar() ? item.first.Scalar() : "";
       if (std::find(known.begin(), known.end(), name) == known.end()) {
         source.failWith(detail::childKey(world.key, name),
-                        "unknown world generator or key '" + name + "': expected name, goal, and "
-                        "scenario or one of the generators " +
+                        "unknown world generator or key '" + name + "'" +
+                            wpg::didYouMean(name, known) +
+                            "; expected name, goal, and scenario or one of the generators " +
                             detail::joinNames(detail::worldGeneratorNames()));
       }
     }
