@@ -73,6 +73,14 @@ std::string indexKey(const std::string& parent, std::size_t index) {
   return parent + "[" + std::to_string(index) + "]";
 }
 
+std::string renameOverrides(std::string message, const std::string& what) {
+  for (std::size_t at = message.find("--set '"); at != std::string::npos;
+       at = message.find("--set '", at + what.size())) {
+    message.replace(at, 5, what);
+  }
+  return message;
+}
+
 bool isQuoted(const YAML::Node& node) { return node.IsScalar() && node.Tag() == "!"; }
 
 std::string describe(const YAML::Node& node) {
@@ -125,6 +133,10 @@ void Source::failWith(const std::string& key, const std::string& message) const 
 
 void Source::failFile(const std::string& message) const {
   throw InputError(oneLine(file_ + ": " + message));
+}
+
+std::string Source::warning(const std::string& key, const std::string& message) const {
+  return oneLine(file_ + ": key '" + key + "': " + message + overrideNote(key));
 }
 
 std::string Source::overrideNote(const std::string& key) const {

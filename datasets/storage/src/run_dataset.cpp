@@ -550,6 +550,13 @@ H5::Group writeRunGroup(H5::Group& runs, const std::string& group_name, const Sc
   writeIntAttribute(run, "success", result.success ? 1 : 0);
   writeStringAttribute(run, "message", result.message);
   writeStringAttribute(run, "robot", scenario.robot);
+  // The loader's warnings (a clamped command, an implausible value), one per line; written only
+  // when there are some, so that a run without any reads as before.
+  if (!scenario.warnings.empty()) {
+    std::string lines;
+    for (const std::string& warning : scenario.warnings) lines += warning + "\n";
+    writeStringAttribute(run, "warnings", lines);
+  }
   writeTrajectory(run, result.trajectory);
   writeMpcLog(run, result.trajectory);
   writeObstacles(run, scenario.request.obstacles);

@@ -320,14 +320,13 @@ ComparisonStudy loadComparisonStudy(const std::string& path, const BaseResolver&
       run.scenario = loadScenarioText(text, origin, overrides, robots_dir);
       run.scenario.walking.validate();
       run.scenario.request.validate();
+      for (std::string& warning : run.scenario.warnings) {
+        warning = path + ": " + described + ": " + detail::renameOverrides(warning, "override");
+      }
     } catch (const std::exception& e) {
       // The loader calls the variant's and `set`'s keys --set overrides.
-      std::string message = detail::oneLine(e.what());
-      for (std::size_t at = message.find("--set '"); at != std::string::npos;
-           at = message.find("--set '", at)) {
-        message.replace(at, 5, "override");
-      }
-      throw InputError(path + ": " + described + ": " + message);
+      throw InputError(path + ": " + described + ": " +
+                       detail::renameOverrides(detail::oneLine(e.what()), "override"));
     }
   });
   return comparison;
