@@ -2,7 +2,8 @@
 # help_exit_codes.sh WPG COMMANDS.md: every subcommand's --help lists the exit codes that
 # subcommand returns (read from its code paths: `diff` returns 1 for "different", `analyze`,
 # `plot`, `replay`, `compare`, `push-sweep` and `view` never return 1), and the table of
-# docs/commands.md, "Exit codes", lists the same ones.
+# docs/commands.md, "Exit codes", lists the same ones; and a few of them seen: run 1 and
+# analyze 0 on a walk that falls, diff 1 and 0, plot and analyze 2 on a file that is not one.
 set -euo pipefail
 # shellcheck source=common.sh
 source "$(dirname "$0")/common.sh"
@@ -49,4 +50,17 @@ done
 for sub in $(sed -n '/^SUBCOMMANDS:/,$p' "$WORKDIR/help" | awk 'NR > 1 && NF {print $1}'); do
   [[ -n "${expected[$sub]+x}" ]] || fail "subcommand $sub has no expected exit codes in this test"
 done
+# And the codes are the commands' own: a walk that fails is exit 1 for `run` but a result for
+# `analyze` (0); `diff` says 1 for "different"; `plot` of a file that is not a dataset is 2.
+run_status() { local status=0; "$@" >/dev/null 2>&1 || status=$?; echo "$status"; }
+[[ "$(run_status "$wpg" run walk_forward --no-plot --set duration=5 --set walking.com_height=81.4 \
+  -o "$WORKDIR/fell.h5")" == 1 ]] || fail "run: a walk that falls is not exit 1"
+[[ "$(run_status "$wpg" run walk_forward --no-plot --set duration=2 -o "$WORKDIR/ok.h5")" == 0 ]] \
+  || fail "run: a walk that succeeds is not exit 0"
+[[ "$(run_status "$wpg" analyze "$WORKDIR/fell.h5")" == 0 ]] || fail "analyze of a failed walk is not 0"
+[[ "$(run_status "$wpg" diff "$WORKDIR/fell.h5" "$WORKDIR/ok.h5")" == 1 ]] || fail "diff of two walks is not 1"
+[[ "$(run_status "$wpg" diff "$WORKDIR/ok.h5" "$WORKDIR/ok.h5")" == 0 ]] || fail "diff of a file with itself is not 0"
+echo "not a dataset" >"$WORKDIR/text.h5"
+[[ "$(run_status "$wpg" plot "$WORKDIR/text.h5")" == 2 ]] || fail "plot of a text file is not 2"
+[[ "$(run_status "$wpg" analyze "$WORKDIR/text.h5")" == 2 ]] || fail "analyze of a text file is not 2"
 echo "ok"
