@@ -71,6 +71,8 @@ TEST(ScenarioWarnings, GoalYawBeyondATurnWarns) {
   expectOneWarning(s, {"goal_with_yaw.yaml", "key 'goal.yaw'", "90", "rad", "degrees"});
   EXPECT_DOUBLE_EQ(s.goal.goal.yaw, 90.0);
   EXPECT_TRUE(loadShipped("goal_with_yaw", {"goal.yaw=-3.1"}).warnings.empty());
+  const Scenario box = loadShipped("goal_cluttered", {"obstacles[1].yaw=30"});
+  expectOneWarning(box, {"goal_cluttered.yaml", "key 'obstacles[1].yaw'", "30.0 rad", "degrees"});
 }
 
 TEST(ScenarioWarnings, ResolvedScenarioWarnsAgain) {

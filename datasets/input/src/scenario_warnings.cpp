@@ -93,6 +93,16 @@ std::vector<std::string> scenarioWarnings(const Scenario& scenario, double robot
                         " rad): the goal heading is " + number(std::remainder(yaw, kTurn)) +
                         " rad"));
   }
+  const std::vector<Obstacle>& obstacles = scenario.request.obstacles;
+  for (std::size_t i = 0; i < obstacles.size(); ++i) {
+    if (obstacles[i].type != ObstacleType::kBox || !(std::abs(obstacles[i].yaw) > kTurn)) continue;
+    const double yaw = obstacles[i].yaw;
+    warnings.push_back(source.warning(
+        indexKey("obstacles", i) + ".yaw",
+        formatNumber(yaw) + " rad is more than a turn (angles are in rad; degrees? " + number(yaw) +
+            " degrees = " + number(yaw * M_PI / 180.0) + " rad): the box is turned by " +
+            number(std::remainder(yaw, kTurn)) + " rad"));
+  }
   if (scenario.goal.enabled && scenario.goal.goal.yaw_tolerance > M_PI) {
     warnings.push_back(source.warning(
         "goal.yaw_tolerance", formatNumber(scenario.goal.goal.yaw_tolerance) +
