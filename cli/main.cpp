@@ -46,10 +46,12 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", std::string("wpg ") + WPG_VERSION_STRING);
   app.require_subcommand(1);
   app.footer(
-      "Exit codes: 0 success, 1 the walk failed (dataset still written), 2 bad input (nothing "
-      "written), 3 could not complete (out of memory, I/O error; no output file written).\n"
-      "Data (robots, scenarios, plot script): " + dataDirectory() +
-      " (set WPG_DATA_DIR to use another).");
+      "Exit codes (each subcommand's --help lists those it returns): 0 success, 1 a walk "
+      "failed (run, bench, batch, merge; the data still written) or the files differ (diff), 2 "
+      "bad input (nothing written), 3 could not complete (out of memory, I/O error; no output "
+      "file written).\n"
+      "Data (robots, scenarios, plot script): " +
+      dataDirectory() + " (set WPG_DATA_DIR to use another).");
 
   CommandAction command;
   registerRunCommand(app, command);
@@ -85,8 +87,9 @@ int main(int argc, char** argv) {
     printError(e.what());
     return kExitBadInput;
   } catch (const wpg::engine::RankStopped& e) {
-    // Another rank (rank 0) reported why on stderr: this one leaves quietly.
-    return e.badInput() ? kExitBadInput : kExitRunFailed;
+    // Another rank (rank 0) reported why on stderr: this one leaves quietly, with rank 0's
+    // exit code (bad input, or rank 0 could not complete: no walk failed).
+    return e.badInput() ? kExitBadInput : kExitIncomplete;
   } catch (const std::bad_alloc&) {
     leaveIncomplete("out of memory");
   } catch (const std::exception& e) {

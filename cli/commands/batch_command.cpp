@@ -114,6 +114,14 @@ int batchCommand(const BatchOptions& options) {
     world = engine::checkInputWhileMpiStarts(check_input);
   }
 
+  // What the runs' scenarios warn about (a clamped command, ...), once, from rank 0.
+  if (!world || world->rank == 0) {
+    std::vector<std::string> warnings;
+    for (const datasets::StudyRun& run : study.runs) {
+      warnings.insert(warnings.end(), run.scenario.warnings.begin(), run.scenario.warnings.end());
+    }
+    printWarnings(warnings);
+  }
   StudyProgress progress(study.name);
   engine::StudyOutput output{options.output, options.resume, slice};
   if (world) {

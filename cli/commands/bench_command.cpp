@@ -223,6 +223,7 @@ int benchCommand(const BenchOptions& options) {
       throw UsageError(e.what());
     }
     engine::checkFilterSettings(scenarios.back(), path);
+    printWarnings(scenarios.back().warnings);
   }
   if (!options.json.empty()) {
     std::vector<std::string> inputs;

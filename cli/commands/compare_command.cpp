@@ -106,6 +106,14 @@ int compareCommand(const CompareOptions& options) {
   });
   const datasets::Study& study = comparison.study;
 
+  // What the runs' scenarios warn about (a clamped command, ...), once, from rank 0.
+  if (!world || world->rank == 0) {
+    std::vector<std::string> warnings;
+    for (const datasets::StudyRun& run : study.runs) {
+      warnings.insert(warnings.end(), run.scenario.warnings.begin(), run.scenario.warnings.end());
+    }
+    printWarnings(warnings);
+  }
   fs::create_directories(folder, ec);
   StudyProgress progress(study.name);
   // Under MPI the ranks share the runs, one worker per rank unless -j says otherwise.

@@ -125,6 +125,7 @@ void checkOptions(const PushSweepOptions& options) {
 PushSituation loadSituation(const SituationSource& source, const PushSweepOptions& options) {
   const datasets::Scenario base = datasets::loadScenario(
       resolveScenarioPath(source.scenario), options.overrides, robotsDirectory());
+  printWarnings(base.warnings);
   PushSituation situation =
       engine::preparePushSituation(source.name, source.scenario, base, robotsDirectory());
   // Written with the outputs (writeSituationScenario), after everything is checked.

@@ -10,6 +10,7 @@
 #include <CLI/CLI.hpp>
 
 #include "command_options.hpp"
+#include "data_paths.hpp"
 
 namespace wpg::cli {
 namespace {
@@ -31,6 +32,19 @@ void runWhenParsed(CLI::App* sub, CommandAction& action, std::shared_ptr<Parsed<
     action = [parsed, command] { return command(parsed->options); };
   });
 }
+
+// The footer of a subcommand's --help: the exit codes that subcommand returns (read from its
+// code paths; docs/commands.md, "Exit codes", has the same table), then where the data is.
+// Items are "N meaning", separated by ", ": tests/cli/help_exit_codes.sh reads them.
+void setExitCodes(CLI::App* sub, const std::string& codes) {
+  sub->footer("Exit codes: " + codes + ".\nData (robots, scenarios, plot script): " +
+              dataDirectory() + " (set WPG_DATA_DIR to use another).");
+}
+
+// The meaning of exit 3 for a subcommand that writes files, and for one that only reads.
+const char* const kIncompleteWriting =
+    "3 could not complete (out of memory, I/O error; no output file written)";
+const char* const kIncompleteReading = "3 could not complete (out of memory)";
 
 int defaultThreads() { return static_cast<int>(std::max(1u, std::thread::hardware_concurrency())); }
 
@@ -65,6 +79,10 @@ void registerRunCommand(CLI::App& app, CommandAction& action) {
                     "Replay and run the dynamic filter (Kajita preview control on the ZMP error, "
                     "paper Sec. IV) with the scenario's filter_settings; implies --replay. "
                     "Default: the scenario's `filter:` key (false)");
+  setExitCodes(
+      run_app,
+      "0 success, 1 the walk failed (dataset still written), 2 bad input (nothing written), " +
+          std::string(kIncompleteWriting));
   runWhenParsed(run_app, action, parsed, &runCommand,
                 [](Parsed<RunOptions>& p, CLI::App&) { p.options.plot = !p.no_plot; });
 }
@@ -85,6 +103,10 @@ void registerReplayCommand(CLI::App& app, CommandAction& action) {
   replay_app->add_flag("--no-filter", parsed->no_filter,
                        "Replay only: the multibody ZMP of the walk as generated, no dynamic filter");
   replay_app->add_flag("--no-plot", parsed->no_plot, "Do not draw the figure");
+  setExitCodes(replay_app,
+               "0 success (a walk that had failed is replayed as it walked), 2 bad input, a walk "
+               "the multibody replay cannot follow included (nothing written), " +
+                   std::string(kIncompleteWriting));
   runWhenParsed(replay_app, action, parsed, &replayCommand,
                 [](Parsed<ReplayOptions>& p, CLI::App&) {
                   p.options.filter = !p.no_filter;
@@ -109,6 +131,11 @@ void registerBenchCommand(CLI::App& app, CommandAction& action) {
   bench_app->add_option("--json", bench.json, "Also write the numbers to this JSON file")
       ->default_str("none")
       ->type_name("FILE");
+  setExitCodes(
+      bench_app,
+      "0 every walk succeeded, 1 a walk failed (its timings are still printed), 2 bad input "
+      "(nothing measured), " +
+          std::string(kIncompleteWriting));
   runWhenParsed(bench_app, action, parsed, &benchCommand, [](Parsed<BenchOptions>&, CLI::App&) {});
 }
 
@@ -119,8 +146,7 @@ void registerBatchCommand(CLI::App& app, CommandAction& action) {
   CLI::App* batch_app = app.add_subcommand(
       "batch",
       "Run a study (a base scenario and a sweep of its keys, datasets/SCENARIOS.md) on worker "
-      "threads into one HDF5 file, with OUT.summary.csv/.md/.png beside it. Exit 0 every run "
-      "succeeded, 1 some walk failed (the file says which), 2 bad input.");
+      "threads into one HDF5 file, with OUT.summary.csv/.md/.png beside it.");
   batch_app->add_option("study", batch.study, "Study file (YAML)")->required()->type_name("STUDY.yaml");
   batch_app->add_option("-o,--output", batch.output, "Batch file to write (or to finish with --resume)")
       ->required()
@@ -138,6 +164,11 @@ void registerBatchCommand(CLI::App& app, CommandAction& action) {
                         "a shard file; join the shards with `wpg merge` (README, \"Running on a "
                         "cluster\")")
       ->type_name("K/N");
+  setExitCodes(
+      batch_app,
+      "0 every run succeeded, 1 some walk failed (exit_status in the file says which), 2 bad "
+      "input (nothing written), " +
+          std::string(kIncompleteWriting));
   runWhenParsed(batch_app, action, parsed, &batchCommand,
                 [](Parsed<BatchOptions>& p, CLI::App& sub) {
                   p.options.plot = !p.no_plot;
@@ -152,14 +183,17 @@ void registerMergeCommand(CLI::App& app, CommandAction& action) {
       "merge",
       "Join the shard files of a study (`wpg batch --shard K/N`, or the OUT.shards/ folder of an "
       "MPI batch) into OUT.h5, a batch file whose runs link into the shards (relative HDF5 "
-      "external links), with OUT.summary.csv/.md/.png. Exit 0, 1 some walk failed, 2 bad input "
-      "(a run in no shard, shards of another study: nothing written).");
+      "external links), with OUT.summary.csv/.md/.png.");
   merge_app->add_option("output", merge.output, "Index file to write")->required()->type_name("OUT.h5");
   merge_app->add_option("shards", merge.shards, "Shard files, or a folder of them")
       ->required()
       ->type_name("SHARD...");
   merge_app->add_flag("--copy", merge.copy, "Copy the runs into OUT.h5 (one self-contained file) instead of linking them");
   merge_app->add_flag("--no-plot", parsed->no_plot, "Do not draw the summary figure");
+  setExitCodes(merge_app,
+               "0 every run succeeded, 1 some walk in the shards failed, 2 bad input (a run in no "
+               "shard, shards of another study: nothing written), " +
+                   std::string(kIncompleteWriting));
   runWhenParsed(merge_app, action, parsed, &mergeCommand,
                 [](Parsed<MergeOptions>& p, CLI::App&) { p.options.plot = !p.no_plot; });
 }
@@ -172,8 +206,7 @@ void registerCompareCommand(CLI::App& app, CommandAction& action) {
       "compare",
       "Run a comparison study (worlds x variants x seeds of walks to a goal, "
       "datasets/SCENARIOS.md) on worker threads: DIR/study.h5, DIR/summary.csv/.md (one row per "
-      "world x variant) and figures. Exit 0 the study ran (runs that miss the goal are results), "
-      "2 bad input.");
+      "world x variant) and figures.");
   compare_app->add_option("study", compare.study, "Comparison study file (YAML)")
       ->required()
       ->type_name("STUDY.yaml");
@@ -188,6 +221,10 @@ void registerCompareCommand(CLI::App& app, CommandAction& action) {
                           "Also write OMPL benchmark logs into DIR, one per world (OMPL's "
                           "ompl_benchmark_statistics.py and Planner Arena read them)")
       ->type_name("DIR");
+  setExitCodes(compare_app,
+               "0 the study ran (runs that miss the goal are its results), 2 bad input (nothing "
+               "written), " +
+                   std::string(kIncompleteWriting));
   runWhenParsed(compare_app, action, parsed, &compareCommand,
                 [](Parsed<CompareOptions>& p, CLI::App& sub) {
                   p.options.plot = !p.no_plot;
@@ -205,6 +242,10 @@ void registerAnalyzeCommand(CLI::App& app, CommandAction& action) {
       ->type_name("FILE.h5");
   analyze_app->add_option("--format", analyze.format, "table, csv or json (one object per run)")
       ->type_name("FORMAT");
+  setExitCodes(
+      analyze_app,
+      "0 the metrics are printed, 2 bad input (not a run or batch file, a bad --format), " +
+          std::string(kIncompleteReading));
   runWhenParsed(analyze_app, action, parsed, &analyzeCommand,
                 [](Parsed<AnalyzeOptions>&, CLI::App&) {});
 }
@@ -215,8 +256,7 @@ void registerDiffCommand(CLI::App& app, CommandAction& action) {
   CLI::App* diff_app = app.add_subcommand(
       "diff",
       "Compare two run or batch files field by field (every dataset and attribute): print the "
-      "first sample beyond the tolerance and each field that differs. Exit 0 same within the "
-      "tolerance, 1 different, 2 bad input.");
+      "first sample beyond the tolerance and each field that differs.");
   diff_app->add_option("a", diff.a, "Reference file (e.g. datasets/references/<scenario>.h5)")
       ->required()
       ->type_name("A.h5");
@@ -234,6 +274,10 @@ void registerDiffCommand(CLI::App& app, CommandAction& action) {
                        "(repeatable; `*` matches `/` too), e.g. '*/checks@*_violation_time'")
       ->type_name("PATTERN")
       ->default_str("");
+  setExitCodes(diff_app,
+               "0 same within the tolerance, 1 different, 2 bad input (a file that is not a run or "
+               "batch file), " +
+                   std::string(kIncompleteReading));
   runWhenParsed(diff_app, action, parsed, &diffCommand, [](Parsed<DiffOptions>&, CLI::App&) {});
 }
 
@@ -271,6 +315,8 @@ void registerPushSweepCommand(CLI::App& app, CommandAction& action) {
   push_sweep_app->add_option("--tolerance", push_sweep.tolerance, "Bracket width at which the bisection stops [N]")
       ->type_name("N");
   push_sweep_app->add_flag("--no-plot", parsed->no_plot, "Do not draw the figure");
+  setExitCodes(push_sweep_app, "0 the table is written, 2 bad input (nothing written), " +
+                                   std::string(kIncompleteWriting));
   runWhenParsed(push_sweep_app, action, parsed, &pushSweepCommand,
                 [](Parsed<PushSweepOptions>& p, CLI::App&) { p.options.plot = !p.no_plot; });
 }
@@ -287,6 +333,9 @@ void registerPlotCommand(CLI::App& app, CommandAction& action) {
       ->type_name("FIG.png");
   plot_app->add_option("--run", plot.run, "Draw only this run of the file (a batch file holds many)")
       ->type_name("NAME");
+  setExitCodes(plot_app,
+               "0 the figure is drawn, 2 bad input or the plot script failed (no figure), " +
+                   std::string(kIncompleteReading));
   runWhenParsed(plot_app, action, parsed, &plotCommand, [](Parsed<PlotOptions>&, CLI::App&) {});
 }
 
@@ -304,6 +353,8 @@ void registerViewCommand(CLI::App& app, CommandAction& action) {
   view_app->add_option("-o,--output", view.output, "Page to write")
       ->default_str("FILE.html beside FILE.h5, DIR/view.html")
       ->type_name("PAGE.html");
+  setExitCodes(view_app, "0 the page is written, 2 bad input (nothing written), " +
+                             std::string(kIncompleteWriting));
   runWhenParsed(view_app, action, parsed, &viewCommand, [](Parsed<ViewOptions>&, CLI::App&) {});
 }
 

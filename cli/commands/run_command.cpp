@@ -70,6 +70,9 @@ int runCommand(const RunOptions& options) {
   datasets::checkOutputPath(dataset_path.string(), datasets::OutputKind::kHdf5, inputs);
   if (options.plot) datasets::checkOutputPath(figure_path.string(), datasets::OutputKind::kPng, inputs);
   datasets::checkWritableParent(dataset_path.string());
+  // The input is accepted: what it warns about (a clamped command, an implausible value), on
+  // stderr and in the dataset.
+  printWarnings(scenario.warnings);
 
   // One walk: its validation replay may use every core (the results do not depend on it).
   const engine::RunResult result = engine::runScenario(

@@ -7,6 +7,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "wpg/nearest_name.hpp"
 #include "wpg/online_walking_generator.hpp"
 #include "wpg/walk_loop.hpp"
 
@@ -117,10 +118,13 @@ void checkGoalRequest(const wpg::WalkingParameters& parameters, const wpg::WalkR
                       const wpg::GoalRequest& goal) {
   goal.validate();
   if (goal.planner.algorithm != kNoPlanner && !isKnownPlanner(goal.planner.algorithm)) {
-    std::string names = kNoPlanner;
-    for (const std::string& name : plannerNames()) names += ", " + name;
+    std::vector<std::string> known = {kNoPlanner};
+    known.insert(known.end(), plannerNames().begin(), plannerNames().end());
+    std::string names;
+    for (const std::string& name : known) names += (names.empty() ? "" : ", ") + name;
     throw std::invalid_argument("'planner.algorithm': expected one of " + names + ", got '" +
-                                goal.planner.algorithm + "'");
+                                goal.planner.algorithm + "'" +
+                                wpg::didYouMean(goal.planner.algorithm, known));
   }
   if (!goal.known_to_planner.empty() && goal.known_to_planner.size() != request.obstacles.size()) {
     throw std::invalid_argument("known_to_planner: expected one entry per obstacle");

@@ -23,6 +23,7 @@
 #include <ompl/util/Console.h>
 
 #include "ompl_planner_registry.hpp"
+#include "wpg/nearest_name.hpp"
 
 namespace wpg::planning {
 namespace {
@@ -209,7 +210,8 @@ RoutePlanner::RoutePlanner(World world, const wpg::RoutePlannerSettings& setting
     : world_(std::move(world)), settings_(settings), robot_radius_(robot_radius), bounds_(bounds) {
   if (!isKnownPlanner(settings.algorithm)) {
     throw std::invalid_argument("'planner.algorithm': expected one of " + plannerList() +
-                                ", got '" + settings.algorithm + "'");
+                                ", got '" + settings.algorithm + "'" +
+                                wpg::didYouMean(settings.algorithm, plannerNames()));
   }
   if (!(robot_radius > 0.0) || !std::isfinite(robot_radius)) {
     throw std::invalid_argument("'planner.robot_radius': expected a positive radius in m");

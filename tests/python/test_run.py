@@ -152,3 +152,20 @@ def test_docstrings():
                      wpg.Run.figure, wpg.OnlineGenerator.push, wpg.OnlineGenerator.set_obstacles):
         assert function.__doc__ and len(function.__doc__) > 40, function
     assert issubclass(wpg.InputError, ValueError) and isinstance(pd.DataFrame(), pd.DataFrame)
+
+
+def test_a_clamped_command_warns_and_walks_as_the_clamp(tmp_path):
+    # 2.0 m/s is beyond HRP-2's 0.4 m/s clamp: one UserWarning naming the key, kept in
+    # run.warnings and in the saved dataset; the walk is that of 0.4 m/s.
+    with pytest.warns(UserWarning, match=r"key 'reference\[1\]\.v\[0\]': 2\.0 m/s is beyond"):
+        fast = wpg.run("walk_forward", overrides={"duration": 2, "reference[1].v": [2.0, 0, 0]})
+    assert len(fast.warnings) == 1 and "clamped to 0.4 m/s" in fast.warnings[0]
+    clamped = wpg.run("walk_forward", overrides={"duration": 2, "reference[1].v": [0.4, 0, 0]})
+    assert clamped.warnings == []
+    assert np.array_equal(fast.com, clamped.com) and np.array_equal(fast.cop, clamped.cop)
+    fast.save(tmp_path / "fast.h5")
+    import h5py
+    with h5py.File(tmp_path / "fast.h5", "r") as f:
+        text = f["runs/walk_forward"].attrs["warnings"]
+        text = text.decode() if isinstance(text, bytes) else text
+    assert text == fast.warnings[0] + "\n"

@@ -275,6 +275,7 @@ void bindRun(py::module_& m) {
       .def_property_readonly("outcome", [](const RunSession& r) { return engine::runOutcomeName(r.result.outcome); })
       .def_property_readonly("message", [](const RunSession& r) { return r.result.walk.result.message; })
       .def_property_readonly("scenario_yaml", [](const RunSession& r) { return r.scenario.resolved_yaml; })
+      .def_property_readonly("warnings", [](const RunSession& r) { return r.scenario.warnings; })
       .def_property_readonly("scenario_path", [](const RunSession& r) { return r.scenario_path; })
       .def_property_readonly("stored_file", [](const RunSession& r) { return r.stored_file; })
       .def_property_readonly("replayed", [](const RunSession& r) { return r.result.replay.has_value(); })

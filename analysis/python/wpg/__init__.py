@@ -10,6 +10,7 @@ The reference is docs/python.md. Everything runs in this process on the C++ engi
 `wpg` command-line tool is not called); runs and studies release the GIL.
 """
 import os
+import warnings as _warnings
 
 from . import _wpg
 from ._wpg import InputError
@@ -39,12 +40,17 @@ def run(scenario="walk_forward", overrides=None, replay=False, filter=False):  #
     filter    -- also run the dynamic filter (`--filter`, implies replay): run.com_filtered,
                  run.zmp_multibody_filtered.
 
+    What the loader warns about (a command beyond the robot's clamp, ...) is issued as a
+    UserWarning and kept in run.warnings; it changes nothing of the walk.
     A walk that fails is a result (run.success False, run.exit_code 1, run.message says why).
     Bad input raises wpg.InputError with the CLI's one-line message naming the key. The walk
     runs without the GIL: Python threads can run walks in parallel.
     """
-    return Run(_wpg.run(os.fspath(scenario), override_items(overrides), bool(replay),
-                        bool(filter)))
+    result = Run(_wpg.run(os.fspath(scenario), override_items(overrides), bool(replay),
+                          bool(filter)))
+    for warning in result.warnings:  # as `wpg run` prints them (the run records them too)
+        _warnings.warn(warning, UserWarning, stacklevel=2)
+    return result
 
 
 def scenarios():

@@ -50,6 +50,13 @@ class Run:
         return self._core.message
 
     @property
+    def warnings(self):
+        """The scenario loader's warnings (a command beyond the robot's clamp, a value outside
+        its plausible range; datasets/SCENARIOS.md, "Warnings"), one line each as `wpg` prints
+        them after "wpg: warning: "; wpg.run() also issues each as a Python warning."""
+        return list(self._core.warnings)
+
+    @property
     def scenario(self):
         """The resolved scenario (YAML text: every key explicit, the overrides merged)."""
         return self._core.scenario_yaml

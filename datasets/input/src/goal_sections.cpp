@@ -3,6 +3,7 @@
 
 #include "parameter_fields.hpp"
 #include "wpg/datasets/input/input_limits.hpp"
+#include "wpg/nearest_name.hpp"
 
 #include <cstdint>
 #include <limits>
@@ -45,7 +46,10 @@ GoalRequest readGoalRequest(const YAML::Node& goal_node, const YAML::Node& plann
       if (!algorithm.IsScalar()) {
         source.fail("planner.algorithm", "the name of a planner such as rrtconnect", algorithm);
       }
-      p.algorithm = algorithm.Scalar();
+      // Planner names are lower case (RRTConnect reads as rrtconnect, the name stored); an
+      // unknown one is refused with the nearest known name by the engine's checks, which know
+      // the planners of this build (planning/route_planner.hpp).
+      p.algorithm = asciiLower(algorithm.Scalar());
     }
     // Signs are checked by GoalRequest::validate (one message per key, with the value).
     if (present(planner, "time_limit")) {

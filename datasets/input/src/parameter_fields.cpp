@@ -1,13 +1,29 @@
 // The parameter tables of parameter_fields.hpp and their readers and emitters.
 #include "parameter_fields.hpp"
 
+#include <algorithm>
 #include <limits>
 #include <set>
 
 #include "wpg/datasets/input/input_limits.hpp"
+#include "wpg/nearest_name.hpp"
 
 namespace wpg::datasets::detail {
 namespace {
+
+// The values of a choice, from its `expected` text ("a, b or c").
+std::vector<std::string> choiceNames(const WalkingChoice& choice) {
+  std::vector<std::string> names;
+  std::string text = choice.expected;
+  for (std::size_t at; (at = text.find(" or ")) != std::string::npos;) text.replace(at, 4, ", ");
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const std::size_t end = std::min(text.find(", ", start), text.size());
+    names.push_back(text.substr(start, end - start));
+    start = end + 2;
+  }
+  return names;
+}
 
 WalkingField numberField(const char* name, double WalkingParameters::*member) {
   return {name, member, nullptr, nullptr, nullptr};
@@ -155,8 +171,13 @@ void readWalkingFields(const Entries& entries, const std::string& prefix, bool r
       parameters->*field.integer =
           readInteger(node, key, std::numeric_limits<int>::min(), "an integer", source);
     } else if (field.choice) {
-      if (!node.IsScalar() || !field.choice->parse(node.Scalar(), parameters))
-        source.fail(key, field.choice->expected, node);
+      // Case ignored (`Command_Tangent`); a value near a known one is named in the message.
+      if (!node.IsScalar() || !field.choice->parse(asciiLower(node.Scalar()), parameters)) {
+        const std::string near =
+            node.IsScalar() ? didYouMean(node.Scalar(), choiceNames(*field.choice)) : "";
+        source.failWith(key, std::string("expected ") + field.choice->expected + ", got " +
+                                 describe(node) + near);
+      }
     } else {
       const Eigen::Matrix<double, 5, 1> values =
           readLengthVector<5>(node, key, "a list of 5 numbers [m]", source);

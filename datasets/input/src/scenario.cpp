@@ -21,6 +21,7 @@
 #include "resolved_scenario.hpp"
 #include "scenario_overrides.hpp"
 #include "scenario_sections.hpp"
+#include "scenario_warnings.hpp"
 #include "wpg/datasets/input/yaml_input.hpp"
 #include "wpg/walk_generator.hpp"
 
@@ -37,6 +38,7 @@ Scenario loadScenarioTree(YAML::Node root, const std::string& path,
   Source source(path);
   Scenario scenario;
   scenario.source_path = path;
+  double robot_com_height = 0.0;  // the robot's own, for the plausible range of the scenario's
   try {
     if (root.IsNull() && !overrides.empty()) root = YAML::Node(YAML::NodeType::Map);
     if (!root.IsMap()) {
@@ -71,6 +73,7 @@ Scenario loadScenarioTree(YAML::Node root, const std::string& path,
     if (!fs::is_regular_file(robot_file, ec)) source.fail("robot", robot_expected, robot_node);
     const Robot robot = loadRobot(robot_file.string());
     scenario.request.robot_mass = robot.mass;
+    robot_com_height = robot.walking.com_height;
 
     // walking := robot's parameters, then the scenario's (checked: known keys, given once).
     {
@@ -189,6 +192,7 @@ Scenario loadScenarioTree(YAML::Node root, const std::string& path,
   }
 
   scenario.resolved_yaml = emitResolved(scenario);
+  scenario.warnings = scenarioWarnings(scenario, robot_com_height, source);
   return scenario;
 }
 

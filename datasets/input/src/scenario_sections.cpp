@@ -7,6 +7,7 @@
 
 #include "parameter_fields.hpp"
 #include "wpg/datasets/input/input_limits.hpp"
+#include "wpg/nearest_name.hpp"
 
 namespace wpg::datasets::detail {
 namespace {
@@ -147,8 +148,11 @@ GeneratorSettings readGenerator(const YAML::Node& node, const Source& source) {
   if (present(entries, "algorithm")) {
     const YAML::Node algorithm = entry(entries, "algorithm");
     if (!algorithm.IsScalar() ||
-        !parseGeneratorAlgorithm(algorithm.Scalar(), &settings.algorithm)) {
-      source.fail("generator.algorithm", "nmpc or lmpc", algorithm);
+        !parseGeneratorAlgorithm(asciiLower(algorithm.Scalar()), &settings.algorithm)) {
+      source.failWith("generator.algorithm",
+                      "expected nmpc or lmpc, got " + describe(algorithm) +
+                          (algorithm.IsScalar() ? didYouMean(algorithm.Scalar(), {"nmpc", "lmpc"})
+                                                : std::string()));
     }
   }
   readSettingFields(entries, "generator", generatorSettingFields(), source, &settings);
@@ -169,8 +173,12 @@ PreviewControlSettings readFilterSettings(const YAML::Node& node, const Source& 
   readSettingFields(entries, "filter_settings", filterSettingFields(), source, &settings);
   if (present(entries, "mode")) {
     const YAML::Node mode = entry(entries, "mode");
-    if (!mode.IsScalar() || !parseDynamicFilterMode(mode.Scalar(), &loop->mode)) {
-      source.fail("filter_settings.mode", "online, offline or both", mode);
+    if (!mode.IsScalar() || !parseDynamicFilterMode(asciiLower(mode.Scalar()), &loop->mode)) {
+      source.failWith(
+          "filter_settings.mode",
+          "expected online, offline or both, got " + describe(mode) +
+              (mode.IsScalar() ? didYouMean(mode.Scalar(), {"online", "offline", "both"})
+                               : std::string()));
     }
   }
   if (present(entries, "reinitialize_wpg")) {

@@ -23,6 +23,7 @@
 #include <yaml-cpp/eventhandler.h>
 
 #include "wpg/datasets/input/input_limits.hpp"
+#include "wpg/nearest_name.hpp"
 
 namespace wpg::datasets::detail {
 namespace {
@@ -70,6 +71,14 @@ std::string childKey(const std::string& parent, const std::string& name) {
 
 std::string indexKey(const std::string& parent, std::size_t index) {
   return parent + "[" + std::to_string(index) + "]";
+}
+
+std::string renameOverrides(std::string message, const std::string& what) {
+  for (std::size_t at = message.find("--set '"); at != std::string::npos;
+       at = message.find("--set '", at + what.size())) {
+    message.replace(at, 5, what);
+  }
+  return message;
 }
 
 bool isQuoted(const YAML::Node& node) { return node.IsScalar() && node.Tag() == "!"; }
@@ -124,6 +133,10 @@ void Source::failWith(const std::string& key, const std::string& message) const 
 
 void Source::failFile(const std::string& message) const {
   throw InputError(oneLine(file_ + ": " + message));
+}
+
+std::string Source::warning(const std::string& key, const std::string& message) const {
+  return oneLine(file_ + ": key '" + key + "': " + message + overrideNote(key));
 }
 
 std::string Source::overrideNote(const std::string& key) const {
@@ -257,7 +270,8 @@ Entries readMap(const YAML::Node& node, const std::string& key,
     bool known = false;
     for (const std::string& k : known_keys) known = known || k == name;
     if (!known) {
-      source.failWith(full, "unknown key (a typo?); known keys" +
+      source.failWith(full, "unknown key (a typo?)" + didYouMean(name, known_keys) +
+                                "; known keys" +
                                 (key.empty() ? std::string() : " of '" + key + "'") + ": " +
                                 joinNames(known_keys));
     }

@@ -133,6 +133,14 @@ void writeStringAttribute(H5::H5Object& object, const std::string& name,
   attribute.write(type, value);
 }
 
+void writeLinesAttribute(H5::H5Object& object, const std::string& name,
+                         const std::vector<std::string>& lines) {
+  if (lines.empty()) return;
+  std::string text;
+  for (const std::string& line : lines) text += line + "\n";
+  writeStringAttribute(object, name, text);
+}
+
 void writeIntAttribute(H5::H5Object& object, const std::string& name, int value) {
   if (activeRecording()) return;
   H5::Attribute attribute =

@@ -66,7 +66,11 @@ H5::Group openGroup(H5::Group& parent, const std::string& name);
 // --- attributes ------------------------------------------------------------------------------
 
 void writeStringAttribute(H5::H5Object& object, const std::string& name,
-                          const std::string& value);  // variable-length UTF-8
+                          const std::string& value);
+// `lines` as one string attribute, each line ending with a line feed; no attribute when `lines`
+// is empty (a run without the loader's warnings reads as before they were recorded).
+void writeLinesAttribute(H5::H5Object& object, const std::string& name,
+                         const std::vector<std::string>& lines);  // variable-length UTF-8
 void writeIntAttribute(H5::H5Object& object, const std::string& name, int value);
 void writeDoubleAttribute(H5::H5Object& object, const std::string& name, double value);
 // A 1-D attribute of variable-length UTF-8 strings (h5py: an array of str).

@@ -5,9 +5,8 @@
 // hdf5_writing.cpp, the values of the `checks` group are computed in dataset_checks.cpp, the
 // timing summaries by the caller (analysis/).
 //
-// Why ~550 lines: one writer function per group of the schema (run, mpc, obstacles, checks,
-// multibody, timing), each a list of datasets with their units and descriptions; the pieces
-// that are not layout (HDF5 helpers, checks) already live in their own files.
+// Why ~600 lines: one writer per group of the schema (run, mpc, obstacles, checks, multibody,
+// timing), each a list of datasets with units and descriptions; the rest is in its own files.
 #include "wpg/datasets/storage/run_dataset.hpp"
 
 #include <cerrno>
@@ -550,6 +549,7 @@ H5::Group writeRunGroup(H5::Group& runs, const std::string& group_name, const Sc
   writeIntAttribute(run, "success", result.success ? 1 : 0);
   writeStringAttribute(run, "message", result.message);
   writeStringAttribute(run, "robot", scenario.robot);
+  writeLinesAttribute(run, "warnings", scenario.warnings);  // the loader's; none: no attribute
   writeTrajectory(run, result.trajectory);
   writeMpcLog(run, result.trajectory);
   writeObstacles(run, scenario.request.obstacles);

@@ -15,6 +15,7 @@
 
 #include "world_generators.hpp"
 #include "wpg/datasets/input/yaml_input.hpp"
+#include "wpg/nearest_name.hpp"
 
 namespace wpg::datasets {
 namespace {
@@ -86,8 +87,9 @@ WorldSpec readWorld(const YAML::Node& node, std::size_t index, const std::string
       const std::string name = item.first.IsScalar() ? item.first.Scalar() : "";
       if (std::find(known.begin(), known.end(), name) == known.end()) {
         source.failWith(detail::childKey(world.key, name),
-                        "unknown world generator or key '" + name + "': expected name, goal, and "
-                        "scenario or one of the generators " +
+                        "unknown world generator or key '" + name + "'" +
+                            wpg::didYouMean(name, known) +
+                            "; expected name, goal, and scenario or one of the generators " +
                             detail::joinNames(detail::worldGeneratorNames()));
       }
     }
@@ -318,14 +320,13 @@ ComparisonStudy loadComparisonStudy(const std::string& path, const BaseResolver&
       run.scenario = loadScenarioText(text, origin, overrides, robots_dir);
       run.scenario.walking.validate();
       run.scenario.request.validate();
+      for (std::string& warning : run.scenario.warnings) {
+        warning = path + ": " + described + ": " + detail::renameOverrides(warning, "override");
+      }
     } catch (const std::exception& e) {
       // The loader calls the variant's and `set`'s keys --set overrides.
-      std::string message = detail::oneLine(e.what());
-      for (std::size_t at = message.find("--set '"); at != std::string::npos;
-           at = message.find("--set '", at)) {
-        message.replace(at, 5, "override");
-      }
-      throw InputError(path + ": " + described + ": " + message);
+      throw InputError(path + ": " + described + ": " +
+                       detail::renameOverrides(detail::oneLine(e.what()), "override"));
     }
   });
   return comparison;

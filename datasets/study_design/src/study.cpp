@@ -344,15 +344,15 @@ Study loadStudy(const std::string& path, const BaseResolver& resolve_base,
       run.scenario = loadScenarioText(base_text, base_origin, overrides, robots_dir);
       run.scenario.walking.validate();
       run.scenario.request.validate();
+      // Its warnings, as its errors would read: the study, the run, the sweep.
+      for (std::string& warning : run.scenario.warnings) {
+        warning = path + ": run " + std::to_string(run.index) + " (" + described +
+                  "): " + detail::renameOverrides(warning, "sweep");
+      }
     } catch (const std::exception& e) {  // InputError, or invalid_argument of validate()
       // The loader calls the swept values --set overrides; here they come from the sweep.
-      std::string message = detail::oneLine(e.what());
-      for (std::size_t at = message.find("--set '"); at != std::string::npos;
-           at = message.find("--set '", at)) {
-        message.replace(at, 5, "sweep");
-      }
-      throw InputError(path + ": run " + std::to_string(run.index) + " (" + described + "): " +
-                       message);
+      throw InputError(path + ": run " + std::to_string(run.index) + " (" + described +
+                       "): " + detail::renameOverrides(detail::oneLine(e.what()), "sweep"));
     }
   });
   return study;

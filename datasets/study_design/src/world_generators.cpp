@@ -7,6 +7,7 @@
 
 #include "wpg/datasets/input/input_limits.hpp"
 #include "wpg/datasets/study_design/study.hpp"
+#include "wpg/nearest_name.hpp"
 
 namespace wpg::datasets::detail {
 namespace {
@@ -235,7 +236,8 @@ GeneratedWorld generateWorld(const std::string& generator, const YAML::Node& par
                               "a map with distance, width, offset, span, thickness, margin",
                               source));
   }
-  source.failWith(key, "unknown world generator '" + generator + "': expected one of " +
+  source.failWith(key, "unknown world generator '" + generator + "'" +
+                           didYouMean(generator, worldGeneratorNames()) + "; expected one of " +
                            joinNames(worldGeneratorNames()));
 }
 

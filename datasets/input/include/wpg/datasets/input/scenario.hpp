@@ -41,6 +41,11 @@ struct Scenario {
   // yaml-cpp: every key explicit (all walking parameters, all generator settings). Loading it
   // as a scenario file gives the same Scenario again (stored in every dataset).
   std::string resolved_yaml;
+  // What the loader warns about without refusing it (datasets/SCENARIOS.md, "Warnings"): a
+  // commanded velocity the generator clamps, a value outside the robot's plausible range. One
+  // line each, "FILE: key 'KEY': ...", like an InputError's; nothing of the walk depends on them.
+  // Recorded with the run (the `warnings` attribute, datasets/SCHEMA.md).
+  std::vector<std::string> warnings;
 };
 
 // Reads `path`, applies `overrides` and merges the robot found in `robots_dir`.

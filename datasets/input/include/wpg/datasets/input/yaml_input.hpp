@@ -36,6 +36,10 @@ std::string describe(const YAML::Node& node);
 // readers (PyYAML needs a dot: "10.0", "1.0e-05").
 std::string formatNumber(double value);
 
+// `message` with each "--set '" of a Source's note called `what` instead ("sweep '..."): a
+// study's values reach the loader as --set overrides.
+std::string renameOverrides(std::string message, const std::string& what);
+
 // --- where an error comes from: the file, and the --set overrides that changed its tree ----
 
 struct AppliedOverride {
@@ -55,6 +59,8 @@ class Source {
                          const YAML::Node& got) const;
   [[noreturn]] void failWith(const std::string& key, const std::string& message) const;
   [[noreturn]] void failFile(const std::string& message) const;
+  // A warning line in the errors' form: "<file>: key '<key>': <message>" (and the --set).
+  std::string warning(const std::string& key, const std::string& message) const;
 
  private:
   // Points at the --set that produced a bad value, since the file itself may be fine.
