@@ -5,9 +5,9 @@
 // hdf5_writing.cpp, the values of the `checks` group are computed in dataset_checks.cpp, the
 // timing summaries by the caller (analysis/).
 //
-// Why ~550 lines: one writer function per group of the schema (run, mpc, obstacles, checks,
-// multibody, timing), each a list of datasets with their units and descriptions; the pieces
-// that are not layout (HDF5 helpers, checks) already live in their own files.
+// Why ~600 lines: one writer function per group of the schema (run, mpc, obstacles, checks,
+// multibody, timing), each a list of datasets with their units and descriptions; the pieces that
+// are not layout (HDF5 helpers, checks, a goal walk's groups) live in their own files.
 #include "wpg/datasets/storage/run_dataset.hpp"
 
 #include <cerrno>
@@ -199,8 +199,7 @@ void writeMpcLog(H5::Group& run, const WalkTrajectory& trajectory) {
              "QPs of the iteration",
              nullptr});
   writeInts(mpc, "sqp_iterations", sqp_iterations,
-            {"1", nullptr, "QPs solved in this iteration (Gauss-Newton SQP iterations)",
-             nullptr});
+            {"1", nullptr, "QPs solved in this iteration (Gauss-Newton SQP iterations)", nullptr});
   H5::DataSet status_set = writeCodes(
       mpc, "status", status,
       {"1", nullptr, "outcome of the iteration, see the codes attribute", nullptr});
@@ -565,7 +564,8 @@ H5::Group writeRunGroup(H5::Group& runs, const std::string& group_name, const Sc
   }
   writeChecks(run, *checks, clearances);
   if (multibody) writeMultibody(run, scenario, *multibody);
-  if (goal) writeGoal(run, scenario, *goal);
+  if (goal) writeGoal(run, scenario, *goal);  // and below, the follower's commands (replay too)
+  if (scenario.goal.enabled) writeGoalCommands(run, result.trajectory);
   return run;
 }
 
