@@ -45,7 +45,7 @@ for row in rows: print(','.join(row[i] for i in keep))" "$1"
 }
 
 # Kill half-way: the delay is adjusted until the kill lands with some but not all runs done.
-delay=2
+delay=0.4
 partial=""
 for attempt in 1 2 3 4 5 6 7 8; do
   rm -rf killed
