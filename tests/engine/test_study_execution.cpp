@@ -203,7 +203,7 @@ TEST_F(StudyExecution, AComparisonHasACellPerWorldAndVariantFromItsSeeds) {
   expectSameFiles(path("study1.h5"), path("study2.h5"));
 }
 
-TEST_F(StudyExecution, AComparisonInSlicesMergedIsTheComparisonOfOneRun) {
+TEST_F(StudyExecution, AComparisonInSlicesMergedOrResumedIsTheComparisonOfOneRun) {
   std::ofstream(path("compare.yaml"))
       << "name: tiny_compare\n"
          "seeds: 2\n"
@@ -256,6 +256,25 @@ TEST_F(StudyExecution, AComparisonInSlicesMergedIsTheComparisonOfOneRun) {
       if (column.wall_time) continue;
       const double a = whole.cells[c].*column.field, b = merged[c].*column.field;
       EXPECT_TRUE(a == b || (std::isnan(a) && std::isnan(b))) << column.name;
+    }
+  }
+  expectSameFiles(path("whole.h5"), path("merged.h5"));
+
+  // Resumed when complete: nothing run, the table made again from the file, the same.
+  CountingObserver resumed_observer;
+  StudyOutput again;
+  again.path = path("whole.h5");
+  again.resume = true;
+  const wpg::engine::ComparisonOutcome resumed =
+      wpg::engine::runComparison(comparison, again, *executor, resumed_observer);
+  ASSERT_TRUE(resumed.complete);
+  EXPECT_EQ(resumed_observer.to_do, 0u);
+  EXPECT_EQ(resumed_observer.already, 4u);
+  ASSERT_EQ(resumed.cells.size(), whole.cells.size());
+  for (std::size_t c = 0; c < resumed.cells.size(); ++c) {
+    for (const wpg::analysis::ComparisonColumn& column : wpg::analysis::comparisonColumns()) {
+      const double a = whole.cells[c].*column.field, b = resumed.cells[c].*column.field;
+      EXPECT_TRUE(a == b || (std::isnan(a) && std::isnan(b))) << column.name;  // wall times too
     }
   }
   expectSameFiles(path("whole.h5"), path("merged.h5"));
