@@ -14,6 +14,7 @@
 #include "command_options.hpp"
 #include "error_messages.hpp"
 #include "exit_codes.hpp"
+#include "shard_option.hpp"
 #include "study_progress.hpp"
 #include "wpg/datasets/input/input_error.hpp"
 #include "wpg/datasets/storage/batch_index.hpp"
@@ -27,24 +28,6 @@ namespace fs = std::filesystem;
 
 namespace wpg::cli {
 namespace {
-
-// "K/N" -> slice K of N with 0 <= K < N.
-engine::ShardSlice parseShard(const std::string& text) {
-  const auto bad = [&]() {
-    return UsageError("--shard: expected K/N, slice K of N with 0 <= K < N (e.g. 0/4), got '" +
-                      text + "'");
-  };
-  const std::size_t slash = text.find('/');
-  if (slash == std::string::npos || slash == 0 || slash + 1 == text.size()) throw bad();
-  const std::string k = text.substr(0, slash), n = text.substr(slash + 1);
-  if (k.find_first_not_of("0123456789") != std::string::npos ||
-      n.find_first_not_of("0123456789") != std::string::npos || k.size() > 9 || n.size() > 9) {
-    throw bad();
-  }
-  const int shard = std::stoi(k), count = std::stoi(n);
-  if (count < 1 || shard >= count) throw bad();
-  return {shard, count};
-}
 
 engine::StudyRunHandling batchHandling() {
   engine::StudyRunHandling handling;
@@ -85,11 +68,8 @@ int batchCommand(const BatchOptions& options) {
   if (options.threads < 1) throw UsageError("-j: expected a number of worker threads >= 1");
   if (options.output.empty()) throw UsageError("-o: expected the batch file to write (OUT.h5)");
   const std::optional<engine::ShardSlice> slice =
-      options.shard.empty() ? std::nullopt : std::optional(parseShard(options.shard));
-  if (slice && engine::mpiLaunched()) {
-    throw UsageError("--shard: a slice runs without MPI (one task of a job array); under an MPI "
-                     "launcher the ranks share the study among themselves");
-  }
+      options.shard.empty() ? std::nullopt : std::optional(parseShardOption(options.shard));
+  if (slice) refuseShardUnderMpi();
   std::error_code ec;
   if (!fs::is_regular_file(options.study, ec)) {
     throw UsageError(options.study + ": cannot read the study file: no such file");

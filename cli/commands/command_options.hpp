@@ -52,7 +52,7 @@ struct BatchOptions {
 int batchCommand(const BatchOptions& options);
 
 // `wpg merge OUT.h5 SHARD...` (batch_index.hpp): the index of shard files, or of every *.h5 of
-// a folder given alone.
+// a folder given alone; of a comparison's shards (`wpg compare --shard`), with its table.
 struct MergeOptions {
   std::string output;
   std::vector<std::string> shards;
@@ -68,6 +68,8 @@ struct CompareOptions {
   bool plot = true;
   bool threads_given = false;  // -j on the command line (under MPI the default is 1 per rank)
   std::string ompl_log;        // --ompl-log DIR: OMPL benchmark logs, one per world
+  bool resume = false;         // finish DIR/study.h5 (or the slice's shard) of the same study
+  std::string shard;           // --shard K/N, empty: the whole study
 };
 int compareCommand(const CompareOptions& options);
 

@@ -1,11 +1,12 @@
-// `wpg compare STUDY.yaml -o DIR [-j N]`: a comparison study (datasets/SCENARIOS.md,
-// "Comparison studies": worlds x variants x seeds, each a walk to a goal) run by the engine
-// (comparison_run.hpp) on N worker threads, or on the ranks of an MPI job (DIR/study.h5 is then
-// the index of DIR/study.shards/): DIR/study.h5 (a group per run and /batch/summary, as
-// `wpg batch`, plus /compare/summary: one row per world x variant; datasets/SCHEMA.md),
-// DIR/summary.csv, DIR/summary.md and the figures of analysis/plot_compare.py; with
-// --ompl-log LOGS, LOGS/<world>.log in OMPL's benchmark log format
-// (comparison_benchmark_logs.hpp).
+// `wpg compare STUDY.yaml -o DIR [-j N] [--resume] [--shard K/N]`: a comparison study
+// (datasets/SCENARIOS.md, "Comparison studies": worlds x variants x seeds, each a walk to a goal)
+// run by the engine (comparison_run.hpp) on N worker threads, or on the ranks of an MPI job
+// (DIR/study.h5 is then the index of DIR/study.shards/): DIR/study.h5 (a group per run and
+// /batch/summary, as `wpg batch`, plus /compare/summary: one row per world x variant;
+// datasets/SCHEMA.md), DIR/summary.csv, DIR/summary.md and the figures of
+// analysis/plot_compare.py; with --ompl-log LOGS, LOGS/<world>.log in OMPL's benchmark log
+// format (comparison_benchmark_logs.hpp). --resume finishes DIR/study.h5 of the same study;
+// --shard K/N runs slice K of N into DIR/study.shards/slice-K-of-N.h5, joined by `wpg merge`.
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -16,10 +17,13 @@
 
 #include "analysis_scripts.hpp"
 #include "command_options.hpp"
+#include "comparison_files.hpp"
 #include "error_messages.hpp"
 #include "exit_codes.hpp"
+#include "shard_option.hpp"
 #include "study_progress.hpp"
 #include "wpg/datasets/input/input_error.hpp"
+#include "wpg/datasets/storage/batch_index.hpp"
 #include "wpg/datasets/storage/output_file.hpp"
 #include "wpg/engine/comparison_benchmark_logs.hpp"
 #include "wpg/engine/comparison_run.hpp"
@@ -54,11 +58,60 @@ void printComparison(const std::vector<analysis::ComparisonCell>& cells) {
   std::fflush(stdout);
 }
 
+// The shard file of slice K of N: DIR/study.shards/slice-K-of-N.h5 (the folder of an MPI
+// comparison's rank shards too; `wpg merge DIR/study.h5 DIR/study.shards` joins them).
+fs::path sliceFile(const fs::path& folder, const engine::ShardSlice& slice) {
+  return folder / "study.shards" /
+         ("slice-" + std::to_string(slice.index) + "-of-" + std::to_string(slice.count) + ".h5");
+}
+
 }  // namespace
+
+std::vector<datasets::PlannedOutput> comparisonSideOutputs(const std::string& study_file,
+                                                           const std::vector<std::string>& worlds,
+                                                           bool plot) {
+  const fs::path folder = fs::path(study_file).parent_path();
+  std::vector<datasets::PlannedOutput> outputs = {
+      {(folder / "summary.csv").string(), datasets::OutputKind::kText},
+      {(folder / "summary.md").string(), datasets::OutputKind::kText}};
+  if (plot) {
+    for (const std::string& name : {std::string("success_rates"), std::string("time_to_goal")})
+      outputs.push_back({(folder / (name + ".png")).string(), datasets::OutputKind::kPng});
+    for (const std::string& name : worlds)
+      outputs.push_back({(folder / ("top_" + name + ".png")).string(), datasets::OutputKind::kPng});
+  }
+  return outputs;
+}
+
+void finishComparisonFiles(const std::string& study_file, const engine::ComparisonLayout& layout,
+                           const std::vector<analysis::ComparisonCell>& cells, bool plot) {
+  const fs::path folder = fs::path(study_file).parent_path();
+  const engine::ComparisonTableFiles files =
+      engine::writeComparisonTableFiles(layout, cells, folder.string());
+  printComparison(cells);
+  std::cout << "wrote " << study_file << " (" << layout.runs << " runs), " << files.csv << ", "
+            << files.markdown;
+  if (plot) {
+    const std::string script = (fs::path(dataDirectory()) / "analysis" / "plot_compare.py").string();
+    const std::string where = folder.empty() ? std::string(".") : folder.string();
+    if (runAnalysisScript(script, {study_file, "-o", where}) == 0) {
+      std::cout << ", figures " << (folder / "*.png").string();
+    } else {
+      std::cout.flush();
+      printWarning("the study's figures could not be drawn (Python with h5py and matplotlib?)");
+    }
+  }
+}
 
 int compareCommand(const CompareOptions& options) {
   if (options.threads < 1) throw UsageError("-j: expected a number of worker threads >= 1");
   if (options.output.empty()) throw UsageError("-o: expected the folder to write (DIR)");
+  const std::optional<engine::ShardSlice> slice =
+      options.shard.empty() ? std::nullopt : std::optional(parseShardOption(options.shard));
+  if (slice) refuseShardUnderMpi();
+  if (slice && !options.ompl_log.empty()) {
+    throw UsageError("--ompl-log: not with --shard (the logs describe the whole study)");
+  }
   const auto started = std::chrono::steady_clock::now();  // the study's wall time, in the logs
   std::error_code ec;
   if (!fs::is_regular_file(options.study, ec)) {
@@ -67,8 +120,10 @@ int compareCommand(const CompareOptions& options) {
   // Everything about the input is checked before anything is written.
   const fs::path folder(options.output);
   const fs::path batch_file = folder / "study.h5";
+  // What this process writes the runs into: the study file, or the slice's shard file.
+  const fs::path runs_file = slice ? sliceFile(folder, *slice) : batch_file;
   datasets::ComparisonStudy comparison;
-  const std::optional<engine::MpiWorld> world = engine::checkInputWhileMpiStarts([&] {
+  const auto check_input = [&] {
     comparison = datasets::loadComparisonStudy(
         options.study, [](const std::string& base) { return resolveScenarioPath(base); },
         robotsDirectory(), options.threads);
@@ -83,16 +138,14 @@ int compareCommand(const CompareOptions& options) {
     if (fs::exists(folder, error) && !fs::is_directory(folder, error)) {
       throw UsageError("output '" + folder.string() + "' is not a directory");
     }
-    // Every file the command writes in DIR, held to the main output's rules (output_file.hpp).
-    std::vector<datasets::PlannedOutput> outputs = {
-        {batch_file.string(), datasets::OutputKind::kHdf5},
-        {(folder / "summary.csv").string(), datasets::OutputKind::kText},
-        {(folder / "summary.md").string(), datasets::OutputKind::kText}};
-    if (options.plot) {
-      for (const std::string& name : {std::string("success_rates"), std::string("time_to_goal")})
-        outputs.push_back({(folder / (name + ".png")).string(), datasets::OutputKind::kPng});
-      for (const std::string& name : comparison.worlds)
-        outputs.push_back({(folder / ("top_" + name + ".png")).string(), datasets::OutputKind::kPng});
+    // Every file the command writes in DIR, held to the main output's rules (output_file.hpp);
+    // a slice writes its shard file only.
+    std::vector<datasets::PlannedOutput> outputs = {{runs_file.string(), datasets::OutputKind::kHdf5}};
+    if (!slice) {
+      for (datasets::PlannedOutput& output :
+           comparisonSideOutputs(batch_file.string(), comparison.worlds, options.plot)) {
+        outputs.push_back(std::move(output));
+      }
     }
     datasets::checkOutputPaths(outputs, {options.study});
     engine::checkStudyRobotModels(comparison.study, robotsDirectory());
@@ -103,7 +156,13 @@ int compareCommand(const CompareOptions& options) {
         throw UsageError(std::string("--ompl-log: ") + e.what());
       }
     }
-  });
+  };
+  std::optional<engine::MpiWorld> world;
+  if (slice) {
+    check_input();  // a slice is one process, whatever launched it
+  } else {
+    world = engine::checkInputWhileMpiStarts(check_input);
+  }
   const datasets::Study& study = comparison.study;
 
   // What the runs' scenarios warn about (a clamped command, ...), once, from rank 0.
@@ -121,38 +180,29 @@ int compareCommand(const CompareOptions& options) {
       world ? engine::makeMpiExecutor(*world, options.threads_given ? options.threads : 1,
                                       robotsDirectory())
             : engine::makeThreadExecutor(options.threads, robotsDirectory());
-  engine::ComparisonOutcome outcome;
-  engine::ComparisonTableFiles files;
-  try {
-    outcome = engine::runComparison(comparison, batch_file.string(), *executor, progress);
-    if (outcome.complete) {
-      files = engine::writeComparisonTableFiles(comparison, outcome.cells, folder.string());
+  // An error while running (a full disk) leaves the runs written so far in the file, as
+  // `wpg batch` does: --resume finishes it.
+  const engine::StudyOutput output{runs_file.string(), options.resume, slice};
+  const engine::ComparisonOutcome outcome =
+      engine::runComparison(comparison, output, *executor, progress);
+  if (slice) {
+    std::size_t slice_runs = 0;
+    for (const datasets::StudyRun& run : study.runs) {
+      slice_runs += datasets::inShardSlice(run.index, slice->index, slice->count);
     }
-  } catch (const datasets::InputError&) {
-    throw;  // refused before anything was written (a file in use is another's)
-  } catch (...) {
-    // Could not complete (a full disk): a comparison is not resumed, its partial file is
-    // of no use; removed, as `wpg run` leaves no partial dataset.
-    if (!world) fs::remove(batch_file, ec);
-    throw;
+    std::cout << "wrote " << runs_file.string() << " (shard "
+              << datasets::shardSliceLabel(slice->index, slice->count) << ": " << slice_runs
+              << " of " << study.runs.size() << " runs; join the shards with `wpg merge "
+              << batch_file.string() << " " << runs_file.parent_path().string() << "`)\n";
+    return kExitSuccess;
   }
   if (!outcome.complete) {  // an MPI rank other than 0
     engine::finishMpi();
     return kExitSuccess;
   }
 
-  printComparison(outcome.cells);
-  std::cout << "wrote " << batch_file.string() << " (" << study.runs.size() << " runs), "
-            << files.csv << ", " << files.markdown;
-  if (options.plot) {
-    const std::string script = (fs::path(dataDirectory()) / "analysis" / "plot_compare.py").string();
-    if (runAnalysisScript(script, {batch_file.string(), "-o", folder.string()}) == 0) {
-      std::cout << ", figures " << (folder / "*.png").string();
-    } else {
-      std::cout.flush();
-      printWarning("the study's figures could not be drawn (Python with h5py and matplotlib?)");
-    }
-  }
+  finishComparisonFiles(batch_file.string(), engine::comparisonLayout(comparison), outcome.cells,
+                        options.plot);
   if (!options.ompl_log.empty()) {
     const std::chrono::duration<double> seconds = std::chrono::steady_clock::now() - started;
     std::vector<std::string> logs;

@@ -183,7 +183,9 @@ void registerMergeCommand(CLI::App& app, CommandAction& action) {
       "merge",
       "Join the shard files of a study (`wpg batch --shard K/N`, or the OUT.shards/ folder of an "
       "MPI batch) into OUT.h5, a batch file whose runs link into the shards (relative HDF5 "
-      "external links), with OUT.summary.csv/.md/.png.");
+      "external links), with OUT.summary.csv/.md/.png; the shards of a comparison (`wpg compare "
+      "--shard K/N`) into its study file, with /compare/summary and the files of `wpg compare` "
+      "beside it (exit status as `wpg compare`).");
   merge_app->add_option("output", merge.output, "Index file to write")->required()->type_name("OUT.h5");
   merge_app->add_option("shards", merge.shards, "Shard files, or a folder of them")
       ->required()
@@ -216,6 +218,15 @@ void registerCompareCommand(CLI::App& app, CommandAction& action) {
   compare_app->add_option("-j,--jobs", compare.threads, "Worker threads (per rank under MPI)")
       ->default_str("the number of cores; 1 per rank under MPI")
       ->type_name("N");
+  compare_app->add_flag("--resume", compare.resume,
+                        "Finish DIR/study.h5 of the same study: run only the runs it does not "
+                        "hold yet (refused, exit 2, when it holds another study; a missing file is "
+                        "started)");
+  compare_app->add_option("--shard", compare.shard,
+                          "Run only slice K of N (runs i with i mod N = K, 0 <= K < N) into "
+                          "DIR/study.shards/slice-K-of-N.h5; join the slices with `wpg merge "
+                          "DIR/study.h5 DIR/study.shards` (docs/studies.md)")
+      ->type_name("K/N");
   compare_app->add_flag("--no-plot", parsed->no_plot, "Do not draw the figures");
   compare_app->add_option("--ompl-log", compare.ompl_log,
                           "Also write OMPL benchmark logs into DIR, one per world (OMPL's "

@@ -94,6 +94,7 @@ WalkResult runWalkLoop(OnlineWalkingGenerator& generator, const WalkRequest& req
       const ControlSample& sample = generator.step();
       if (generator.fallen()) {
         out.mpc.push_back(generator.lastIteration());
+        out.mpc.back().command = command;
         result.success = false;
         result.message = "the robot fell at t = " + std::to_string(sample.time) +
                          " s: capture point " + std::to_string(generator.captureDistance()) +
@@ -106,6 +107,7 @@ WalkResult runWalkLoop(OnlineWalkingGenerator& generator, const WalkRequest& req
       if (sample.nmpc_sample) {
         const MpcIterationLog& log = generator.lastIteration();
         out.mpc.push_back(log);
+        out.mpc.back().command = command;  // the metrics of a goal walk track it (METRICS.md)
         if (result.success && iterationStatusFailsWalk(log.status)) {
           result.success = false;
           result.message = std::string("NMPC iteration at t = ") + std::to_string(sample.time) +

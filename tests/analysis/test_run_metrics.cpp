@@ -1,6 +1,7 @@
 // computeRunMetrics on hand-made trajectories whose metrics are known in closed form, the
 // quantile's interpolation, and the metric table (names unique, every field listed once).
 #include <cmath>
+#include <limits>
 #include <cstddef>
 #include <set>
 #include <string>
@@ -86,6 +87,54 @@ TEST(RunMetrics, HandMadeWalk) {
   EXPECT_NEAR(m.nmpc_time_max, 7e-5, 1e-15);
   EXPECT_NEAR(m.nmpc_time_p99, 1e-5 * (6.0 + 0.94), 1e-15);  // position 0.99 * 6 = 5.94
   EXPECT_NEAR(m.nmpc_time_std, 1e-5 * std::sqrt(28.0 / 6.0), 1e-15);
+}
+
+TEST(RunMetrics, VelocityErrorLeavesOutTheStartAndFollowsIterationCommands) {
+  wpg::WalkingParameters w;  // gait cycle W = 2 x 0.8 s = 320 samples of 5 ms
+  const std::size_t window = 320;
+  ASSERT_EQ(static_cast<std::size_t>(std::lround(2.0 * w.stepDuration() / w.control_period)),
+            window);
+  // One NMPC iteration every 0.1 s, commanding 0.2 m/s along x from 1 s on; the CoM starts
+  // 0.8 s later (the lag of a start from rest), then walks the command, 7 s in all.
+  const auto walk = [&](std::size_t samples) {
+    wpg::WalkTrajectory t = straightLine(samples, 0.0, Eigen::Vector2d::Zero(), w.control_period);
+    for (std::size_t i = 360; i < t.size(); ++i) {
+      t.com[i].x() = 0.2 * (t.time[i] - 1.8);
+      t.com_vel[i].x() = 0.2;
+    }
+    for (int k = 0; k < 70; ++k) {
+      wpg::MpcIterationLog log;
+      log.time = 0.1 * k;
+      log.command = Eigen::Vector3d(k < 10 ? 0.0 : 0.2, 0.0, 0.0);
+      t.mpc.push_back(log);
+    }
+    return t;
+  };
+  const auto commanded = wpg::analysis::VelocityReference::kIterationCommands;
+  const wpg::WalkRequest goal_walk;  // no schedule: a walk to a goal
+  wpg::WalkTrajectory t = walk(1400);
+  const RunMetrics m = computeRunMetrics(w, goal_walk, t, true, nullptr, commanded);
+  // The windows begin one cycle after the first command (1 s + 1.6 s) or later: the CoM walks
+  // the command in all of them. Those that began earlier had errors up to 0.1 (the lag).
+  EXPECT_NEAR(m.velocity_error_rms, 0.0, 1e-12);
+  EXPECT_NEAR(m.velocity_error_max, 0.0, 1e-12);
+  // The same walk on the request's schedule (none: zero): the CoM's 0.2 m/s is the error.
+  const RunMetrics scheduled = computeRunMetrics(w, goal_walk, t, true, nullptr);
+  EXPECT_NEAR(scheduled.velocity_error_max, 0.2, 1e-12);
+  // A command that changes mid-walk is measured as it was given: 0.3 m/s from 5 s on, which
+  // the CoM does not follow, an error ramping up to 0.1 over one cycle.
+  for (std::size_t k = 50; k < t.mpc.size(); ++k) t.mpc[k].command.x() = 0.3;
+  const RunMetrics changed = computeRunMetrics(w, goal_walk, t, true, nullptr, commanded);
+  EXPECT_NEAR(changed.velocity_error_max, 0.1, 1e-12);
+  EXPECT_GT(changed.velocity_error_rms, 0.01);
+  // Commands not known (a file that does not store them): NaN, never a guess.
+  t.mpc[3].command.setConstant(std::numeric_limits<double>::quiet_NaN());
+  const RunMetrics unknown = computeRunMetrics(w, goal_walk, t, true, nullptr, commanded);
+  EXPECT_TRUE(std::isnan(unknown.velocity_error_rms));
+  EXPECT_TRUE(std::isnan(unknown.velocity_error_max));
+  // Too short to hold a window after the start (3.5 s < 1 s + 2 cycles): NaN.
+  EXPECT_TRUE(std::isnan(
+      computeRunMetrics(w, goal_walk, walk(700), true, nullptr, commanded).velocity_error_rms));
 }
 
 TEST(RunMetrics, StepsObstaclesAndZmpError) {

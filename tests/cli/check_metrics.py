@@ -140,17 +140,31 @@ def recompute(run, scenario):
     # velocity error over a gait cycle (two steps)
     step_duration = (w["single_support_samples"] + w["double_support_samples"]) * w["sampling_period"]
     window = int(round(2 * step_duration / w["control_period"]))
-    reference = scenario["reference"]
+    # A walk to a goal: against the path follower's command of each NMPC iteration
+    # (mpc/command; unknown without it), else the scenario's reference schedule.
+    reference = scenario.get("reference") or []
+    goal = bool(scenario.get("goal"))
+    known = not goal or "command" in run["mpc"]
+    if goal and known:
+        iteration_times = run["mpc"]["time"][:]
+        iteration_commands = run["mpc"]["command"][:]
     ref = np.zeros((len(t), 2))
+    commands = np.zeros((len(t), 3))
     for i, ti in enumerate(t):
         v = np.zeros(3)
+        if goal and known:
+            k = max(int(np.searchsorted(iteration_times, ti + 1e-9, side="right")) - 1, 0)
+            v = iteration_commands[k]
         for entry in reference:
             if entry["t"] <= ti + 1e-9:
                 v = np.array(entry["v"], dtype=float)
+        commands[i] = v
         c, s = math.cos(yaw[i]), math.sin(yaw[i])
         ref[i] = (c * v[0] - s * v[1], s * v[0] + c * v[1])
+    # The start left out: windows beginning within one cycle of the first non-zero command.
+    moving = next((i for i in range(len(t)) if np.any(commands[i] != 0.0)), 0)
     errs = []
-    for i in range(window, len(t)):
+    for i in range(moving + 2 * window if known and window > 0 else len(t), len(t)):
         mean_v = (com[i, :2] - com[i - window, :2]) / (t[i] - t[i - window])
         mean_ref = ref[i - window + 1:i + 1].mean(axis=0)
         errs.append(np.hypot(*(mean_v - mean_ref)))

@@ -166,13 +166,16 @@ thread_limit)
   no_leftovers
   ;;
 compare_full_disk)
-  # The disk fills (a file size limit) while the comparison writes: exit 3, no crash, and no
-  # partial DIR/study.h5 left (a comparison is not resumed).
+  # The disk fills (a file size limit) while the comparison writes: exit 3, no crash, no
+  # table written; DIR/study.h5 is kept (as a batch file is) and --resume finishes it.
   status=0
   ( ulimit -f 50; exec "$wpg" compare compare.yaml -o cmp --no-plot ) >stdout 2>stderr || status=$?
   [[ $status == 3 ]] || fail "compare on a full disk: exit $status, expected 3 ($(tail -1 stderr))"
-  [[ ! -e cmp/study.h5 ]] || fail "a partial cmp/study.h5 was left"
+  [[ ! -e cmp/summary.csv ]] || fail "a comparison that could not complete wrote its table"
   no_leftovers
+  "$wpg" compare compare.yaml -o cmp --no-plot --resume >stdout 2>stderr ||
+    fail "--resume after the full disk: exit $? ($(tail -1 stderr))"
+  [[ -s cmp/summary.csv ]] || fail "--resume after the full disk wrote no table"
   # ... and a batch stops with exit 3 too (its file is kept to be resumed).
   status=0
   ( ulimit -f 100; exec "$wpg" batch study.yaml -o out.h5 --no-plot ) >stdout 2>stderr || status=$?

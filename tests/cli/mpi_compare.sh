@@ -2,7 +2,8 @@
 # mpi_compare.sh WPG MPIRUN STUDY: `wpg compare` under MPI (added when WPG_WITH_MPI):
 # `mpirun --oversubscribe -np 3` gives the same study.h5 as `wpg compare -j 1` (runs and the
 # /compare/summary table, wall times aside), the same summary.csv but its wall-time columns, and
-# a table that agrees with its runs (check_compare_table.py).
+# a table that agrees with its runs (check_compare_table.py); --resume under MPI of the complete
+# study runs nothing and gives the same study.h5 again (its table written anew from the runs).
 set -euo pipefail
 # shellcheck source=common.sh
 source "$(dirname "$0")/common.sh"
@@ -25,4 +26,9 @@ keep = [i for i, name in enumerate(rows[0]) if 'time' not in name or 'time_to_go
 for row in rows: print(','.join(row[i] for i in keep))" "$1"
 }
 diff <(keep one/summary.csv) <(keep mpi/summary.csv) || fail "summary.csv differs"
+"$mpirun" --oversubscribe -np 2 "$wpg" compare "$study" -o mpi --resume --no-plot >stdout 2>stderr ||
+  fail "mpirun -np 2 compare --resume: exit $? ($(cat stderr))"
+total="$("$PYTHON" -c "import h5py,sys; print(h5py.File(sys.argv[1])['batch/summary/done'].size)" one/study.h5)"
+grep -q "resuming, $total of $total" stderr || fail "--resume of a complete MPI study: $(cat stderr)"
+"$PYTHON" "$HERE/compare_batch_files.py" one/study.h5 mpi/study.h5 || fail "MPI --resume changed the study"
 echo "ok"

@@ -120,11 +120,13 @@ TEST_F(ScenarioRun, AFailedWalkIsAResultWithItsOutcome) {
 }
 
 TEST_F(ScenarioRun, TheSameScenarioGivesTheSameWalk) {
-  const Scenario scenario = shipped("walk_forward", {"duration=2"});
+  // 5 s: the velocity error's first window, one gait cycle after the start at 1 s, ends at 4.2 s.
+  const Scenario scenario = shipped("walk_forward", {"duration=5"});
   const RunResult a = wpg::engine::runScenario(scenario, {wpg_test::kRobotsDir, nullptr});
   const RunResult b = wpg::engine::runScenario(scenario, {wpg_test::kRobotsDir, nullptr});
   EXPECT_EQ(a.walk.result.trajectory.com, b.walk.result.trajectory.com);
   EXPECT_EQ(a.walk.result.trajectory.cop, b.walk.result.trajectory.cop);
+  EXPECT_TRUE(std::isfinite(a.metrics.velocity_error_rms));
   EXPECT_EQ(a.metrics.velocity_error_rms, b.metrics.velocity_error_rms);
   EXPECT_FALSE(a.replay.has_value());  // the scenario does not replay
   EXPECT_FALSE(a.footsteps.has_value());  // nor has obstacles

@@ -2,7 +2,8 @@
 // (wpg/engine/study_executor.hpp, comparison_run.hpp): every run of the study's expansion
 // (grid x random, worlds x variants x seeds) lands in the file under its name, the reports
 // reach the caller in study order, the files are the same for any number of threads, a resume
-// runs nothing twice, and a shard slice holds its runs only.
+// runs nothing twice, a shard slice holds its runs only, and a comparison's slices merged give
+// the comparison of one run.
 #include <cmath>
 #include <fstream>
 #include <string>
@@ -11,7 +12,9 @@
 #include <gtest/gtest.h>
 
 #include "../datasets/test_support.hpp"
+#include "wpg/datasets/input/input_error.hpp"
 #include "wpg/datasets/storage/batch_dataset.hpp"
+#include "wpg/datasets/storage/batch_index.hpp"
 #include "wpg/datasets/storage/dataset_diff.hpp"
 #include "wpg/datasets/storage/run_dataset_reader.hpp"
 #include "wpg/datasets/study_design/comparison_study.hpp"
@@ -198,4 +201,81 @@ TEST_F(StudyExecution, AComparisonHasACellPerWorldAndVariantFromItsSeeds) {
     }
   }
   expectSameFiles(path("study1.h5"), path("study2.h5"));
+}
+
+TEST_F(StudyExecution, AComparisonInSlicesMergedOrResumedIsTheComparisonOfOneRun) {
+  std::ofstream(path("compare.yaml"))
+      << "name: tiny_compare\n"
+         "seeds: 2\n"
+         "set: {duration: 4.0}\n"
+         "worlds:\n"
+         "  - {name: yaw, scenario: goal_with_yaw}\n"
+         "variants:\n"
+         "  straight: {planner.algorithm: none}\n"
+         "  rrt: {planner.algorithm: rrtconnect}\n";
+  const wpg::datasets::ComparisonStudy comparison = wpg::datasets::loadComparisonStudy(
+      path("compare.yaml"), resolveShipped, wpg_test::kRobotsDir);
+  const auto executor = wpg::engine::makeThreadExecutor(2, wpg_test::kRobotsDir);
+  CountingObserver whole_observer;
+  const wpg::engine::ComparisonOutcome whole =
+      wpg::engine::runComparison(comparison, path("whole.h5"), *executor, whole_observer);
+  ASSERT_TRUE(whole.complete);
+
+  // Slices 0/3 (runs 0, 3), 1/3 (run 1), 2/3 (run 2): shard files without a table.
+  std::vector<std::string> shards;
+  for (int k = 0; k < 3; ++k) {
+    CountingObserver observer;
+    StudyOutput output;
+    output.path = path("slice" + std::to_string(k) + ".h5");
+    output.shard = wpg::engine::ShardSlice{k, 3};
+    const wpg::engine::ComparisonOutcome slice =
+        wpg::engine::runComparison(comparison, output, *executor, observer);
+    EXPECT_FALSE(slice.complete);
+    EXPECT_EQ(observer.finished_runs, k == 0 ? 2u : 1u);
+    shards.push_back(output.path);
+  }
+  // A slice alone is not the whole comparison: its table is refused.
+  EXPECT_THROW(wpg::engine::writeComparisonSummary(shards[0],
+                                                   wpg::engine::comparisonLayout(comparison)),
+               wpg::datasets::InputError);
+  const wpg::engine::ComparisonLayout layout = wpg::engine::readComparisonLayout(shards[1]);
+  EXPECT_EQ(layout.worlds, comparison.worlds);
+  EXPECT_EQ(layout.variants, comparison.variants);
+  EXPECT_EQ(layout.seeds, comparison.seeds);
+  EXPECT_EQ(layout.runs, 4u);
+  std::vector<wpg::analysis::ComparisonCell> merged;
+  wpg::datasets::writeBatchIndex(path("merged.h5"), shards, wpg::datasets::IndexLayout::kLinks,
+                                 [&](const std::string& index) {
+                                   merged = wpg::engine::writeComparisonSummary(index, layout);
+                                 });
+  ASSERT_EQ(merged.size(), whole.cells.size());
+  for (std::size_t c = 0; c < merged.size(); ++c) {
+    EXPECT_EQ(merged[c].world, whole.cells[c].world);
+    EXPECT_EQ(merged[c].variant, whole.cells[c].variant);
+    for (const wpg::analysis::ComparisonColumn& column : wpg::analysis::comparisonColumns()) {
+      if (column.wall_time) continue;
+      const double a = whole.cells[c].*column.field, b = merged[c].*column.field;
+      EXPECT_TRUE(a == b || (std::isnan(a) && std::isnan(b))) << column.name;
+    }
+  }
+  expectSameFiles(path("whole.h5"), path("merged.h5"));
+
+  // Resumed when complete: nothing run, the table made again from the file, the same.
+  CountingObserver resumed_observer;
+  StudyOutput again;
+  again.path = path("whole.h5");
+  again.resume = true;
+  const wpg::engine::ComparisonOutcome resumed =
+      wpg::engine::runComparison(comparison, again, *executor, resumed_observer);
+  ASSERT_TRUE(resumed.complete);
+  EXPECT_EQ(resumed_observer.to_do, 0u);
+  EXPECT_EQ(resumed_observer.already, 4u);
+  ASSERT_EQ(resumed.cells.size(), whole.cells.size());
+  for (std::size_t c = 0; c < resumed.cells.size(); ++c) {
+    for (const wpg::analysis::ComparisonColumn& column : wpg::analysis::comparisonColumns()) {
+      const double a = whole.cells[c].*column.field, b = resumed.cells[c].*column.field;
+      EXPECT_TRUE(a == b || (std::isnan(a) && std::isnan(b))) << column.name;  // wall times too
+    }
+  }
+  expectSameFiles(path("whole.h5"), path("merged.h5"));
 }

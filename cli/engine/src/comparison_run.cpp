@@ -8,6 +8,9 @@
 #include <limits>
 #include <stdexcept>
 
+#include "wpg/datasets/input/input_error.hpp"
+#include "wpg/datasets/storage/batch_index.hpp"
+#include "wpg/datasets/storage/comparison_runs.hpp"
 #include "wpg/datasets/storage/comparison_table.hpp"
 #include "wpg/engine/study_summary.hpp"
 
@@ -85,35 +88,24 @@ std::vector<datasets::TableColumn> h5Table(const std::vector<analysis::Compariso
   return columns;
 }
 
-// A sample as the numbers a run's report carries (an MPI rank sends them to rank 0), and back:
-// [reached, time_to_goal, walked, route, steps, clearance, replans, n planning times, the
-// planning times, the NMPC solve times].
-std::vector<double> serializeSample(const analysis::ComparisonRunSample& sample) {
-  std::vector<double> values = {sample.goal_reached ? 1.0 : 0.0, sample.time_to_goal,
-                                sample.walked_length, sample.route_length, sample.steps,
-                                sample.clearance_min, static_cast<double>(sample.replans),
-                                static_cast<double>(sample.planning_times.size())};
-  values.insert(values.end(), sample.planning_times.begin(), sample.planning_times.end());
-  values.insert(values.end(), sample.nmpc_solve_times.begin(), sample.nmpc_solve_times.end());
-  return values;
+// What a run read back from the study file adds to its cell (as comparisonSampleOf made it
+// when the run finished: the summary's columns are its values, the times those of its groups).
+analysis::ComparisonRunSample sampleOf(const datasets::StoredComparisonRun& run) {
+  analysis::ComparisonRunSample sample;
+  sample.goal_reached = run.goal_reached;
+  sample.time_to_goal = run.time_to_goal;
+  sample.walked_length = run.path_length;
+  sample.route_length = run.route_length;
+  sample.steps = run.steps;
+  sample.clearance_min = run.clearance_min;
+  sample.replans = run.replans;
+  sample.planning_times = run.planning_times;
+  sample.nmpc_solve_times = run.nmpc_solve_times;
+  return sample;
 }
 
-analysis::ComparisonRunSample deserializeSample(const std::vector<double>& values) {
-  analysis::ComparisonRunSample sample;
-  if (values.size() < 8) {
-    throw std::runtime_error("a comparison sample of " + std::to_string(values.size()) + " values");
-  }
-  sample.goal_reached = values[0] != 0.0;
-  sample.time_to_goal = values[1];
-  sample.walked_length = values[2];
-  sample.route_length = values[3];
-  sample.steps = values[4];
-  sample.clearance_min = values[5];
-  sample.replans = static_cast<int>(values[6]);
-  const auto plans = static_cast<std::size_t>(values[7]);
-  sample.planning_times.assign(values.begin() + 8, values.begin() + 8 + static_cast<long>(plans));
-  sample.nmpc_solve_times.assign(values.begin() + 8 + static_cast<long>(plans), values.end());
-  return sample;
+std::size_t indexOf(const std::vector<std::string>& names, const std::string& name) {
+  return static_cast<std::size_t>(std::find(names.begin(), names.end(), name) - names.begin());
 }
 
 }  // namespace
@@ -160,15 +152,68 @@ std::vector<datasets::SummaryColumn> comparisonSummaryColumns() {
   return columns;
 }
 
-ComparisonOutcome runComparison(const datasets::ComparisonStudy& comparison,
-                                const std::string& batch_file, StudyExecutor& executor,
-                                StudyObserver& observer) {
-  const datasets::Study& study = comparison.study;
-  const std::size_t variants = comparison.variants.size();
+ComparisonLayout comparisonLayout(const datasets::ComparisonStudy& comparison) {
+  return {comparison.study.name, comparison.worlds, comparison.variants, comparison.seeds,
+          comparison.study.runs.size()};
+}
+
+ComparisonLayout readComparisonLayout(const std::string& study_file) {
+  ComparisonLayout layout;
+  layout.study_name = datasets::readShardContents(study_file).study_name;
+  const std::vector<datasets::StoredComparisonRun> runs = datasets::readComparisonRuns(study_file);
+  layout.runs = runs.size();
+  for (const datasets::StoredComparisonRun& run : runs) {
+    if (indexOf(layout.worlds, run.world) == layout.worlds.size()) layout.worlds.push_back(run.world);
+    if (indexOf(layout.variants, run.variant) == layout.variants.size()) {
+      layout.variants.push_back(run.variant);
+    }
+    const int seed = static_cast<int>(run.seed);
+    if (std::find(layout.seeds.begin(), layout.seeds.end(), seed) == layout.seeds.end()) {
+      layout.seeds.push_back(seed);
+    }
+  }
+  return layout;
+}
+
+std::vector<analysis::ComparisonCell> writeComparisonSummary(const std::string& study_file,
+                                                             const ComparisonLayout& layout) {
+  const std::size_t variants = layout.variants.size();
   // The samples of each world x variant cell, in study order (the same sums, the same bits,
-  // whatever executes the runs).
-  std::vector<std::vector<analysis::ComparisonRunSample>> samples(comparison.worlds.size() *
-                                                                  variants);
+  // whoever ran the runs and in how many goes).
+  std::vector<std::vector<analysis::ComparisonRunSample>> samples(layout.worlds.size() * variants);
+  const std::vector<datasets::StoredComparisonRun> runs = datasets::readComparisonRuns(study_file);
+  if (runs.size() != layout.runs) {
+    throw datasets::InputError(study_file + ": holds " + std::to_string(runs.size()) +
+                               " runs, expected " + std::to_string(layout.runs) +
+                               " (another comparison)");
+  }
+  for (const datasets::StoredComparisonRun& run : runs) {
+    const std::size_t w = indexOf(layout.worlds, run.world), v = indexOf(layout.variants, run.variant);
+    if (w == layout.worlds.size() || v == variants) {
+      throw datasets::InputError(study_file + ": run " + run.name + " is of world '" + run.world +
+                                 "' and variant '" + run.variant + "', not of this comparison");
+    }
+    if (!run.done) {
+      throw datasets::InputError(study_file + ": run " + run.name +
+                                 " is not in the file (an unfinished study)");
+    }
+    samples[w * variants + v].push_back(sampleOf(run));
+  }
+  std::vector<analysis::ComparisonCell> cells;
+  for (std::size_t w = 0; w < layout.worlds.size(); ++w) {
+    for (std::size_t v = 0; v < variants; ++v) {
+      cells.push_back(analysis::summarizeComparisonCell(layout.worlds[w], layout.variants[v],
+                                                        samples[w * variants + v]));
+    }
+  }
+  datasets::writeComparisonTable(study_file, layout.worlds, layout.variants, layout.seeds,
+                                 h5Table(cells));
+  return cells;
+}
+
+ComparisonOutcome runComparison(const datasets::ComparisonStudy& comparison,
+                                const StudyOutput& output, StudyExecutor& executor,
+                                StudyObserver& observer) {
   StudyRunHandling handling;
   handling.columns = comparisonSummaryColumns();
   handling.summary_values = [](const datasets::StudyRun& run, const RunResult& result) {
@@ -178,47 +223,42 @@ ComparisonOutcome runComparison(const datasets::ComparisonStudy& comparison,
     }
     return values;
   };
-  // The sample is made twice per run (summary row, then its cell): cheap next to the walk.
-  handling.report = [](const datasets::StudyRun& run, const RunResult& result) {
-    return serializeSample(comparisonSampleOf(run.scenario, result));
-  };
-  handling.collect = [&](std::size_t run, std::vector<double>&& report) {
-    const datasets::ComparisonRun& cell = comparison.runs[run];
-    samples[cell.world * variants + cell.variant].push_back(deserializeSample(report));
-  };
-  StudyOutput output;
-  output.path = batch_file;
   ComparisonOutcome outcome;
-  if (!executor.run(study, output, handling, observer)) return outcome;
-
-  for (std::size_t w = 0; w < comparison.worlds.size(); ++w) {
-    for (std::size_t v = 0; v < variants; ++v) {
-      outcome.cells.push_back(analysis::summarizeComparisonCell(
-          comparison.worlds[w], comparison.variants[v], samples[w * variants + v]));
-    }
-  }
-  datasets::writeComparisonTable(batch_file, comparison.worlds, comparison.variants,
-                                 comparison.seeds, h5Table(outcome.cells));
+  if (!executor.run(comparison.study, output, handling, observer) || output.shard) return outcome;
+  outcome.cells = writeComparisonSummary(output.path, comparisonLayout(comparison));
   outcome.complete = true;
   return outcome;
+}
+
+ComparisonOutcome runComparison(const datasets::ComparisonStudy& comparison,
+                                const std::string& batch_file, StudyExecutor& executor,
+                                StudyObserver& observer) {
+  StudyOutput output;
+  output.path = batch_file;
+  return runComparison(comparison, output, executor, observer);
+}
+
+ComparisonTableFiles writeComparisonTableFiles(const ComparisonLayout& layout,
+                                               const std::vector<analysis::ComparisonCell>& cells,
+                                               const std::string& folder) {
+  ComparisonTableFiles files;
+  files.csv = (fs::path(folder) / "summary.csv").string();
+  files.markdown = (fs::path(folder) / "summary.md").string();
+  writeTableCsv(textTable(layout.study_name, cells, 10), files.csv);
+  writeTableMarkdown(
+      textTable(layout.study_name, cells, 4), files.markdown, "Comparison " + layout.study_name,
+      std::to_string(layout.runs) + " runs: " + std::to_string(layout.worlds.size()) +
+          " worlds x " + std::to_string(layout.variants.size()) + " variants x " +
+          std::to_string(layout.seeds.size()) +
+          " seeds; one row per world x variant; columns: datasets/SCHEMA.md, \"Comparison "
+          "studies\".");
+  return files;
 }
 
 ComparisonTableFiles writeComparisonTableFiles(const datasets::ComparisonStudy& comparison,
                                                const std::vector<analysis::ComparisonCell>& cells,
                                                const std::string& folder) {
-  const datasets::Study& study = comparison.study;
-  ComparisonTableFiles files;
-  files.csv = (fs::path(folder) / "summary.csv").string();
-  files.markdown = (fs::path(folder) / "summary.md").string();
-  writeTableCsv(textTable(study.name, cells, 10), files.csv);
-  writeTableMarkdown(
-      textTable(study.name, cells, 4), files.markdown, "Comparison " + study.name,
-      std::to_string(study.runs.size()) + " runs: " + std::to_string(comparison.worlds.size()) +
-          " worlds x " + std::to_string(comparison.variants.size()) + " variants x " +
-          std::to_string(comparison.seeds.size()) +
-          " seeds; one row per world x variant; columns: datasets/SCHEMA.md, \"Comparison "
-          "studies\".");
-  return files;
+  return writeComparisonTableFiles(comparisonLayout(comparison), cells, folder);
 }
 
 }  // namespace wpg::engine

@@ -57,8 +57,9 @@ void evaluateRun(const datasets::Scenario& scenario, RunResult& result) {
       scenario, walk.trajectory, result.footsteps ? &result.footsteps->clearances : nullptr);
   analysis::ZmpErrorComparison zmp;
   if (result.replay) zmp = analysis::compareZmpError(result.replay->validation);
-  result.metrics = analysis::computeRunMetrics(scenario.walking, scenario.request, walk.trajectory,
-                                               walk.success, result.replay ? &zmp : nullptr);
+  result.metrics = analysis::computeRunMetrics(
+      scenario.walking, scenario.request, walk.trajectory, walk.success,
+      result.replay ? &zmp : nullptr, velocityReferenceOf(scenario));
 }
 
 datasets::MultibodyRecord multibodyRecordOf(const ReplayOutcome& replay) {

@@ -27,7 +27,8 @@ StoredRunAnalysis analyzeStoredRun(const std::string& path, const std::string& n
   }
   run.metrics = analysis::computeRunMetrics(run.scenario.walking, run.scenario.request,
                                             stored.result.trajectory, stored.result.success,
-                                            stored.zmp_error ? &zmp : nullptr);
+                                            stored.zmp_error ? &zmp : nullptr,
+                                            velocityReferenceOf(run.scenario));
   return run;
 }
 

@@ -193,6 +193,7 @@ ShardContents readShardContents(const std::string& path) {
     shard.study_name = readStringAttribute(file, "study_name");
     shard.study_fingerprint = readStringAttribute(file, "study_fingerprint");
     if (file.attrExists("shard")) shard.label = readStringAttribute(file, "shard");
+    if (file.attrExists("created_by")) shard.created_by = readStringAttribute(file, "created_by");
     const H5::Group table = file.openGroup(kSummaryPath);
     const H5::DataSet done = table.openDataSet("done");
     const std::vector<std::string> names = readStrings(table.openDataSet("name"));
@@ -214,7 +215,8 @@ ShardContents readShardContents(const std::string& path) {
 }
 
 IndexReport writeBatchIndex(const std::string& output, const std::vector<std::string>& shards,
-                            IndexLayout layout) {
+                            IndexLayout layout,
+                            const std::function<void(const std::string& index)>& complete) {
   if (shards.empty()) throw InputError("merge: expected at least one shard file");
   // Every check first: nothing is written for bad input.
   std::vector<ShardContents> contents;
@@ -308,54 +310,57 @@ IndexReport writeBatchIndex(const std::string& output, const std::vector<std::st
   // HDF5 1.10's H5Ocopy crashes (a segfault in its own clean-up) when a write inside it fails:
   // the room a copy needs is checked first, so that it never runs out inside H5Ocopy.
   if (layout == IndexLayout::kCopy) checkRoomForCopy(output, temporary.path(), contents);
-  std::lock_guard<std::mutex> lock(hdf5Mutex());
-  H5::Exception::dontPrint();
-  try {
-    H5::H5File index(temporary.path(), H5F_ACC_TRUNC);
-    std::vector<std::string> names;
-    {
-      const H5::H5File source(first.path, H5F_ACC_RDONLY);
-      copyAttributes(source.getId(), index.getId(), "shard");
-      if (H5Ocopy(source.getId(), "batch", index.getId(), "batch", H5P_DEFAULT, H5P_DEFAULT) < 0) {
-        throw H5::Exception("H5Ocopy", "cannot copy /batch from " + first.path);
+  {  // the index closed and the lock let go before `complete` reads it
+    std::lock_guard<std::mutex> lock(hdf5Mutex());
+    H5::Exception::dontPrint();
+    try {
+      H5::H5File index(temporary.path(), H5F_ACC_TRUNC);
+      std::vector<std::string> names;
+      {
+        const H5::H5File source(first.path, H5F_ACC_RDONLY);
+        copyAttributes(source.getId(), index.getId(), "shard");
+        if (H5Ocopy(source.getId(), "batch", index.getId(), "batch", H5P_DEFAULT, H5P_DEFAULT) < 0) {
+          throw H5::Exception("H5Ocopy", "cannot copy /batch from " + first.path);
+        }
+        names = readStrings(source.openDataSet(std::string(kSummaryPath) + "/name"));
       }
-      names = readStrings(source.openDataSet(std::string(kSummaryPath) + "/name"));
-    }
-    // The result columns: `done` and every column after it (batch_dataset.cpp's order).
-    const auto done_column = std::find(first_columns.begin(), first_columns.end(), "done");
-    const std::vector<std::string> results(done_column, first_columns.end());
-    H5::Group runs = index.createGroup("runs");
-    H5::Group table = index.openGroup(kSummaryPath);
-    for (std::size_t s = 0; s < contents.size(); ++s) {
-      if (rows[s].empty()) continue;
-      const H5::H5File source(contents[s].path, H5F_ACC_RDONLY);
-      if (s > 0) {
-        const H5::Group source_table = source.openGroup(kSummaryPath);
-        for (const std::string& column : results) {
-          H5::DataSet target = table.openDataSet(column);
-          copyRows(source_table.openDataSet(column), target, rows[s]);
+      // The result columns: `done` and every column after it (batch_dataset.cpp's order).
+      const auto done_column = std::find(first_columns.begin(), first_columns.end(), "done");
+      const std::vector<std::string> results(done_column, first_columns.end());
+      H5::Group runs = index.createGroup("runs");
+      H5::Group table = index.openGroup(kSummaryPath);
+      for (std::size_t s = 0; s < contents.size(); ++s) {
+        if (rows[s].empty()) continue;
+        const H5::H5File source(contents[s].path, H5F_ACC_RDONLY);
+        if (s > 0) {
+          const H5::Group source_table = source.openGroup(kSummaryPath);
+          for (const std::string& column : results) {
+            H5::DataSet target = table.openDataSet(column);
+            copyRows(source_table.openDataSet(column), target, rows[s]);
+          }
+        }
+        const std::string link_target = relativeTo(contents[s].path, output);
+        for (const hsize_t row : rows[s]) {
+          const std::string& name = names[row];
+          const std::string object = "/runs/" + name;
+          const herr_t status =
+              layout == IndexLayout::kLinks
+                  ? H5Lcreate_external(link_target.c_str(), object.c_str(), runs.getId(),
+                                       name.c_str(), H5P_DEFAULT, H5P_DEFAULT)
+                  : H5Ocopy(source.getId(), object.c_str(), runs.getId(), name.c_str(),
+                            H5P_DEFAULT, H5P_DEFAULT);
+          if (status < 0) throw H5::Exception("writeBatchIndex", "cannot add run " + name);
         }
       }
-      const std::string link_target = relativeTo(contents[s].path, output);
-      for (const hsize_t row : rows[s]) {
-        const std::string& name = names[row];
-        const std::string object = "/runs/" + name;
-        const herr_t status =
-            layout == IndexLayout::kLinks
-                ? H5Lcreate_external(link_target.c_str(), object.c_str(), runs.getId(),
-                                     name.c_str(), H5P_DEFAULT, H5P_DEFAULT)
-                : H5Ocopy(source.getId(), object.c_str(), runs.getId(), name.c_str(),
-                          H5P_DEFAULT, H5P_DEFAULT);
-        if (status < 0) throw H5::Exception("writeBatchIndex", "cannot add run " + name);
-      }
+      runs.close();
+      table.close();
+      index.close();
+    } catch (const H5::Exception& error) {
+      throw std::runtime_error(output + ": cannot write the index (" + error.getFuncName() + ": " +
+                               error.getDetailMsg() + ")");
     }
-    runs.close();
-    table.close();
-    index.close();
-  } catch (const H5::Exception& error) {
-    throw std::runtime_error(output + ": cannot write the index (" + error.getFuncName() + ": " +
-                             error.getDetailMsg() + ")");
   }
+  if (complete) complete(temporary.path());
   temporary.commit();
   return report;
 }

@@ -29,6 +29,9 @@ void writeComparisonTable(const std::string& path, const std::vector<std::string
   H5::Exception::dontPrint();
   try {
     H5::H5File file(path, H5F_ACC_RDWR);
+    // A resumed comparison that had finished (or was killed while writing its table): the
+    // table is made again from the runs, the same.
+    if (file.nameExists("compare")) file.unlink("compare");
     H5::Group compare = file.createGroup("compare");
     detail::writeStringListAttribute(compare, "worlds", worlds);
     detail::writeStringListAttribute(compare, "variants", variants);

@@ -9,6 +9,21 @@
 
 namespace wpg::datasets::detail {
 
+void writeGoalCommands(H5::Group& run, const wpg::WalkTrajectory& trajectory) {
+  std::vector<double> commands;
+  commands.reserve(3 * trajectory.mpc.size());
+  for (const MpcIterationLog& row : trajectory.mpc) {
+    if (!row.command.allFinite()) return;  // not known: nothing rather than NaN
+    commands.insert(commands.end(), {row.command.x(), row.command.y(), row.command.z()});
+  }
+  H5::Group mpc = openGroup(run, "mpc");
+  writeDoubles(mpc, "command", commands, 3,
+               {"m/s, m/s, rad/s", nullptr,
+                "velocity command of the path follower that the iteration's NMPC tracked, robot "
+                "frame (the frame of walking.heading_reference): vx, vy, omega",
+                "vx, vy, omega"});
+}
+
 void writeGoal(H5::Group& run, const Scenario& scenario, const GoalOutcome& goal) {
   const WalkGoal& g = scenario.goal.goal;
   const double nan = std::numeric_limits<double>::quiet_NaN();

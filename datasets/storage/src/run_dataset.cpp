@@ -198,8 +198,7 @@ void writeMpcLog(H5::Group& run, const WalkTrajectory& trajectory) {
              "QPs of the iteration",
              nullptr});
   writeInts(mpc, "sqp_iterations", sqp_iterations,
-            {"1", nullptr, "QPs solved in this iteration (Gauss-Newton SQP iterations)",
-             nullptr});
+            {"1", nullptr, "QPs solved in this iteration (Gauss-Newton SQP iterations)", nullptr});
   H5::DataSet status_set = writeCodes(
       mpc, "status", status,
       {"1", nullptr, "outcome of the iteration, see the codes attribute", nullptr});
@@ -565,7 +564,8 @@ H5::Group writeRunGroup(H5::Group& runs, const std::string& group_name, const Sc
   }
   writeChecks(run, *checks, clearances);
   if (multibody) writeMultibody(run, scenario, *multibody);
-  if (goal) writeGoal(run, scenario, *goal);
+  if (goal) writeGoal(run, scenario, *goal);  // and below, the follower's commands (replay too)
+  if (scenario.goal.enabled) writeGoalCommands(run, result.trajectory);
   return run;
 }
 

@@ -360,7 +360,15 @@ StoredRun readFile(const std::string& path, const std::string& run_name) {
                       " slack columns only, got " + std::to_string(relaxed[i]));
     }
     row.relaxed_families = static_cast<std::uint32_t>(relaxed[i]);
+    row.command.setConstant(std::numeric_limits<double>::quiet_NaN());  // unless stored
     t.mpc.push_back(row);
+  }
+  if (mpc.nameExists("command")) {  // a walk to a goal: the path follower's commands
+    const std::vector<double> command = log_reader.doubles("command", 3, &rows);
+    log_reader.expectRows("command", rows, k);
+    for (hsize_t i = 0; i < k; ++i) {
+      t.mpc[i].command = Eigen::Map<const Eigen::Vector3d>(command.data() + 3 * i);
+    }
   }
   return stored;
 }

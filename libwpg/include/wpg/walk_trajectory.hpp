@@ -58,6 +58,11 @@ struct MpcIterationLog {
   // positive slack; slack[k] its largest value over the iteration's QPs [family's unit].
   std::uint32_t relaxed_families = 0;
   std::array<double, kMaxConstraintFamilies> slack{};
+  // The velocity command this iteration's NMPC tracked, robot frame [vx m/s, vy m/s, omega
+  // rad/s], as the walk's command source gave it (walk_loop.hpp): the scenario's reference, or
+  // the path follower's command on a walk to a goal. NaN when unknown (read back from a file
+  // that does not store it: only walks to a goal store it, datasets/SCHEMA.md).
+  Eigen::Vector3d command = Eigen::Vector3d::Zero();
   double maxSlack() const;  // largest slack of any family (0 when nothing was relaxed)
 };
 

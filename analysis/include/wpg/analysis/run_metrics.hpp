@@ -20,7 +20,7 @@ struct RunMetrics {
   double path_length = 0.0;   // [m] length of the horizontal CoM path
   double steps = 0.0;         // [1] landed footsteps (initial feet not counted)
   double duration = 0.0;      // [s] covered by the samples
-  double velocity_error_rms = 0.0;  // [m/s] METRICS.md: gait-cycle mean velocity vs. reference
+  double velocity_error_rms = 0.0;  // [m/s] METRICS.md: gait-cycle mean velocity vs. command
   double velocity_error_max = 0.0;  // [m/s]
   double steady_vx = 0.0;     // [m/s] command_tracking.hpp: steady robot-frame CoM velocity
   double steady_vy = 0.0;     // [m/s]
@@ -50,10 +50,19 @@ struct RunMetrics {
   double nmpc_time_p99 = 0.0;        // [s] 99th percentile
 };
 
+// What the velocity metrics measure the CoM's velocity against (datasets/METRICS.md).
+enum class VelocityReference {
+  kSchedule,           // the request's `reference` schedule at each sample's time
+  kIterationCommands,  // each NMPC iteration's command (MpcIterationLog::command): a goal walk
+};
+
 // `zmp_error` may be null (the walk was not replayed: the four ZMP metrics are NaN).
+// `reference`: kIterationCommands for a walk to a goal (its request has no schedule; NaN
+// velocity metrics when its commands are not known), else kSchedule.
 RunMetrics computeRunMetrics(const WalkingParameters& walking, const WalkRequest& request,
                              const WalkTrajectory& trajectory, bool success,
-                             const ZmpErrorComparison* zmp_error);
+                             const ZmpErrorComparison* zmp_error,
+                             VelocityReference reference = VelocityReference::kSchedule);
 
 // One row per metric: its name (the key in JSON, the column in tables), unit, whether it is a
 // count, whether it is a wall time (differs from run to run of the same input), and the field.

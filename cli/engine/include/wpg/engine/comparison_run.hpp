@@ -3,6 +3,7 @@
 // (study_executor.hpp) into DIR/study.h5: a group per run and /batch/summary as `wpg batch`
 // writes them, with the goal columns, then /compare/summary, one row per world x variant
 // (datasets/SCHEMA.md, "Comparison studies"); and the same table as summary.csv and summary.md.
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -21,13 +22,41 @@ analysis::ComparisonRunSample comparisonSampleOf(const datasets::Scenario& scena
 // the goal's (reached, time to goal, route, clearance, replans, planning times).
 std::vector<datasets::SummaryColumn> comparisonSummaryColumns();
 
-// Runs the comparison with `executor` into `batch_file` and, on the process whose executor
-// returns true, writes /compare/summary there and returns the table's rows (world-major, in
-// study order); elsewhere returns no rows and `complete` false.
+// What a comparison's table is laid out by: the study's name, its worlds and variants (names,
+// study order) and seeds, and its number of runs (worlds x variants x seeds).
+struct ComparisonLayout {
+  std::string study_name;
+  std::vector<std::string> worlds, variants;
+  std::vector<int> seeds;
+  std::size_t runs = 0;
+};
+ComparisonLayout comparisonLayout(const datasets::ComparisonStudy& comparison);
+// The same from a comparison's study file (or one of its shards): the swept columns of
+// /batch/summary in study order (runs are worlds slowest, then variants, then seeds). Throws
+// datasets::InputError when it is not the study file of `wpg compare`.
+ComparisonLayout readComparisonLayout(const std::string& study_file);
+
+// The table of the comparison in `study_file` (every run done), computed from the runs the file
+// holds (datasets::readComparisonRuns: the summary's goal columns, the plans' and NMPC
+// iterations' times), written as /compare (replacing one there) and returned: a study run in one
+// go, resumed after a kill, or merged from shards gives the same table. Throws
+// datasets::InputError when a run is missing or the file is not of this comparison.
+std::vector<analysis::ComparisonCell> writeComparisonSummary(const std::string& study_file,
+                                                             const ComparisonLayout& layout);
+
+// Runs the comparison with `executor` into `output` (its runs not yet there with
+// output.resume; only slice output.shard, into a shard file, with a shard) and, on the process
+// whose executor returns true and without a shard, writes /compare/summary there
+// (writeComparisonSummary) and returns the table's rows (world-major, in study order);
+// otherwise returns no rows and `complete` false.
 struct ComparisonOutcome {
   bool complete = false;
   std::vector<analysis::ComparisonCell> cells;
 };
+ComparisonOutcome runComparison(const datasets::ComparisonStudy& comparison,
+                                const StudyOutput& output, StudyExecutor& executor,
+                                StudyObserver& observer);
+// The whole study into a new `batch_file`.
 ComparisonOutcome runComparison(const datasets::ComparisonStudy& comparison,
                                 const std::string& batch_file, StudyExecutor& executor,
                                 StudyObserver& observer);
@@ -36,6 +65,9 @@ ComparisonOutcome runComparison(const datasets::ComparisonStudy& comparison,
 struct ComparisonTableFiles {
   std::string csv, markdown;
 };
+ComparisonTableFiles writeComparisonTableFiles(const ComparisonLayout& layout,
+                                               const std::vector<analysis::ComparisonCell>& cells,
+                                               const std::string& folder);
 ComparisonTableFiles writeComparisonTableFiles(const datasets::ComparisonStudy& comparison,
                                                const std::vector<analysis::ComparisonCell>& cells,
                                                const std::string& folder);

@@ -68,6 +68,13 @@ void evaluateRun(const datasets::Scenario& scenario, RunResult& result);
 void writeRunDataset(const std::string& path, const datasets::Scenario& scenario,
                      const RunResult& result);
 
+// What the velocity metrics of the scenario's walk are measured against (datasets/METRICS.md):
+// the path follower's commands for a walk to a goal, else the scenario's reference.
+inline analysis::VelocityReference velocityReferenceOf(const datasets::Scenario& scenario) {
+  return scenario.goal.enabled ? analysis::VelocityReference::kIterationCommands
+                               : analysis::VelocityReference::kSchedule;
+}
+
 // What a dataset stores of a replay: the replay and its chain timing's summary (analysis/).
 datasets::MultibodyRecord multibodyRecordOf(const ReplayOutcome& replay);
 

@@ -13,6 +13,7 @@
 // drops the chunks' compression, filters stay in the source). One link per run keeps the run as
 // it was written, bit for bit, and h5py, `wpg analyze` and `wpg diff` follow links unchanged.
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -35,6 +36,7 @@ struct ShardContents {
   std::string path;
   std::string label;  // root attribute `shard`; empty for a plain batch file
   std::string study_name, study_fingerprint;
+  std::string created_by;  // root attribute: "wpg batch", "wpg compare"
   std::vector<bool> done;  // per run of the study
 };
 
@@ -56,8 +58,11 @@ struct IndexReport {
 // (output_file.hpp): nothing is written when it throws. Throws InputError (one line) when a
 // file is not a readable batch file, holds another study (name, fingerprint or summary columns
 // differ from the first's), or when runs are in none of the files (naming the missing slices
-// K/N when the shards are slices); std::runtime_error on I/O errors.
+// K/N when the shards are slices); std::runtime_error on I/O errors. `complete` (may be empty)
+// is called with the written index's temporary path before it is renamed over `output` (e.g. to
+// add a comparison's table): what it throws is thrown, and no index is left.
 IndexReport writeBatchIndex(const std::string& output, const std::vector<std::string>& shards,
-                            IndexLayout layout);
+                            IndexLayout layout,
+                            const std::function<void(const std::string& index)>& complete = {});
 
 }  // namespace wpg::datasets

@@ -16,9 +16,9 @@ struct TableColumn {
   std::vector<double> numbers;       // one per row otherwise
 };
 
-// Opens the batch file at `path` and writes /compare (attributes `worlds`, `variants`: the
-// names in study order; `seeds`) and /compare/summary, one 1-D dataset per column with `units`
-// and `description`, its `columns` attribute listing them in order. Throws
+// Opens the batch file at `path` and writes /compare, replacing one there (attributes `worlds`,
+// `variants`: the names in study order; `seeds`) and /compare/summary, one 1-D dataset per
+// column with `units` and `description`, its `columns` attribute listing them in order. Throws
 // std::invalid_argument when columns differ in length, std::runtime_error on I/O errors.
 void writeComparisonTable(const std::string& path, const std::vector<std::string>& worlds,
                           const std::vector<std::string>& variants, const std::vector<int>& seeds,
