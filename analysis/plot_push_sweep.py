@@ -3,7 +3,10 @@
 recovered force of a 100 ms push against the gait phase (fraction of the step since the swing
 foot's lift-off), one line per direction, one panel per walking situation; the paper's value
 (Sec. V-B) of each direction as a dashed line of the same colour; the end of single support
-(phase 0.875 for HRP-2's 0.7 s + 0.1 s step) as a grey band.
+(phase 0.875 for HRP-2's 0.7 s + 0.1 s step) as a grey band. When the file has the swing
+foot's peaks (columns swing_speed_max, swing_acceleration_max), a second row of panels plots
+the peak speed of the walk at the found force against the phase, with the sweep's limit
+(attribute max_swing_speed, when > 0) dotted.
 
 Reads /push_sweep with h5py only (layout: datasets/SCHEMA.md, "Push sweep files"), every
 column checked (wpg_file_reading.py); a bad file gives one line, `plot_push_sweep.py: FILE:
@@ -51,11 +54,14 @@ def main():
         force = np.abs(reader.dataset(table, "force", rows=rows))
         bound = reader.dataset(table, "at_upper_bound", kind="integer", rows=rows) == 1
         overrides = reader.attribute(f, "overrides", kind="texts", optional=True, default=[])
+        swing_speed = reader.dataset(table, "swing_speed_max", rows=rows, optional=True)
+        swing_limit = reader.attribute(f, "max_swing_speed", optional=True, default=0.0)
     if rows == 0:
         raise BadFile("%s: /push_sweep/situation: expected at least one row" % args.sweep_file)
     situations = list(dict.fromkeys(situation))
-    fig, axes = plt.subplots(1, len(situations), squeeze=False, sharey=True,
-                             figsize=(5.2 * len(situations) + 0.6, 4.0))
+    panels = 1 if swing_speed is None else 2
+    fig, axes = plt.subplots(panels, len(situations), squeeze=False, sharey="row",
+                             figsize=(5.2 * len(situations) + 0.6, 4.0 + 2.6 * (panels - 1)))
     for ax, name in zip(axes[0], situations):
         ax.axvspan(0.875, 1.0, color="0.9", label="double support")
         for d in COLOURS:
@@ -77,6 +83,23 @@ def main():
         ax.set_xlim(-0.02, 1.0)
         ax.set_ylim(0, max(force.max(), 160.0) * 1.12)
         ax.grid(alpha=0.3)
+    if swing_speed is not None:
+        for ax, name in zip(axes[1], situations):
+            for d in COLOURS:
+                rows = (situation == name) & (direction == d)
+                if not rows.any():
+                    continue
+                order = np.argsort(phase[rows])
+                marker = dict(marker="o") if d.endswith("+") else dict(marker="s", fillstyle="none")
+                ax.plot(phase[rows][order], swing_speed[rows][order], "-", color=COLOURS[d],
+                        label=d, **marker)
+            if swing_limit > 0:
+                ax.axhline(swing_limit, color="k", linestyle=":", linewidth=0.9)
+            ax.set_xlabel("phase (fraction of the step since lift-off)")
+            ax.set_xlim(-0.02, 1.0)
+            ax.set_ylim(0, max(float(swing_speed.max()), swing_limit, 1.0) * 1.12)
+            ax.grid(alpha=0.3)
+        axes[1][0].set_ylabel("swing foot's peak speed\nat that force [m/s]")
     axes[0][0].set_ylabel("largest recovered |force| of a 100 ms push [N]")
     axes[0][-1].legend(fontsize=8, loc="upper right")
     title = "Push recovery (dashed: the paper's Sec. V-B; triangles: the upper bound held)"

@@ -201,6 +201,10 @@ RunMetrics computeRunMetrics(const WalkingParameters& walking, const WalkRequest
   copMargin(walking, trajectory, &metrics);
   stepMargins(walking, trajectory, &metrics);
   metrics.obstacle_clearance_min = obstacleClearance(walking, request, trajectory);
+  WalkCheckReport swing;
+  swingFootPeaks(trajectory, swing);
+  metrics.swing_speed_max = trajectory.size() >= 3 ? swing.swing_foot_speed_max : kNaN;
+  metrics.swing_acceleration_max = trajectory.size() >= 3 ? swing.swing_foot_acceleration_max : kNaN;
   metrics.zmp_error_rms_before = zmp_error ? zmp_error->before.rms : kNaN;
   metrics.zmp_error_max_before = zmp_error ? zmp_error->before.max : kNaN;
   metrics.zmp_error_rms_after = zmp_error ? zmp_error->after.rms : kNaN;
@@ -229,6 +233,8 @@ const std::vector<MetricDefinition>& runMetricTable() {
       {"step_feasibility_margin_min", "m", false, false, &RunMetrics::step_feasibility_margin_min},
       {"yaw_bound_margin_min", "rad", false, false, &RunMetrics::yaw_bound_margin_min},
       {"obstacle_clearance_min", "m", false, false, &RunMetrics::obstacle_clearance_min},
+      {"swing_speed_max", "m/s", false, false, &RunMetrics::swing_speed_max},
+      {"swing_acceleration_max", "m/s^2", false, false, &RunMetrics::swing_acceleration_max},
       {"zmp_error_rms_before", "m", false, false, &RunMetrics::zmp_error_rms_before},
       {"zmp_error_max_before", "m", false, false, &RunMetrics::zmp_error_max_before},
       {"zmp_error_rms_after", "m", false, false, &RunMetrics::zmp_error_rms_after},

@@ -98,6 +98,8 @@ struct PushSweepOptions {
   std::vector<std::string> overrides;  // --set, applied to each situation's base scenario
   double max_force = 600.0;            // [N] upper end of the bisection (above every force we found, 490 N)
   double tolerance = 2.5;              // [N] bracket width at which it stops
+  double max_swing_speed = 2.0;        // [m/s] swing-foot limits of "recovered" (0: unchecked)
+  double max_swing_acceleration = 50.0;  // [m/s^2]
   bool plot = true;
 };
 int pushSweepCommand(const PushSweepOptions& options);

@@ -95,6 +95,12 @@ void checkOptions(const PushSweepOptions& options) {
       options.tolerance >= options.max_force) {
     throw UsageError("--tolerance: expected a force > 0 N and below --max-force");
   }
+  if (!std::isfinite(options.max_swing_speed) || options.max_swing_speed < 0.0)
+    throw UsageError("--max-swing-speed: expected a speed >= 0 m/s (0: not checked), got " +
+                     shortestNumber(options.max_swing_speed));
+  if (!std::isfinite(options.max_swing_acceleration) || options.max_swing_acceleration < 0.0)
+    throw UsageError("--max-swing-acceleration: expected an acceleration >= 0 m/s^2 (0: not "
+                     "checked), got " + shortestNumber(options.max_swing_acceleration));
   // Below ~1e-12 of the bracket, doubles no longer resolve it (2^-52 relative): a tolerance
   // the bisection could never reach is bad input, printed as given.
   const double finest = 1e-12 * options.max_force;
@@ -192,7 +198,9 @@ void writeJson(const std::string& path, const std::vector<datasets::PushSweepRow
         << ", \"phase\": " << shortestNumber(row.phase)
         << ", \"scenario\": " << jsonString(row.scenario) << ", \"t\": " << shortestNumber(row.t)
         << ", \"duration\": " << shortestNumber(row.duration) << ", \"force\": ["
-        << shortestNumber(row.fx) << ", " << shortestNumber(row.fy) << "]}"
+        << shortestNumber(row.fx) << ", " << shortestNumber(row.fy)
+        << "], \"swing_speed_max\": " << shortestNumber(row.swing_speed_max)
+        << ", \"swing_acceleration_max\": " << shortestNumber(row.swing_acceleration_max) << "}"
         << (i + 1 < rows.size() ? "," : "") << "\n";
   }
   out << "]\n";
@@ -214,6 +222,8 @@ int pushSweepCommand(const PushSweepOptions& options) {
   engine::PushSearchSettings settings;
   settings.max_force = options.max_force;
   settings.tolerance = options.tolerance;
+  settings.max_swing_speed = options.max_swing_speed;
+  settings.max_swing_acceleration = options.max_swing_acceleration;
   BatchProgress progress("push-sweep",
                          situations.size() * engine::pushDirections().size() *
                              static_cast<std::size_t>(options.phases),
@@ -235,6 +245,8 @@ int pushSweepCommand(const PushSweepOptions& options) {
   file.max_force = settings.max_force;
   file.tolerance = settings.tolerance;
   file.stronger_factor = settings.stronger_factor;
+  file.max_swing_speed = settings.max_swing_speed;
+  file.max_swing_acceleration = settings.max_swing_acceleration;
   datasets::writePushSweepFile(options.output, file);
   std::cout << "wrote " << options.output;
   if (!options.overrides.empty()) {

@@ -325,6 +325,12 @@ void registerPushSweepCommand(CLI::App& app, CommandAction& action) {
       ->type_name("N");
   push_sweep_app->add_option("--tolerance", push_sweep.tolerance, "Bracket width at which the bisection stops [N]")
       ->type_name("N");
+  push_sweep_app->add_option("--max-swing-speed", push_sweep.max_swing_speed,
+                             "A walk whose swing foot moves faster is not recovered [m/s]; 0: not checked")
+      ->type_name("V");
+  push_sweep_app->add_option("--max-swing-acceleration", push_sweep.max_swing_acceleration,
+                             "The same for its acceleration [m/s^2]; 0: not checked")
+      ->type_name("A");
   push_sweep_app->add_flag("--no-plot", parsed->no_plot, "Do not draw the figure");
   setExitCodes(push_sweep_app, "0 the table is written, 2 bad input (nothing written), " +
                                    std::string(kIncompleteWriting));

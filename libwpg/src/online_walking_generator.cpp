@@ -189,7 +189,7 @@ void OnlineWalkingGenerator::runNmpcSample(double t) {
     last_iteration_.status = IterationStatus::kFallen;
     return;
   }
-  last_iteration_ = generator_.update(t, command_);
+  last_iteration_ = generator_.update(t, command_, swing_started_ ? &swing_ : nullptr);
   const PatternGenerator::SamplePlan& plan = generator_.plan();
   if (plan.swinging) {
     if (!swing_started_) {

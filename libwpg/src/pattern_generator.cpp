@@ -6,6 +6,8 @@
 #include <utility>
 
 #include "wpg/obstacle_tangent.hpp"
+#include "wpg/nmpc/builtin_families.hpp"
+#include "wpg/swing_foot_reach.hpp"
 
 namespace wpg {
 
@@ -66,7 +68,8 @@ Eigen::Vector3d PatternGenerator::clampCommand(const Eigen::Vector3d& command) c
           std::clamp(command.z(), -w.max_angular_velocity, w.max_angular_velocity)};
 }
 
-const MpcIterationLog& PatternGenerator::update(double time, const Eigen::Vector3d& raw_command) {
+const MpcIterationLog& PatternGenerator::update(double time, const Eigen::Vector3d& raw_command,
+                                                const SwingFootTrajectory* swing) {
   const auto start = std::chrono::steady_clock::now();
   const Eigen::Vector3d command = clampCommand(raw_command);
   // The previous command held since the previous sample.
@@ -109,6 +112,7 @@ const MpcIterationLog& PatternGenerator::update(double time, const Eigen::Vector
   problem_.previous_landing = plannedStep(0);
   problem_.landing_time_left =
       (w.stepSamples() - 1 - gait_.phaseSample()) * w.sampling_period;
+  boundSwingReach(time, swing);
   problem_.obstacles = obstacles_.distance();
   if (gait_.standing()) {
     problem_.obstacle_slot.setConstant(-1);
@@ -151,6 +155,28 @@ bool PatternGenerator::advance(const Eigen::Vector3d& com_x, const Eigen::Vector
       gait_.endSample(plannedStep(0), time_ + model_.parameters().sampling_period);
   shiftPlan(end.step_completed);
   return end.landed;
+}
+
+// Swing-foot reach (swing_reach family): the landings the swing foot reaches from its state
+// at this sample within max_swing_speed and max_swing_acceleration. At the first sample of a
+// swing the foot is at rest on the ground: its trajectory starts here.
+void PatternGenerator::boundSwingReach(double time, const SwingFootTrajectory* swing) {
+  const WalkingParameters& w = model_.parameters();
+  problem_.swing_reach_bounded = false;
+  if (SwingReachRows::count(model_) == 0 || !gait_.swinging()) return;
+  const int m = gait_.phaseSample();
+  SwingFootTrajectory resting;
+  if (!swing) {
+    resting.start(gait_.footPose(otherSide(gait_.supportSide())),
+                  time - (m - gait_.liftOffSample()) * w.sampling_period,
+                  time + (w.stepSamples() - 1 - m) * w.sampling_period, w.step_height);
+    swing = &resting;
+  }
+  const SwingReach reach = swingReach(*swing, time, plannedStep(0).head<2>(), w.max_swing_speed,
+                                      w.max_swing_acceleration, w.control_period);
+  problem_.swing_reach_bounded = true;
+  problem_.swing_reach_lower = reach.lower;
+  problem_.swing_reach_upper = reach.upper;
 }
 
 // --- the NMPC's plan and its warm start (owned by the solver) ------------------------------

@@ -51,14 +51,25 @@ void SwingFootTrajectory::replan(double t, const Eigen::Vector3d& target) {
   plan_time_ = t;
 }
 
-Eigen::Vector4d SwingFootTrajectory::poseAt(double t) const {
+Eigen::Vector3d SwingFootTrajectory::heightState(double t) const {
   const double duration = landing_time_ - lift_off_time_;
-  const double s = duration > 0.0 ? std::clamp((t - lift_off_time_) / duration, 0.0, 1.0) : 1.0;
-  // eq. of the header: the quintic rest-to-rest profile on each half of the swing
+  if (!(duration > 0.0)) return Eigen::Vector3d::Zero();
+  const double s = std::clamp((t - lift_off_time_) / duration, 0.0, 1.0);
+  // eq. of the header: the quintic rest-to-rest profile f(x) on each half of the swing,
+  // x = 2 min(s, 1 - s), so dx/dt = +-2 / duration
+  const bool rising = s <= 0.5;
   const double x = 2.0 * std::min(s, 1.0 - s);
+  const double df = x * x * (30.0 + x * (-60.0 + 30.0 * x));
+  const double ddf = x * (60.0 + x * (-180.0 + 120.0 * x));
+  const double dxdt = (rising ? 2.0 : -2.0) / duration;
+  // z: the order of the products the regression references were written with
   const double z = step_height_ * x * x * x * (10.0 + x * (-15.0 + 6.0 * x));
-  return {axes_[0].evaluate(t - plan_time_)(0), axes_[1].evaluate(t - plan_time_)(0), z,
-          axes_[2].evaluate(t - plan_time_)(0)};
+  return {z, step_height_ * df * dxdt, step_height_ * ddf * dxdt * dxdt};
+}
+
+Eigen::Vector4d SwingFootTrajectory::poseAt(double t) const {
+  return {axes_[0].evaluate(t - plan_time_)(0), axes_[1].evaluate(t - plan_time_)(0),
+          heightState(t)(0), axes_[2].evaluate(t - plan_time_)(0)};
 }
 
 }  // namespace wpg

@@ -17,8 +17,33 @@ double supportViolation(const Eigen::Vector2d& p, SupportState support, const Ei
 
 }  // namespace
 
+void swingFootPeaks(const WalkTrajectory& tr, WalkCheckReport& report) {
+  report.swing_foot_speed_max = report.swing_foot_acceleration_max = 0.0;
+  report.swing_foot_speed_max_time = report.swing_foot_acceleration_max_time = 0.0;
+  for (std::size_t i = 1; i + 1 < tr.size(); ++i) {
+    const double before = tr.time[i] - tr.time[i - 1], after = tr.time[i + 1] - tr.time[i];
+    if (!(before > 0.0) || !(after > 0.0)) continue;
+    for (const std::vector<Eigen::Vector4d>* foot : {&tr.left_foot, &tr.right_foot}) {
+      const Eigen::Vector3d p0 = (*foot)[i - 1].head<3>(), p1 = (*foot)[i].head<3>(),
+                            p2 = (*foot)[i + 1].head<3>();
+      const double speed = ((p2 - p0) / (before + after)).norm();
+      const double acceleration =
+          ((p2 - p1) / after - (p1 - p0) / before).norm() / (0.5 * (before + after));
+      if (speed > report.swing_foot_speed_max) {
+        report.swing_foot_speed_max = speed;
+        report.swing_foot_speed_max_time = tr.time[i];
+      }
+      if (acceleration > report.swing_foot_acceleration_max) {
+        report.swing_foot_acceleration_max = acceleration;
+        report.swing_foot_acceleration_max_time = tr.time[i];
+      }
+    }
+  }
+}
+
 WalkCheckReport checkWalk(const WalkingParameters& w, const WalkTrajectory& tr) {
   WalkCheckReport report = checkSteps(w, tr);
+  swingFootPeaks(tr, report);
   report.cop_sample_violation = -1.0;
   report.cop_control_violation = -1.0;
   report.cop_margin_excursion = -1.0;

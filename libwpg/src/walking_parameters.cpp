@@ -191,6 +191,8 @@ void WalkingParameters::validate() const {
   requirePositive(max_step_yaw_change, "max_step_yaw_change");
   requireNonNegative(max_landing_speed, "max_landing_speed");
   requireNonNegative(max_landing_yaw_rate, "max_landing_yaw_rate");
+  requireNonNegative(max_swing_speed, "max_swing_speed");
+  requireNonNegative(max_swing_acceleration, "max_swing_acceleration");
   requirePositive(weight_velocity, "weight_velocity");
   requirePositive(weight_yaw, "weight_yaw");
   require(velocity_window_samples >= 1 && velocity_window_samples <= horizon_length,

@@ -75,6 +75,8 @@ TEST(RunMetrics, HandMadeWalk) {
   EXPECT_NEAR(m.cop_margin_mean, side, 1e-12);
   EXPECT_TRUE(std::isnan(m.step_feasibility_margin_min));  // no landed step
   EXPECT_TRUE(std::isnan(m.obstacle_clearance_min));        // no obstacle
+  EXPECT_EQ(m.swing_speed_max, 0.0);                         // the feet stand still
+  EXPECT_EQ(m.swing_acceleration_max, 0.0);
   EXPECT_TRUE(std::isnan(m.zmp_error_rms_before));          // not replayed
   EXPECT_EQ(m.nmpc_iterations, 7.0);
   EXPECT_DOUBLE_EQ(m.qp_iterations_total, 28.0);

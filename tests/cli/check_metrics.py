@@ -224,6 +224,27 @@ def recompute(run, scenario):
     else:
         m["obstacle_clearance_min"] = math.nan
 
+    # swing foot's peaks: central differences of the ankles (x, y, z), the larger foot's
+    if len(t) >= 3:
+        dt0, dt1 = t[1:-1] - t[:-2], t[2:] - t[1:-1]
+        speed, acc = [], []
+        for foot in (left, right):
+            p0, p1, p2 = foot[:-2, :3], foot[1:-1, :3], foot[2:, :3]
+            speed.append(np.linalg.norm((p2 - p0) / (dt0 + dt1)[:, None], axis=1))
+            acc.append(np.linalg.norm((p2 - p1) / dt1[:, None] - (p1 - p0) / dt0[:, None], axis=1)
+                       / (0.5 * (dt0 + dt1)))
+        m["swing_speed_max"] = float(max(v.max() for v in speed))
+        m["swing_acceleration_max"] = float(max(a.max() for a in acc))
+    else:
+        m["swing_speed_max"] = m["swing_acceleration_max"] = math.nan
+    # and the same peaks as the run's checks group stores them
+    if "checks" in run and "swing_foot_speed_max" in run["checks"].attrs and len(t) >= 3:
+        for key, attribute in (("swing_speed_max", "swing_foot_speed_max"),
+                               ("swing_acceleration_max", "swing_foot_acceleration_max")):
+            stored = float(run["checks"].attrs[attribute])
+            if not math.isclose(stored, m[key], rel_tol=RTOL, abs_tol=ATOL):
+                errors.append(f"checks/{attribute} = {stored}, {m[key]} recomputed")
+
     if "zmp_multibody" in run:
         before = np.hypot(*(cop - run["zmp_multibody"][:]).T)
         after = (np.hypot(*(cop - run["zmp_multibody_filtered"][:]).T)

@@ -2,8 +2,10 @@
 """check_push_sweep.py WPG SWEEP.h5 SWEEP.json K SITUATION...: the files of `wpg push-sweep`
 agree with each other and with the documented format, and the JSON's pushes replay: for one
 sagittal and one coronal entry (the largest recovered force of the first non-zero phase),
-`wpg run <scenario> --set 'pushes[0]={t: .., force: [..], duration: 0.1}'` exits 0 and the same
-push 15 % stronger exits 1 (the walk fails: a fall or a relaxed constraint).
+`wpg run <scenario> --set 'pushes[0]={t: .., force: [..], duration: 0.1}'` exits 0 with the swing
+foot within the sweep's limits (the run's checks/swing_foot_speed_max and _acceleration_max, equal
+to the entry's swing_speed_max and swing_acceleration_max), and the same push 15 % stronger is not
+recovered: it exits 1 (a fall or a relaxed constraint) or its swing foot breaks a limit.
 """
 import json
 import os
@@ -14,7 +16,8 @@ import tempfile
 import h5py
 import numpy as np
 
-KEYS = ["situation", "direction", "phase", "scenario", "t", "duration", "force"]
+KEYS = ["situation", "direction", "phase", "scenario", "t", "duration", "force",
+        "swing_speed_max", "swing_acceleration_max"]
 DIRECTIONS = ["sagittal+", "sagittal-", "coronal+", "coronal-"]
 
 
@@ -31,9 +34,16 @@ def replay(wpg, entry, factor, workdir):
     fx, fy = (factor * f for f in entry["force"])
     push = f"pushes[0]={{t: {entry['t']!r}, force: [{fx!r}, {fy!r}], duration: {entry['duration']!r}}}"
     out = os.path.join(workdir, "replay.h5")
+    if os.path.exists(out):
+        os.remove(out)
     run = subprocess.run([wpg, "run", entry["scenario"], "--no-plot", "-o", out, "--set", push],
                          stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
-    return run.returncode, push, run.stderr.strip()
+    peaks = None
+    if os.path.exists(out):
+        with h5py.File(out, "r") as f:
+            checks = next(iter(f["runs"].values()))["checks"].attrs
+            peaks = (float(checks["swing_foot_speed_max"]), float(checks["swing_foot_acceleration_max"]))
+    return run.returncode, push, peaks
 
 
 def main():
@@ -58,6 +68,7 @@ def main():
         if along < 0 or across != 0:
             fail(f"entry {i}: force {entry['force']} is not along {d}")
     with h5py.File(h5_path, "r") as f:
+        limits = (float(f.attrs["max_swing_speed"]), float(f.attrs["max_swing_acceleration"]))
         table = f["push_sweep"]
         columns = [text(c) for c in table.attrs["columns"]]
         for name in ["situation", "direction", "phase", "t", "force", "impulse"]:
@@ -71,6 +82,13 @@ def main():
                     table["t"][i] != entry["t"] or table["fx"][i] != entry["force"][0] or
                     table["fy"][i] != entry["force"][1]):
                 fail(f"row {i} of /push_sweep differs from JSON entry {i}")
+            if (table["swing_speed_max"][i] != entry["swing_speed_max"] or
+                    table["swing_acceleration_max"][i] != entry["swing_acceleration_max"]):
+                fail(f"row {i}: swing peaks differ from JSON entry {i}")
+            if any(entry["force"]) and any(
+                    limit > 0 and peak > limit for peak, limit in
+                    zip((entry["swing_speed_max"], entry["swing_acceleration_max"]), limits)):
+                fail(f"entry {i}: recovered with the swing foot beyond the limits {limits}")
             if not np.isclose(table["impulse"][i], 0.1 * table["force"][i]):
                 fail(f"row {i}: impulse {table['impulse'][i]} is not force x 0.1 s")
     workdir = tempfile.mkdtemp()
@@ -80,12 +98,18 @@ def main():
         if not candidates:
             fail(f"no {plane} entry with a recovered force")
         entry = candidates[0]
-        status, push, _ = replay(wpg, entry, 1.0, workdir)
+        status, push, peaks = replay(wpg, entry, 1.0, workdir)
         if status != 0:
             fail(f"wpg run {entry['scenario']} --set '{push}': exit {status}, expected 0 (recovered)")
-        status, push, _ = replay(wpg, entry, 1.15, workdir)
-        if status != 1:
-            fail(f"wpg run {entry['scenario']} --set '{push}': exit {status}, expected 1 (15 % stronger fails)")
+        if peaks != (entry["swing_speed_max"], entry["swing_acceleration_max"]):
+            fail(f"wpg run {entry['scenario']} --set '{push}': swing peaks {peaks}, the entry's "
+                 f"{entry['swing_speed_max']}, {entry['swing_acceleration_max']}")
+        status, push, peaks = replay(wpg, entry, 1.15, workdir)
+        beyond = peaks is not None and any(
+            limit > 0 and peak > limit for peak, limit in zip(peaks, limits))
+        if not (status == 1 or (status == 0 and beyond)):
+            fail(f"wpg run {entry['scenario']} --set '{push}': exit {status}, swing peaks {peaks}: "
+                 f"expected 1 or a swing foot beyond {limits} (15 % stronger fails)")
         checked += 1
     print(f"ok: {len(entries)} entries; {checked} pushes replayed (recovered, 15 % stronger fails)")
 

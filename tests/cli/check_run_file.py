@@ -15,7 +15,7 @@ STEPS = {"footsteps": (4,), "footstep_side": ()}
 MPC = ("time", "solve_time", "qp_iterations", "sqp_iterations", "status", "cost",
        "relaxed_families")
 # the NMPC's constraint families, one slack column each (libwpg/include/wpg/nmpc.hpp)
-FAMILIES = "cop, step_feasibility, yaw_bound, obstacle, landing_bound, landing_yaw_bound"
+FAMILIES = "cop, step_feasibility, yaw_bound, obstacle, landing_bound, landing_yaw_bound, swing_reach"
 ROOT_ATTRS = ("schema_version", "wpg_version", "scenario")
 
 errors = []
@@ -78,8 +78,8 @@ def main():
                     check(slack.attrs.get("columns") == FAMILIES,
                           "%s/mpc/slack columns %r, expected %r"
                           % (where, slack.attrs.get("columns"), FAMILIES))
-                    check(slack.shape == (k, 6), "%s/mpc/slack shape %s, expected %s"
-                          % (where, slack.shape, (k, 6)))
+                    check(slack.shape == (k, 7), "%s/mpc/slack shape %s, expected %s"
+                          % (where, slack.shape, (k, 7)))
                     check(np.all(slack[()] >= 0), where + "/mpc/slack negative")
                     relaxed = mpc["relaxed_families"][()]
                     # a family's bit is set exactly when its slack is positive (above rounding)

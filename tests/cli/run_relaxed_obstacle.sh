@@ -37,8 +37,8 @@ with h5py.File(sys.argv[1], "r") as f:
     slack = run["mpc/slack"][()]
     families = run["mpc/relaxed_families"][()]
     columns = [c.strip() for c in str(run["mpc/slack"].attrs["columns"]).split(",")]
-    assert columns == ["cop", "step_feasibility", "yaw_bound", "obstacle", "landing_bound", "landing_yaw_bound"], columns
-    assert slack.shape == (status.size, 6), slack.shape
+    assert columns == ["cop", "step_feasibility", "yaw_bound", "obstacle", "landing_bound", "landing_yaw_bound", "swing_reach"], columns
+    assert slack.shape == (status.size, 7), slack.shape
     assert "1=relaxed_obstacle" in run["mpc/status"].attrs["codes"]
     relaxed = status == 1  # 1 = relaxed_obstacle
     assert relaxed.any(), "no relaxed_obstacle row"

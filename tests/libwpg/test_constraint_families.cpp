@@ -41,7 +41,7 @@ using namespace wpg_test;
 TEST(ConstraintFamilies, ModelAssignsEachFamilyItsRows) {
   const NmpcModel model(WalkingParameters(), 3);
   const NmpcLayout& L = model.layout();
-  ASSERT_EQ(model.familyCount(), 6);
+  ASSERT_EQ(model.familyCount(), 6);  // swing_reach is registered only when on
   const char* names[6] = {"cop",      "step_feasibility", "yaw_bound",
                           "obstacle", "landing_bound",    "landing_yaw_bound"};
   const int edges = model.feasibilityPolygon(wpg::FootSide::kLeft).edgeCount();
@@ -91,6 +91,7 @@ TEST(ConstraintFamilies, EachFamilyMatchesFiniteDifferences) {
   w.max_step_yaw_change = 0.17;
   w.max_landing_speed = 0.4;  // landing bound on (off by default)
   w.max_landing_yaw_rate = 1.5;
+  w.max_swing_speed = 2.0;  // swing reach on (off in WalkingParameters' defaults)
   const NmpcModel model(w, 4);
   const NmpcLayout& L = model.layout();
   const wpg::ObstacleSet obstacles(wpg_test::threeObstacles());
@@ -104,6 +105,11 @@ TEST(ConstraintFamilies, EachFamilyMatchesFiniteDifferences) {
       problem.landing_bounded = true;
       problem.previous_landing = Vector3d(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1));
       problem.landing_time_left = 0.3;
+      problem.swing_reach_bounded = true;
+      for (int k = 0; k < problem.swing_reach_lower.size(); ++k) {
+        problem.swing_reach_lower(k) = rng.uniform(-1, 0);
+        problem.swing_reach_upper(k) = rng.uniform(0, 1);
+      }
       VectorXd U = randomU(model, problem, rng);
       for (int i = 0; i < L.steps; ++i) {  // steps 2 cm clear of every obstacle boundary
         for (int attempt = 0;; ++attempt) {
@@ -127,7 +133,8 @@ TEST(ConstraintFamilies, EachFamilyMatchesFiniteDifferences) {
       }
     }
   }
-  EXPECT_EQ(points, 6 * 3 * model.patternCount());
+  ASSERT_EQ(model.familyCount(), 7);  // the six and swing_reach
+  EXPECT_EQ(points, 7 * 3 * model.patternCount());
 }
 
 // A new family is one class and one registration: its rows come after the built-in ones, the

@@ -444,6 +444,21 @@ TEST(NmpcAllocation, OnlineStepStartStopCycle) {
   expectNoAllocation(r, "OnlineWalkingGenerator::step(), start/walk/curve/stop");
 }
 
+// The swing reach (robots/hrp2/walking.yaml's 2 m/s, 50 m/s^2): its bounds are computed from
+// the swing foot at every sample, from the trajectory in force or a foot at rest.
+TEST(NmpcAllocation, OnlineStepWithTheSwingReach) {
+  if (!counterAvailable()) GTEST_SKIP() << "no allocation counter (needs glibc or ASan)";
+  WalkingParameters w;
+  w.max_step_yaw_change = 0.17;
+  w.max_swing_speed = 2.0;
+  w.max_swing_acceleration = 50.0;
+  const Vector3d zero = Vector3d::Zero(), forward(0.2, 0.0, 0.0), curve(0.2, 0.0, 0.2);
+  const std::vector<Segment> cycle{{5, zero}, {25, forward}, {10, curve}, {30, zero}};
+  const LoopResult r = countOverOnlineLoop(w, {}, cycle, cycle);
+  EXPECT_EQ(r.patterns_seen, (1 << (w.stepSamples() + 1)) - 1);
+  expectNoAllocation(r, "OnlineWalkingGenerator::step() with the swing reach");
+}
+
 TEST(NmpcAllocation, OnlineStepWithCircleBoxAndPolygon) {
   if (!counterAvailable()) GTEST_SKIP() << "no allocation counter (needs glibc or ASan)";
   WalkingParameters w;

@@ -1,6 +1,9 @@
 // The push-recovery search of `wpg push-sweep` (push_recovery_search.hpp).
 #include "wpg/engine/push_recovery_search.hpp"
 
+#include <utility>
+
+#include "wpg/walk_checks.hpp"
 #include "wpg/walk_trajectory.hpp"
 
 namespace wpg::engine {
@@ -42,12 +45,22 @@ datasets::Scenario withPush(const datasets::Scenario& base, double t, const Eige
 }
 
 bool walkRecovers(const datasets::Scenario& scenario, double push_start,
-                  const RunSettings& settings) {
+                  const RunSettings& settings, const PushSearchSettings& limits,
+                  SwingPeaks* peaks) {
   const RunResult result = runScenario(scenario, settings);
+  const WalkTrajectory& trajectory = result.walk.result.trajectory;
+  WalkCheckReport report;
+  swingFootPeaks(trajectory, report);
+  if (peaks) *peaks = {report.swing_foot_speed_max, report.swing_foot_acceleration_max};
   if (result.outcome != RunOutcome::kSucceeded) return false;
-  for (const MpcIterationLog& row : result.walk.result.trajectory.mpc) {
+  for (const MpcIterationLog& row : trajectory.mpc) {
     if (row.time >= push_start && row.status != IterationStatus::kSolved) return false;
   }
+  if (limits.max_swing_speed > 0.0 && !(report.swing_foot_speed_max <= limits.max_swing_speed))
+    return false;
+  if (limits.max_swing_acceleration > 0.0 &&
+      !(report.swing_foot_acceleration_max <= limits.max_swing_acceleration))
+    return false;
   return true;
 }
 
@@ -101,11 +114,20 @@ PushSearchResult searchLargestRecoveredPush(const datasets::Scenario& base, doub
                                             const Eigen::Vector2d& unit,
                                             const PushSearchSettings& settings,
                                             const RunSettings& run_settings) {
-  return searchLargestRecoveredForce(
+  // The peaks of every recovered walk, to report those of the force found.
+  std::vector<std::pair<double, SwingPeaks>> recovered;
+  PushSearchResult result = searchLargestRecoveredForce(
       [&](double force) {
-        return walkRecovers(withPush(base, t, force * unit, settings.duration), t, run_settings);
+        SwingPeaks peaks;
+        const bool ok = walkRecovers(withPush(base, t, force * unit, settings.duration), t,
+                                     run_settings, settings, &peaks);
+        if (ok) recovered.emplace_back(force, peaks);
+        return ok;
       },
       settings);
+  for (const auto& [force, peaks] : recovered)
+    if (force == result.force) result.swing = peaks;
+  return result;
 }
 
 }  // namespace wpg::engine

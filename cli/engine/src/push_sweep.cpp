@@ -116,6 +116,8 @@ std::vector<datasets::PushSweepRow> runPushSweep(const std::vector<PushSituation
         row.impulse = row.force * row.duration;
         row.at_upper_bound = result.at_upper_bound;
         row.walks = result.walks;
+        row.swing_speed_max = result.swing.speed;
+        row.swing_acceleration_max = result.swing.acceleration;
         rows.push_back(row);
         if (finished) finished();
       });

@@ -122,6 +122,8 @@ const std::vector<WalkingField>& walkingFields() {
       numberField("max_step_yaw_change", &P::max_step_yaw_change),
       numberField("max_landing_speed", &P::max_landing_speed),
       numberField("max_landing_yaw_rate", &P::max_landing_yaw_rate),
+      numberField("max_swing_speed", &P::max_swing_speed),
+      numberField("max_swing_acceleration", &P::max_swing_acceleration),
       numberField("weight_velocity", &P::weight_velocity),
       numberField("weight_yaw", &P::weight_yaw),
       numberField("weight_cop", &P::weight_cop),

@@ -335,7 +335,7 @@ void writeChecks(H5::Group& run, const DatasetChecks& checked, const FootstepCle
   H5::Group checks = createGroup(run, "checks");
   writeStringAttribute(checks, "description",
                        "invariants of the walk; distances in m (<= 0: inside), yaw in rad, "
-                       "speed in m/s");
+                       "speed in m/s, acceleration in m/s^2");
   writeDoubleAttribute(checks, "cop_sample_violation", report.cop_sample_violation);
   writeDoubleAttribute(checks, "cop_sample_violation_time", report.cop_sample_violation_time);
   writeDoubleAttribute(checks, "cop_control_violation", report.cop_control_violation);
@@ -345,6 +345,11 @@ void writeChecks(H5::Group& run, const DatasetChecks& checked, const FootstepCle
   writeDoubleAttribute(checks, "max_step_yaw_change", report.max_step_yaw_change);
   writeIntAttribute(checks, "landed_steps", report.landed_steps);
   writeDoubleAttribute(checks, "speed_after_two_steps", report.speed_after_two_steps);
+  writeDoubleAttribute(checks, "swing_foot_speed_max", report.swing_foot_speed_max);
+  writeDoubleAttribute(checks, "swing_foot_speed_max_time", report.swing_foot_speed_max_time);
+  writeDoubleAttribute(checks, "swing_foot_acceleration_max", report.swing_foot_acceleration_max);
+  writeDoubleAttribute(checks, "swing_foot_acceleration_max_time",
+                       report.swing_foot_acceleration_max_time);
   if (checked.has_obstacles) writeObstacleChecks(checks, checked.footsteps, clearances);
 }
 

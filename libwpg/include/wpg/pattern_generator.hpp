@@ -17,6 +17,7 @@
 #include "wpg/nmpc.hpp"
 #include "wpg/obstacle_selector.hpp"
 #include "wpg/reference_builder.hpp"
+#include "wpg/swing_foot_trajectory.hpp"
 
 namespace wpg {
 
@@ -47,7 +48,11 @@ class PatternGenerator {
 
   // Solves the problem of the sample at `time` for a robot-frame command [vx, vy, omega]
   // (clamped to the robot's limits). Does not allocate once warmed up.
-  const MpcIterationLog& update(double time, const Eigen::Vector3d& command);
+  // `swing`: the swing foot's trajectory in force when a foot already swings (its state at
+  // `time` bounds the landing: swing_reach family, wpg/swing_foot_reach.hpp); null at the
+  // first sample of a swing, whose foot is at rest on the ground.
+  const MpcIterationLog& update(double time, const Eigen::Vector3d& command,
+                                const SwingFootTrajectory* swing = nullptr);
 
   // What to execute during the sampling period that starts at the last update().
   struct SamplePlan {
@@ -100,6 +105,7 @@ class PatternGenerator {
   void solve();
   void readPlan(double time);
   void shiftPlan(bool step_completed);
+  void boundSwingReach(double time, const SwingFootTrajectory* swing);
   // ------------------------------------------------------------------------------------------
 
   NmpcModel model_;

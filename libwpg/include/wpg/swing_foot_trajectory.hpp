@@ -35,6 +35,14 @@ class SwingFootTrajectory {
   void replan(double t, const Eigen::Vector3d& target);
   // x, y, z (sole height above the ground), yaw at time t.
   Eigen::Vector4d poseAt(double t) const;
+  // Position, velocity and acceleration of axis 0 = x, 1 = y, 2 = yaw at time t (the plan in
+  // force, which replan(t, same target) would continue unchanged).
+  Eigen::Vector3d axisState(int axis, double t) const { return axes_[axis].evaluate(t - plan_time_); }
+  // Height z, z', z'' at time t (the rise-and-fall profile above).
+  Eigen::Vector3d heightState(double t) const;
+  double liftOffTime() const { return lift_off_time_; }
+  double landingTime() const { return landing_time_; }
+  double stepHeight() const { return step_height_; }
 
  private:
   QuinticToRest axes_[3];  // x, y, yaw

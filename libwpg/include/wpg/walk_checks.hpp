@@ -28,7 +28,20 @@ struct WalkCheckReport {
   // Mean CoM speed along the initial heading from the second landing to the end [m/s]
   // (0 when fewer than two steps landed).
   double speed_after_two_steps = 0.0;
+  // The swing foot's peaks (swingFootPeaks below): the feet's largest speed [m/s] and
+  // acceleration [m/s^2], and when [s].
+  double swing_foot_speed_max = 0.0;
+  double swing_foot_speed_max_time = 0.0;
+  double swing_foot_acceleration_max = 0.0;
+  double swing_foot_acceleration_max_time = 0.0;
 };
+
+// The largest speed and acceleration of the ankles (left_foot, right_foot: x, y, z) by central
+// differences at the samples i = 1..n-2: v_i = (p_{i+1} - p_{i-1}) / (t_{i+1} - t_{i-1}),
+// a_i = ((p_{i+1} - p_i) / (t_{i+1} - t_i) - (p_i - p_{i-1}) / (t_i - t_{i-1})) /
+// ((t_{i+1} - t_{i-1}) / 2), their norms, the larger foot's (a foot on the ground is at rest,
+// so these are the swing foot's). Fills the four swing_foot_* fields of `report`.
+void swingFootPeaks(const WalkTrajectory& trajectory, WalkCheckReport& report);
 
 WalkCheckReport checkWalk(const WalkingParameters& parameters, const WalkTrajectory& trajectory);
 // The footstep part of checkWalk alone (feasibility_violation, max_step_yaw_change,

@@ -179,6 +179,13 @@ struct WalkingParameters {
   //     rejected without the bound makes the robot fall (docs/formulation.md).
   double max_landing_speed = 0.0;      // [m/s]
   double max_landing_yaw_rate = 0.0;   // [rad/s]
+  // --- swing-foot reach (wpg; swing_reach family, wpg/swing_foot_reach.hpp): while a foot
+  //     swings, its landing stays where the foot's re-planned quintic reaches it with the
+  //     ankle's speed and acceleration within these limits. 0 switches a limit off (both 0: no
+  //     rows, the paper's formulation). Without them a push late in the swing is recovered by
+  //     a swing foot at up to 8 m/s and 250 m/s^2 (docs/formulation.md, "Swing-foot reach").
+  double max_swing_speed = 0.0;         // [m/s]
+  double max_swing_acceleration = 0.0;  // [m/s^2]
   // --- cost weights, eq. (5) and Sec. V-D ----------------------------------------------------
   double weight_velocity = 2.5;        // alpha: linear velocity tracking (J1)
   // What J1 tracks (see the enum); kInstantaneous is the paper's eq. (5).

@@ -48,6 +48,10 @@ NmpcModel::NmpcModel(const WalkingParameters& parameters, int obstacle_slots)
   addConstraintFamily(makeObstacleConstraint());
   addConstraintFamily(makeLandingBoundConstraint());
   addConstraintFamily(makeLandingYawBoundConstraint());
+  // wpg's swing reach only when on: a model holds at most kMaxConstraintFamilies (the 8 bits
+  // of each iteration's relaxed-family mask), and the paper's formulation (both limits 0)
+  // keeps its six families and room for two of the caller's.
+  if (SwingReachRows::count(*this) > 0) addConstraintFamily(makeSwingReachConstraint());
 
   // J1's velocity: the mean over a window of K samples of the predicted velocities (K = 1:
   // the paper's instantaneous C'_{k+1}); the window of sample j reaches back to j - K + 1.

@@ -33,6 +33,8 @@ struct RunMetrics {
   double step_feasibility_margin_min = 0.0;  // [m] least landed step inside its polygon (eq. 14)
   double yaw_bound_margin_min = 0.0;         // [rad] max_step_yaw_change - largest yaw change
   double obstacle_clearance_min = 0.0;       // [m] least step-centre clearance (eq. 18-19)
+  double swing_speed_max = 0.0;         // [m/s] swing foot's peak speed (central differences)
+  double swing_acceleration_max = 0.0;  // [m/s^2] its peak acceleration
   double zmp_error_rms_before = 0.0;  // [m] multibody ZMP vs. CoP, before the filter
   double zmp_error_max_before = 0.0;
   double zmp_error_rms_after = 0.0;   // [m] after the filter (= before when not filtered)

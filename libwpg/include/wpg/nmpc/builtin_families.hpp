@@ -10,6 +10,8 @@
 //   obstacle            (18)-(19)        one per previewed step and obstacle slot
 //   landing_bound       Sec. III-C3      4 (x, y of step 0, upper, lower) when on
 //   landing_yaw_bound   Sec. III-C3      2 (yaw of step 0, upper, lower) when on
+//   swing_reach         wpg              16 (step 0 along 8 directions, upper, lower); the
+//                                        family is registered only when on
 #include <memory>
 
 #include "wpg/nmpc/constraint_family.hpp"
@@ -68,11 +70,24 @@ struct LandingYawBoundRows {
   static int row(bool upper) { return upper ? 0 : 1; }
 };
 
+// The landing (x, y of step 0) within the swing foot's reach (wpg/swing_foot_reach.hpp):
+// direction k = 0..7, upper then lower bound each; registered (NmpcModel's constructor) only
+// when max_swing_speed or max_swing_acceleration > 0.
+struct SwingReachRows {
+  static constexpr int kRows = 16;
+  static int count(const NmpcModel& model) {
+    const WalkingParameters& w = model.parameters();
+    return w.max_swing_speed > 0.0 || w.max_swing_acceleration > 0.0 ? kRows : 0;
+  }
+  static int row(int direction, bool upper) { return 2 * direction + (upper ? 0 : 1); }
+};
+
 std::unique_ptr<ConstraintFamily> makeCopConstraint();              // eq. (9)-(13)
 std::unique_ptr<ConstraintFamily> makeStepFeasibilityConstraint();  // eq. (14)-(15)
 std::unique_ptr<ConstraintFamily> makeYawBoundConstraint();         // eq. (16)-(17)
 std::unique_ptr<ConstraintFamily> makeObstacleConstraint();         // eq. (18)-(19)
 std::unique_ptr<ConstraintFamily> makeLandingBoundConstraint();     // Sec. III-C3: x, y
 std::unique_ptr<ConstraintFamily> makeLandingYawBoundConstraint();  // Sec. III-C3: yaw
+std::unique_ptr<ConstraintFamily> makeSwingReachConstraint();       // wpg: foot speed, accel.
 
 }  // namespace wpg

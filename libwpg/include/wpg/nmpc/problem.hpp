@@ -66,6 +66,13 @@ struct NmpcProblem {
   bool landing_bounded = false;
   Eigen::Vector3d previous_landing = Eigen::Vector3d::Zero();
   double landing_time_left = 0.0;  // [s]
+  // Swing-foot reach (swing_reach family, wpg/swing_foot_reach.hpp): while a foot swings,
+  // swing_reach_lower(k) <= d_k . landing (x, y) <= swing_reach_upper(k), d_k =
+  // SwingReach::direction(k): the landings its replan reaches within the foot's speed and
+  // acceleration limits. Unset (no row active) when no foot swings.
+  bool swing_reach_bounded = false;
+  Eigen::Matrix<double, 8, 1> swing_reach_lower = Eigen::Matrix<double, 8, 1>::Zero();
+  Eigen::Matrix<double, 8, 1> swing_reach_upper = Eigen::Matrix<double, 8, 1>::Zero();
 };
 
 }  // namespace wpg

@@ -19,6 +19,9 @@ struct PushSweepRow {
   double duration = 0.1;  // [s] of the push
   bool at_upper_bound = false;  // the search's upper bound itself was recovered
   int walks = 0;          // walks the search generated for this row
+  // The swing foot's peak speed [m/s] and acceleration [m/s^2] of the walk at `force`
+  // (checks/swing_foot_*_max of that run; 0 when no force was recovered).
+  double swing_speed_max = 0.0, swing_acceleration_max = 0.0;
 };
 
 struct PushSweepFile {
@@ -30,6 +33,8 @@ struct PushSweepFile {
   double max_force = 0.0;                    // [N] the search's upper bound
   double tolerance = 0.0;                    // [N] the search's bracket width at the end
   double stronger_factor = 1.15;             // a push this much stronger than `force` fails
+  double max_swing_speed = 0.0;              // [m/s] swing-foot limit of "recovered" (0: none)
+  double max_swing_acceleration = 0.0;       // [m/s^2] the same for its acceleration
 };
 
 // Throws std::runtime_error when the file cannot be written (nothing left behind).
