@@ -238,4 +238,26 @@ bool World::isStateValid(double x, double y, double radius) const {
   return true;
 }
 
+double World::freeFraction(const Eigen::Vector2d& from, const Eigen::Vector2d& to,
+                           double radius) const {
+  // Distances from FCL are ~1e-8 m off: each advance keeps kSlack of them, and a clearance
+  // below kStop counts as touching (an approach at a grazing angle would otherwise take ever
+  // shorter advances). At most kMaxAdvances advances: beyond, the rest of the motion is refused.
+  constexpr double kSlack = 1e-7;
+  constexpr double kStop = 2e-7;
+  constexpr int kMaxAdvances = 100000;
+  const double length = (to - from).norm();
+  if (!from.allFinite() || !to.allFinite() || !std::isfinite(radius)) return 0.0;
+  double travelled = 0.0;
+  for (int advance = 0; advance < kMaxAdvances; ++advance) {
+    const Eigen::Vector2d point =
+        length > 0.0 ? Eigen::Vector2d(from + (to - from) * (travelled / length)) : from;
+    const double room = clearance(point) - radius;
+    if (room < kStop) return length > 0.0 ? travelled / length : 0.0;
+    travelled += room - kSlack;
+    if (travelled >= length) return 1.0;
+  }
+  return travelled / length;
+}
+
 }  // namespace wpg::planning

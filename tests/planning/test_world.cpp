@@ -425,3 +425,46 @@ TEST(ObstacleChecks, PerStepMinimaAndSummary) {
 }
 
 }  // namespace
+
+namespace {
+
+// A motion whose straight line passes `gap` outside (> 0) or inside (< 0) the rounded corner of
+// the unit box grown by the disc's radius, tangent to its corner's circle at 45 degrees.
+struct CornerMotion {
+  Vector2d from, to;
+};
+CornerMotion cornerMotion(double radius, double gap) {
+  // The corner (0.5, 0.5); the line x + y = 1 + sqrt(2) (radius + gap) passes radius + gap from it.
+  const double c = 1.0 + std::sqrt(2.0) * (radius + gap);
+  return {Vector2d(c / 2.0 - 0.4, c / 2.0 + 0.4), Vector2d(c / 2.0 + 0.4, c / 2.0 - 0.4)};
+}
+
+}  // namespace
+
+// A motion is checked whole, not at sampled points: a line that cuts the grown corner by 10 um
+// passes every check at 2 cm (the points the planner once checked), and is still refused.
+TEST(World, AMotionThatGrazesAGrownCornerBetweenSampledPointsIsRefused) {
+  const World world({box(Vector2d::Zero(), Vector2d(1.0, 1.0), 0.0)});
+  constexpr double kRadius = 0.1;
+  const CornerMotion cut = cornerMotion(kRadius, -1e-5);
+  const double length = (cut.to - cut.from).norm();
+  const int pieces = static_cast<int>(std::ceil(length / 0.02));
+  for (int k = 0; k <= pieces; ++k) {
+    const Vector2d p = cut.from + (cut.to - cut.from) * k / pieces;
+    EXPECT_TRUE(world.isStateValid(p.x(), p.y(), kRadius)) << "sampled point " << k;
+  }
+  const double cut_fraction = world.freeFraction(cut.from, cut.to, kRadius);
+  EXPECT_LT(cut_fraction, 0.5);  // it reaches the corner at the middle of the motion
+  EXPECT_GT(cut_fraction, 0.49);
+  // Every point before the fraction is clear.
+  for (int k = 0; k <= 1000; ++k) {
+    const Vector2d p = cut.from + (cut.to - cut.from) * (cut_fraction * k / 1000.0);
+    EXPECT_GE(world.clearance(p) - kRadius, -1e-9) << k;
+  }
+  // 1 um outside: clear all the way; a motion starting inside: nothing of it.
+  const CornerMotion clear = cornerMotion(kRadius, 1e-6);
+  EXPECT_EQ(world.freeFraction(clear.from, clear.to, kRadius), 1.0);
+  EXPECT_EQ(world.freeFraction(Vector2d(0.55, 0.0), Vector2d(2.0, 0.0), kRadius), 0.0);
+  EXPECT_EQ(world.freeFraction(Vector2d(2.0, 0.0), Vector2d(2.0, 0.0), kRadius), 1.0);
+  EXPECT_EQ(World({}).freeFraction(Vector2d(0.0, 0.0), Vector2d(5.0, 0.0), kRadius), 1.0);
+}

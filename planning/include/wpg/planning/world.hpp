@@ -59,6 +59,14 @@ class World : public wpg::ObstacleDistanceOracle {
   // (x, y) stays out of every obstacle grown by its margin (clearance >= radius).
   bool isStateValid(double x, double y, double radius) const;
 
+  // For a planner's motion validator: the fraction in [0, 1] of the straight motion from
+  // `from` to `to` over which a disc of `radius` [m] stays out of every grown obstacle, the
+  // whole motion checked, not sampled points of it (1: all of it; 0: not even `from`). By
+  // conservative advancement: clearance is a distance, so the disc is free over the next
+  // clearance(p) - radius of the motion from p; it stops 0.1 um short of an obstacle.
+  double freeFraction(const Eigen::Vector2d& from, const Eigen::Vector2d& to,
+                      double radius) const;
+
  private:
   struct Impl;
   std::shared_ptr<const Impl> impl_;
