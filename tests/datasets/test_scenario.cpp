@@ -251,8 +251,9 @@ TEST(ShippedScenarios, FilterModeKeys) {
   EXPECT_EQ(again.filter_loop.mode, wpg::DynamicFilterMode::kBoth);
   EXPECT_TRUE(again.filter_loop.reinitialize_wpg);
   // closed_loop and its own online weight, read back through the resolved YAML.
-  const Scenario closed = loadShipped(
-      "walk_forward", {"filter=true", "filter_settings={mode: closed_loop, online_input_weight: 2e-4}"});
+  const Scenario closed =
+      loadShipped("walk_forward", {"filter=true", "filter_settings={mode: closed_loop, "
+                                                  "online_input_weight: 2e-4}"});
   EXPECT_EQ(closed.filter_loop.mode, wpg::DynamicFilterMode::kClosedLoop);
   EXPECT_EQ(closed.filter_loop.online_input_weight, 2e-4);
   EXPECT_EQ(closed.filter_settings.input_weight, 1e-6);  // the offline pass's R is its own key
