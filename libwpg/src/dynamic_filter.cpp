@@ -24,13 +24,14 @@ const char* dynamicFilterModeName(DynamicFilterMode mode) {
     case DynamicFilterMode::kOnline: return "online";
     case DynamicFilterMode::kOffline: return "offline";
     case DynamicFilterMode::kBoth: return "both";
+    case DynamicFilterMode::kClosedLoop: return "closed_loop";
   }
   return "online";
 }
 
 bool parseDynamicFilterMode(const std::string& name, DynamicFilterMode* out) {
-  for (DynamicFilterMode mode :
-       {DynamicFilterMode::kOnline, DynamicFilterMode::kOffline, DynamicFilterMode::kBoth}) {
+  for (DynamicFilterMode mode : {DynamicFilterMode::kOnline, DynamicFilterMode::kOffline,
+                                 DynamicFilterMode::kBoth, DynamicFilterMode::kClosedLoop}) {
     if (name == dynamicFilterModeName(mode)) {
       *out = mode;
       return true;
@@ -46,6 +47,20 @@ void OnlineDynamicFilter::reset() {
   state_x_.setZero();
   state_y_.setZero();
   error_sum_x_ = error_sum_y_ = 0.0;
+  absorbed_x_.setZero();
+  absorbed_y_.setZero();
+}
+
+void OnlineDynamicFilter::absorbIncrement(Eigen::Vector3d& increment_x,
+                                          Eigen::Vector3d& increment_y) {
+  // The position only: the WPG's velocity and acceleration are left alone, so that the CoM
+  // sent (WPG + sentCorrection) keeps the velocity and acceleration it had. Absorbed whole, the
+  // velocity and acceleration would be counted twice (by the WPG from now on, and by the
+  // correction, which moves on with them), a kink of the CoM sent at every NMPC iteration.
+  increment_x = Eigen::Vector3d(state_x_(0) - absorbed_x_(0), 0.0, 0.0);
+  increment_y = Eigen::Vector3d(state_y_(0) - absorbed_y_(0), 0.0, 0.0);
+  absorbed_x_(0) = state_x_(0);
+  absorbed_y_(0) = state_y_(0);
 }
 
 void OnlineDynamicFilter::absorbCorrection(Eigen::Vector3d& absorbed_x,

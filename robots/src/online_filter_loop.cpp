@@ -72,9 +72,14 @@ class FilterLoop : public ControlLoopObserver {
     const Clock::time_point start = Clock::now();
     // Fig. 3: the WPG restarts from the corrected state (its CoM + the filter's correction),
     // which the correction then no longer needs to carry.
-    if (settings_.reinitialize_wpg && generator.atSamplingInstant() && generator.time() > 0.0) {
+    if ((settings_.reinitialize_wpg || settings_.closed_loop) && generator.atSamplingInstant() &&
+        generator.time() > 0.0) {
       Eigen::Vector3d absorbed_x, absorbed_y;
-      filter_.absorbCorrection(absorbed_x, absorbed_y);
+      if (settings_.closed_loop) {
+        filter_.absorbIncrement(absorbed_x, absorbed_y);
+      } else {
+        filter_.absorbCorrection(absorbed_x, absorbed_y);
+      }
       generator.reinitializeCom(generator.comStateX() + absorbed_x,
                                 generator.comStateY() + absorbed_y);
     }
@@ -90,7 +95,8 @@ class FilterLoop : public ControlLoopObserver {
     if (sample.nmpc_sample || window_offset_ >= sub_samples_) previewError(generator, sample, stage, mark);
 
     // One period of the preview controller on the error it knows now.
-    const Eigen::Vector3d correction(filter_.correctionX()(0), filter_.correctionY()(0), 0.0);
+    const Eigen::Vector3d correction(filter_.sentCorrectionX()(0), filter_.sentCorrectionY()(0),
+                                     0.0);
     const Eigen::Vector3d com = sample.com_position + correction;
     zmp_before_.push_back(window_zmp_.row(window_offset_).transpose());
     filter_.step(window_error_.bottomRows(window_rows_ - window_offset_));
@@ -114,7 +120,8 @@ class FilterLoop : public ControlLoopObserver {
     const std::size_t ticks = com_filtered_.size();
     for (std::size_t i = ticks; i < walk.size(); ++i) {
       const Eigen::Vector3d com =
-          walk.com[i] + Eigen::Vector3d(filter_.correctionX()(0), filter_.correctionY()(0), 0.0);
+          walk.com[i] +
+          Eigen::Vector3d(filter_.sentCorrectionX()(0), filter_.sentCorrectionY()(0), 0.0);
       const Eigen::Index row = std::min<Eigen::Index>(window_offset_, window_rows_ - 1);
       zmp_before_.push_back(window_zmp_.row(row).transpose());
       solveOutput(walk.left_foot[i], walk.right_foot[i], com, walk.free_flyer_yaw[i]);
@@ -175,8 +182,9 @@ class FilterLoop : public ControlLoopObserver {
     for (Eigen::Index k = iteration + 1; k < static_cast<Eigen::Index>(walk.mpc.size()); ++k)
       out.chain_stage_time(k, 0) = walk.mpc[static_cast<std::size_t>(k)].solve_time;
     out.chain_time = out.chain_stage_time.rowwise().sum();
-    out.filter_mode = dynamicFilterModeName(DynamicFilterMode::kOnline);
-    out.wpg_reinitialized = settings_.reinitialize_wpg;
+    out.filter_mode = dynamicFilterModeName(settings_.closed_loop ? DynamicFilterMode::kClosedLoop
+                                                                  : DynamicFilterMode::kOnline);
+    out.wpg_reinitialized = settings_.reinitialize_wpg || settings_.closed_loop;
     return out;
   }
 
@@ -285,11 +293,21 @@ class FilterLoop : public ControlLoopObserver {
 
 }  // namespace
 
+PreviewControlSettings onlinePreviewSettings(const PreviewControlSettings& filter_settings,
+                                             const DynamicFilterLoopSettings& loop) {
+  PreviewControlSettings out = filter_settings;
+  out.input_weight = loop.online_input_weight;
+  return out;
+}
+
 OnlineFilterRun runOnlineFilterLoop(const RobotModel& model, const WalkingParameters& parameters,
                                     const WalkRequest& request,
                                     const OnlineFilterLoopSettings& settings,
                                     const ConstraintFamilies& extra_families) {
   parameters.validate();
+  if (settings.closed_loop && settings.reinitialize_wpg)
+    throw std::invalid_argument("online filter: closed_loop and reinitialize_wpg are two forms "
+                                "of the re-initialisation, choose one");
   FilterLoop loop(model, parameters, settings);
   loop.reserve(static_cast<std::size_t>(std::lround(request.duration / parameters.control_period)) + 2);
   OnlineFilterRun run;

@@ -40,7 +40,7 @@ def main():
     parser.add_argument("--min-reduction", type=float, default=3.0)
     parser.add_argument("--min-reduction-max", type=float, default=None,
                         help="for the max error (default: --min-reduction)")
-    parser.add_argument("--mode", choices=("online", "offline"), default=None,
+    parser.add_argument("--mode", choices=("online", "offline", "closed_loop"), default=None,
                         help="the filter_mode attribute the file must hold")
     parser.add_argument("--offline-comparison", action="store_true",
                         help="the offline_zmp_error_* attributes of filter_settings.mode both")

@@ -26,8 +26,8 @@ text = h5py.File(sys.argv[1], "r").attrs["scenario"]
 sys.exit(0 if "replay: true" in text and "filter: true" in text else 1)
 PY
 # filter_settings.mode both: the online loop's walk and filter (causal, Fig. 3), the offline
-# pass's ZMP errors beside them. Online the max error is set by the start of the walk (the
-# command that starts it is news to a causal filter): only the RMS is cut 3x.
+# pass's ZMP errors beside them. Online the RMS is cut 3x (6x measured) and the max below the
+# unfiltered one (10.4 against 34.3 mm measured: the online filter never raises the peak).
 status=0
 "$wpg" run walk_forward --filter --set filter_settings.mode=both -o "$WORKDIR/both.h5" \
   >"$WORKDIR/stdout" 2>"$WORKDIR/stderr" || status=$?
@@ -35,7 +35,17 @@ cat "$WORKDIR/stdout"; cat "$WORKDIR/stderr" >&2
 [[ $status == 0 ]] || fail "mode both: exit status $status"
 grep -Eq '^filter    online \(open loop\).*; offline pass: RMS [0-9.]+ mm -> [0-9.]+ mm' \
   "$WORKDIR/stdout" || fail "mode both: summary lacks the online / offline line"
-check_multibody "$WORKDIR/both.h5" --filtered --min-reduction 3 --min-reduction-max 0.3 \
+check_multibody "$WORKDIR/both.h5" --filtered --min-reduction 3 --min-reduction-max 1 \
   --mode online --offline-comparison
 check_png "$WORKDIR/both.png"
+# filter_settings.mode closed_loop: the loop closed (the WPG re-initialised from the CoM sent,
+# docs/formulation.md) walks to the end; RMS cut 3x (3.9x measured), max below the unfiltered.
+status=0
+"$wpg" run walk_forward --filter --set filter_settings.mode=closed_loop --no-plot \
+  -o "$WORKDIR/closed.h5" >"$WORKDIR/stdout" 2>"$WORKDIR/stderr" || status=$?
+cat "$WORKDIR/stdout"; cat "$WORKDIR/stderr" >&2
+[[ $status == 0 ]] || fail "mode closed_loop: exit status $status"
+grep -q '^filter    closed_loop' "$WORKDIR/stdout" || fail "mode closed_loop: no filter line"
+check_multibody "$WORKDIR/closed.h5" --filtered --min-reduction 3 --min-reduction-max 1 \
+  --mode closed_loop
 echo "ok"

@@ -198,7 +198,7 @@ TEST(ShippedScenarios, ResolvedYamlListsEveryKey) {
         "feasibility_x: [-0.28, -0.2, 0.0, 0.2, 0.28]", "weight_jerk: 1.0e-05",
         "replay: false", "filter: false",
         "filter_settings: {error_weight: 1.0, input_weight: 1.0e-06, preview_time: 1.6, mode: "
-        "offline, reinitialize_wpg: false}"}) {
+        "offline, reinitialize_wpg: false, online_input_weight: 0.001}"}) {
     EXPECT_NE(yaml.find(key), std::string::npos) << "'" << key << "' missing in:\n" << yaml;
   }
 }
@@ -250,14 +250,31 @@ TEST(ShippedScenarios, FilterModeKeys) {
       wpg::datasets::loadScenarioText(online.resolved_yaml, "run.h5:/scenario", {}, kRobotsDir);
   EXPECT_EQ(again.filter_loop.mode, wpg::DynamicFilterMode::kBoth);
   EXPECT_TRUE(again.filter_loop.reinitialize_wpg);
+  // closed_loop and its own online weight, read back through the resolved YAML.
+  const Scenario closed =
+      loadShipped("walk_forward", {"filter=true", "filter_settings={mode: closed_loop, "
+                                                  "online_input_weight: 2e-4}"});
+  EXPECT_EQ(closed.filter_loop.mode, wpg::DynamicFilterMode::kClosedLoop);
+  EXPECT_EQ(closed.filter_loop.online_input_weight, 2e-4);
+  EXPECT_EQ(closed.filter_settings.input_weight, 1e-6);  // the offline pass's R is its own key
+  EXPECT_EQ(defaults.filter_loop.online_input_weight, 1e-3);
+  const Scenario closed_again =
+      wpg::datasets::loadScenarioText(closed.resolved_yaml, "run.h5:/scenario", {}, kRobotsDir);
+  EXPECT_EQ(closed_again.filter_loop.mode, wpg::DynamicFilterMode::kClosedLoop);
+  EXPECT_EQ(closed_again.filter_loop.online_input_weight, 2e-4);
   for (const char* bad : {"filter_settings.mode=closed", "filter_settings.mode=[online]",
-                          "filter_settings.reinitialize_wpg=maybe"}) {
+                          "filter_settings.reinitialize_wpg=maybe",
+                          "filter_settings.online_input_weight=0",
+                          "filter_settings={mode: closed_loop, reinitialize_wpg: true}"}) {
     try {
       loadShipped("walk_forward", {bad});
       ADD_FAILURE() << bad << ": no InputError";
     } catch (const InputError& error) {
       const std::string message = error.what();
-      const std::string key(bad, std::string(bad).find('='));
+      const std::string text(bad);
+      const std::string key = text.find('{') == std::string::npos
+                                  ? text.substr(0, text.find('='))
+                                  : "filter_settings.reinitialize_wpg";
       EXPECT_NE(message.find(key), std::string::npos) << message;
     }
   }

@@ -73,6 +73,41 @@ TEST(OnlineDynamicFilter, AbsorptionHandsTheStateOverAndRestarts) {
   EXPECT_EQ(filter.correctionX(), Vector3d::Zero());
 }
 
+// The closed loop's absorption (mode closed_loop): the WPG takes the position of the correction
+// it has not taken yet; the filter runs on exactly as if nothing had been absorbed, and the
+// correction sent keeps its velocity and acceleration (the CoM sent has no kink).
+TEST(OnlineDynamicFilter, IncrementAbsorptionKeepsTheFilterRunningAndTheCoMSmooth) {
+  const wpg::PreviewController controller(kDt, kHeight, kGravity);
+  wpg::OnlineDynamicFilter absorbing(controller), plain(controller);
+  const Eigen::MatrixXd error = errorSignal(1200);
+  Vector3d wpg_x = Vector3d::Zero(), wpg_y = Vector3d::Zero();  // what the WPG absorbed
+  int absorptions = 0;
+  for (int k = 0; k + 40 < 1200; ++k) {
+    if (k > 0 && k % 20 == 0) {  // every NMPC iteration (0.1 s)
+      const Vector3d sent_x = absorbing.sentCorrectionX(), sent_y = absorbing.sentCorrectionY();
+      Vector3d increment_x, increment_y;
+      absorbing.absorbIncrement(increment_x, increment_y);
+      ++absorptions;
+      EXPECT_EQ(increment_x, Vector3d(sent_x(0), 0.0, 0.0));
+      EXPECT_EQ(increment_y, Vector3d(sent_y(0), 0.0, 0.0));
+      wpg_x += increment_x;
+      wpg_y += increment_y;
+      // WPG + correction sent: the same position, velocity and acceleration as before.
+      EXPECT_NEAR((wpg_x + absorbing.sentCorrectionX() - plain.correctionX()).norm(), 0.0, 1e-15);
+      EXPECT_NEAR((wpg_y + absorbing.sentCorrectionY() - plain.correctionY()).norm(), 0.0, 1e-15);
+      EXPECT_EQ(absorbing.sentCorrectionX()(0), 0.0);
+      EXPECT_EQ(absorbing.sentCorrectionX().tail<2>(), plain.correctionX().tail<2>());
+    }
+    // Not reset: the same correction as a filter that never absorbed.
+    EXPECT_EQ(absorbing.correctionX(), plain.correctionX());
+    EXPECT_EQ(absorbing.correctionY(), plain.correctionY());
+    absorbing.step(error.middleRows(k, 40));
+    plain.step(error.middleRows(k, 40));
+  }
+  EXPECT_GT(absorptions, 50);
+  EXPECT_GT(wpg_x.cwiseAbs().maxCoeff() + wpg_y.cwiseAbs().maxCoeff(), 1e-4);  // real ones
+}
+
 TEST(OnlineDynamicFilter, RejectsABadWindow) {
   const wpg::PreviewController controller(kDt, kHeight, kGravity);
   wpg::OnlineDynamicFilter filter(controller);
@@ -86,7 +121,8 @@ TEST(OnlineDynamicFilter, RejectsABadWindow) {
 TEST(FilterMode, NamesRoundTrip) {
   for (wpg::DynamicFilterMode mode : {wpg::DynamicFilterMode::kOnline,
                                       wpg::DynamicFilterMode::kOffline,
-                                      wpg::DynamicFilterMode::kBoth}) {
+                                      wpg::DynamicFilterMode::kBoth,
+                                      wpg::DynamicFilterMode::kClosedLoop}) {
     wpg::DynamicFilterMode parsed = wpg::DynamicFilterMode::kOnline;
     ASSERT_TRUE(wpg::parseDynamicFilterMode(wpg::dynamicFilterModeName(mode), &parsed));
     EXPECT_EQ(parsed, mode);

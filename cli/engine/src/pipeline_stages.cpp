@@ -141,8 +141,9 @@ WalkAndReplay runWalkAndReplay(const robots::RobotModel* model,
   }
   checkFilterMode(scenario, scenario.source_path);
   robots::OnlineFilterLoopSettings settings;
-  settings.preview = scenario.filter_settings;
+  settings.preview = robots::onlinePreviewSettings(scenario.filter_settings, scenario.filter_loop);
   settings.reinitialize_wpg = scenario.filter_loop.reinitialize_wpg;
+  settings.closed_loop = scenario.filter_loop.mode == DynamicFilterMode::kClosedLoop;
   ReplayOutcome outcome;
   const auto start = std::chrono::steady_clock::now();
   robots::OnlineFilterRun loop;

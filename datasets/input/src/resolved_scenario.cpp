@@ -94,6 +94,8 @@ std::string emitResolved(const Scenario& scenario) {
   emitSettingFields(out, filterSettingFields(), scenario.filter_settings);
   out << YAML::Key << "mode" << YAML::Value << dynamicFilterModeName(scenario.filter_loop.mode);
   out << YAML::Key << "reinitialize_wpg" << YAML::Value << scenario.filter_loop.reinitialize_wpg;
+  out << YAML::Key << "online_input_weight" << YAML::Value
+      << scenario.filter_loop.online_input_weight;
   out << YAML::EndMap;
 
   out << YAML::Key << "walking" << YAML::Value << YAML::BeginMap;

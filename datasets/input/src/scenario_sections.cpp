@@ -166,25 +166,38 @@ PreviewControlSettings readFilterSettings(const YAML::Node& node, const Source& 
   std::vector<std::string> keys = settingNames(filterSettingFields());
   keys.push_back("mode");
   keys.push_back("reinitialize_wpg");
-  const Entries entries =
-      readMap(node, "filter_settings", keys,
-              "a map {error_weight, input_weight, preview_time, mode, reinitialize_wpg}", source,
-              /*null_is_empty=*/true);
+  keys.push_back("online_input_weight");
+  const Entries entries = readMap(node, "filter_settings", keys,
+                                  "a map {error_weight, input_weight, preview_time, mode, "
+                                  "reinitialize_wpg, online_input_weight}",
+                                  source, /*null_is_empty=*/true);
   readSettingFields(entries, "filter_settings", filterSettingFields(), source, &settings);
   if (present(entries, "mode")) {
     const YAML::Node mode = entry(entries, "mode");
     if (!mode.IsScalar() || !parseDynamicFilterMode(asciiLower(mode.Scalar()), &loop->mode)) {
       source.failWith(
           "filter_settings.mode",
-          "expected online, offline or both, got " + describe(mode) +
-              (mode.IsScalar() ? didYouMean(mode.Scalar(), {"online", "offline", "both"})
-                               : std::string()));
+          "expected online, offline, both or closed_loop, got " + describe(mode) +
+              (mode.IsScalar()
+                   ? didYouMean(mode.Scalar(), {"online", "offline", "both", "closed_loop"})
+                   : std::string()));
     }
   }
   if (present(entries, "reinitialize_wpg")) {
     loop->reinitialize_wpg = readBoolean(entry(entries, "reinitialize_wpg"),
                                          "filter_settings.reinitialize_wpg", "true or false",
                                          source);
+    // closed_loop is its own re-initialisation (wpg/dynamic_filter.hpp): one or the other.
+    if (loop->reinitialize_wpg && loop->mode == DynamicFilterMode::kClosedLoop) {
+      source.fail("filter_settings.reinitialize_wpg",
+                  "false with mode closed_loop (closed_loop re-initialises the WPG its own way)",
+                  entry(entries, "reinitialize_wpg"));
+    }
+  }
+  if (present(entries, "online_input_weight")) {
+    loop->online_input_weight =
+        readPositive(entry(entries, "online_input_weight"), "filter_settings.online_input_weight",
+                     "a positive weight (R of the online loop)", source);
   }
   return settings;
 }

@@ -453,9 +453,9 @@ void writeMultibody(H5::Group& run, const Scenario& scenario, const MultibodyRec
   writeDoubleAttribute(group, "filter_error_weight", scenario.filter_settings.error_weight);
   writeDoubleAttribute(group, "filter_input_weight", scenario.filter_settings.input_weight);
   writeDoubleAttribute(group, "filter_preview_time", scenario.filter_settings.preview_time);
-  // Which filter produced com_filtered (wpg/dynamic_filter.hpp): "online" (the closed loop of
-  // Fig. 3), "offline" (one pass over the recorded walk), "" without the filter.
-  writeStringAttribute(group, "filter_mode", mb.filter_mode);
+  const double online_r = scenario.filter_loop.online_input_weight;  // R of the online loop
+  writeDoubleAttribute(group, "filter_online_input_weight", online_r);
+  writeStringAttribute(group, "filter_mode", mb.filter_mode);  // closed_loop, online, offline, ""
   writeIntAttribute(group, "wpg_reinitialized", mb.wpg_reinitialized ? 1 : 0);
   if (mb.has_offline_comparison) {
     // filter_settings.mode both: the offline pass over the open-loop walk, for comparison.

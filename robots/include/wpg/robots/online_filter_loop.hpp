@@ -3,10 +3,13 @@
 //
 //   WPG (OnlineWalkingGenerator) --c, f--> dynamic filter --c~--> IK --> q sent to the robot
 //     ^                                        |
-//     +---- corrected CoM state (every NMPC iteration, when reinitialize_wpg) ----+
+//     +---- CoM state sent (every NMPC iteration, when closed_loop or reinitialize_wpg) ----+
 //
-// (With reinitialize_wpg the arrow back closes the loop; it is off by default because it is
-// unstable here, wpg/dynamic_filter.hpp says why.)
+// The arrow back is off by default (mode online, an open loop). closed_loop closes it in a
+// stable form: the WPG restarts from the CoM state sent to the robot and the filter runs on
+// (OnlineDynamicFilter::absorbIncrement); reinitialize_wpg is the paper's Fig. 3 read
+// literally (the filter restarts from rest after the WPG absorbed its correction), unstable
+// here: wpg/dynamic_filter.hpp says why.
 // At every NMPC iteration the filter takes what the NMPC previews of the coming motion (the
 // plan in force: OnlineWalkingGenerator::previewReference) over the current sampling period
 // plus the filter's preview (Sec. V-A: one step, 0.8 s), runs the walking IK over it and
@@ -23,6 +26,7 @@
 // paper's Sec. V-C table measures the control loop. The motion sent to the robot is replayed
 // once more at the end (validation, not part of the loop: Simbody's inverse dynamics) for the
 // ZMP error after the filter.
+#include "wpg/dynamic_filter.hpp"
 #include "wpg/multibody_validation.hpp"
 #include "wpg/preview_control.hpp"
 #include "wpg/robots/robot_model.hpp"
@@ -32,12 +36,22 @@
 
 namespace wpg::robots {
 
+// The online loop's preview controller by default: filter_settings' Qe and preview time, and
+// R = DynamicFilterLoopSettings::online_input_weight (1e-3; why: wpg/dynamic_filter.hpp).
+PreviewControlSettings onlinePreviewSettings(const PreviewControlSettings& filter_settings,
+                                             const DynamicFilterLoopSettings& loop = {});
+
 struct OnlineFilterLoopSettings {
-  PreviewControlSettings preview;  // the filter's preview controller (Qe, R, preview time)
-  // Fig. 3: the WPG's initial CoM state := the filter's corrected state at every NMPC
-  // iteration (measured unstable: DynamicFilterLoopSettings); false: an open loop (the
-  // correction is only added to the CoM sent to the IK).
+  // the filter's preview controller (Qe, R, preview time)
+  PreviewControlSettings preview = onlinePreviewSettings(PreviewControlSettings());
+  // Fig. 3 read literally: the WPG's initial CoM state := the filter's corrected state at
+  // every NMPC iteration, the filter restarted from rest (measured unstable:
+  // DynamicFilterLoopSettings); false: no such re-initialisation.
   bool reinitialize_wpg = false;
+  // Fig. 3 in a stable form (mode closed_loop): at every NMPC iteration the WPG's CoM state :=
+  // the CoM state sent to the robot (its own + the correction it has not absorbed yet), the
+  // filter running on. Not with reinitialize_wpg (std::invalid_argument).
+  bool closed_loop = false;
 };
 
 struct OnlineFilterRun {
