@@ -121,15 +121,16 @@ const MpcIterationLog& PatternGenerator::update(double time, const Eigen::Vector
     // The circles' half-planes of this sample (wpg/obstacle_tangent.hpp): from the CoM, the
     // command's direction at this sample (J1's world reference) and the passing side, chosen
     // from the point between the feet; then J1's reference turned along the borders it drives
-    // into, so that sliding round is what the cost asks for.
+    // into, so that sliding round is what the cost asks for, no faster sideways than the gait
+    // can walk.
     const Eigen::Vector2d feet_middle =
         0.5 * (gait_.footPose(FootSide::kLeft) + gait_.footPose(FootSide::kRight)).head<2>();
     obstacles_.tangentNormals(Eigen::Vector2d(com_x_(0), com_y_(0)), feet_middle,
                               Eigen::Vector2d(problem_.velocity_x(0), problem_.velocity_y(0)),
                               w.obstacle_foot_radius, tangentClearance(w),
                               problem_.obstacle_slot, problem_.obstacle_normal);
-    turnReferenceAlongBorders(problem_.obstacle_normal, problem_.velocity_x,
-                              problem_.velocity_y);
+    turnReferenceAlongBorders(problem_.obstacle_normal, w.gaitSidewaysSpeed(),
+                              problem_.velocity_x, problem_.velocity_y);
   }
   references_.addSway(problem_);
 
