@@ -50,7 +50,8 @@ Eigen::Vector2d commandTangentNormal(const Eigen::Vector2d& center, double radiu
 // gaitSidewaysSpeed); asked for more along a steep border, the QP lengthens the outward step,
 // which the polygon's slanted edges pay for in sideways reach, and the robot slides slower
 // (docs/obstacle_passing.md, "Sliding along a steep border"). References that drive into no
-// border are left as they are. Does not allocate.
+// border are left as they are. PatternGenerator passes the limit for straight commands (zero
+// yaw rate) only. Does not allocate.
 void turnReferenceAlongBorders(const Eigen::Ref<const Eigen::Matrix2Xd>& normals,
                                double max_sideways_speed, Eigen::Ref<Eigen::VectorXd> velocity_x,
                                Eigen::Ref<Eigen::VectorXd> velocity_y);
