@@ -48,18 +48,33 @@ Eigen::Vector2d commandTangentNormal(const Eigen::Vector2d& center, double radiu
 }
 
 void turnReferenceAlongBorders(const Eigen::Ref<const Eigen::Matrix2Xd>& normals,
-                               Eigen::Ref<Eigen::VectorXd> velocity_x,
+                               double max_sideways_speed, Eigen::Ref<Eigen::VectorXd> velocity_x,
                                Eigen::Ref<Eigen::VectorXd> velocity_y) {
   for (int j = 0; j < velocity_x.size(); ++j) {
-    Eigen::Vector2d v(velocity_x(j), velocity_y(j));
+    const Eigen::Vector2d command(velocity_x(j), velocity_y(j));
+    Eigen::Vector2d v = command;
     const double speed = v.norm();
+    bool turned = false;
     for (int k = 0; k < normals.cols(); ++k) {
       const Eigen::Vector2d n = normals.col(k);
       const double into = n.dot(v);
-      if (into < 0.0) v -= into * n;  // n is a unit vector (or zero: no change)
+      if (into < 0.0) {  // n is a unit vector (or zero: no change)
+        v -= into * n;
+        turned = true;
+      }
     }
     const double length = v.norm();
-    if (length > 1e-12) v *= speed / length;
+    if (!turned || length <= 1e-12) continue;
+    // Along the border at the commanded speed, unless its part across the command then exceeds
+    // what the gait can walk sideways: asked for more, the QP buys the missing sideways speed
+    // with the outward step's length (the feasibility polygon's slanted edges) and slides along
+    // a steep border more slowly than along one it can follow.
+    double target = speed;
+    const double sine = std::abs(cross(command, v)) / (speed * length);
+    if (max_sideways_speed > 0.0 && sine * speed > max_sideways_speed) {
+      target = max_sideways_speed / sine;
+    }
+    v *= target / length;
     velocity_x(j) = v.x();
     velocity_y(j) = v.y();
   }

@@ -1,5 +1,6 @@
 #include "wpg/walking_parameters.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -210,6 +211,11 @@ std::vector<Eigen::Vector2d> WalkingParameters::feasibilityVertices(FootSide sid
   const double sign = side == FootSide::kLeft ? 1.0 : -1.0;
   for (int i = 0; i < 5; ++i) vertices.emplace_back(feasibility_x[i], sign * feasibility_y[i]);
   return vertices;
+}
+
+double WalkingParameters::gaitSidewaysSpeed() const {
+  const auto [narrowest, widest] = std::minmax_element(feasibility_y.begin(), feasibility_y.end());
+  return (*widest - *narrowest) / (2.0 * stepDuration());
 }
 
 }  // namespace wpg

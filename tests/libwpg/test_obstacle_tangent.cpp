@@ -7,6 +7,7 @@
 
 #include "wpg/obstacle_selector.hpp"
 #include "wpg/obstacle_tangent.hpp"
+#include "wpg/walking_parameters.hpp"
 
 namespace {
 
@@ -57,11 +58,42 @@ TEST(ObstacleTangent, ReferenceIntoABorderSlidesAlongItAtTheCommandedSpeed) {
   normals.col(1) = Vector2d(-1.0, 1.0).normalized();
   Eigen::VectorXd vx = Eigen::VectorXd::Constant(3, 0.2), vy = Eigen::VectorXd::Zero(3);
   vx(2) = -0.2;  // moving away from the border: unchanged
-  wpg::turnReferenceAlongBorders(normals, vx, vy);
+  wpg::turnReferenceAlongBorders(normals, 0.0, vx, vy);  // no sideways limit
   EXPECT_NEAR(vx(0), 0.2 / std::sqrt(2.0), 1e-12);
   EXPECT_NEAR(vy(0), 0.2 / std::sqrt(2.0), 1e-12);
   EXPECT_NEAR(vx(2), -0.2, 1e-12);
   EXPECT_NEAR(vy(2), 0.0, 1e-12);
+}
+
+// Along a border at 45 degrees to a 0.3 m/s command the turned reference would cross the
+// command at 0.21 m/s: capped at 0.125 m/s across, it keeps its direction along the border;
+// below the cap (0.1 m/s across at 0.2 m/s along a 30-degree border), and away from the border,
+// the speed is the command's.
+TEST(ObstacleTangent, ReferenceAlongABorderCrossesTheCommandNoFasterThanTheGaitWalksSideways) {
+  Eigen::Matrix2Xd normals(2, 1);
+  normals.col(0) = Vector2d(-1.0, 1.0).normalized();
+  Eigen::VectorXd vx = Eigen::VectorXd::Constant(2, 0.3), vy = Eigen::VectorXd::Zero(2);
+  vx(1) = -0.3;
+  wpg::turnReferenceAlongBorders(normals, 0.125, vx, vy);
+  EXPECT_NEAR(vy(0), 0.125, 1e-12);
+  EXPECT_NEAR(vx(0), 0.125, 1e-12);  // along the border
+  EXPECT_NEAR(vx(1), -0.3, 1e-12);
+  EXPECT_NEAR(vy(1), 0.0, 1e-12);
+  normals.col(0) = Vector2d(-0.5, std::sqrt(3.0) / 2.0);  // the border 30 degrees off +x
+  vx.setConstant(0.2);
+  vy.setZero();
+  wpg::turnReferenceAlongBorders(normals, 0.125, vx, vy);
+  EXPECT_NEAR(std::hypot(vx(0), vy(0)), 0.2, 1e-12);
+  EXPECT_NEAR(vy(0), 0.1, 1e-12);
+}
+
+TEST(ObstacleTangent, GaitSidewaysSpeedIsThePolygonsLateralReachPerGaitCycle) {
+  wpg::WalkingParameters w;
+  // HRP-2: a left step 0.2 to 0.4 m beside the right foot, 0.8 s steps.
+  EXPECT_NEAR(w.gaitSidewaysSpeed(), (0.4 - 0.2) / (2.0 * 0.8), 1e-12);
+  w.feasibility_y = {0.15, 0.3, 0.45, 0.3, 0.15};
+  w.single_support_samples = 5;
+  EXPECT_NEAR(w.gaitSidewaysSpeed(), (0.45 - 0.15) / (2.0 * 0.6), 1e-12);
 }
 
 // Walking straight on towards the obstacle, the selector keeps the first border (a border

@@ -44,9 +44,16 @@ Eigen::Vector2d commandTangentNormal(const Eigen::Vector2d& center, double radiu
 // J1's world reference per sample (vx, vy), for each border of `normals` (columns; zero
 // columns ignored) it drives into (n.v < 0): its component into the border removed, and the
 // result scaled back to the commanded speed, so that the reference slides along the border
-// instead of asking the robot to walk through it. Does not allocate.
+// instead of asking the robot to walk through it; but no faster than leaves its part across the
+// command within `max_sideways_speed` [m/s] (<= 0: no limit). The gait walks sideways at most
+// at the feasibility polygon's lateral reach per gait cycle (0.125 m/s for HRP-2,
+// gaitSidewaysSpeed); asked for more along a steep border, the QP lengthens the outward step,
+// which the polygon's slanted edges pay for in sideways reach, and the robot slides slower
+// (docs/obstacle_passing.md, "Sliding along a steep border"). References that drive into no
+// border are left as they are. PatternGenerator passes the limit for straight commands (zero
+// yaw rate) only. Does not allocate.
 void turnReferenceAlongBorders(const Eigen::Ref<const Eigen::Matrix2Xd>& normals,
-                               Eigen::Ref<Eigen::VectorXd> velocity_x,
+                               double max_sideways_speed, Eigen::Ref<Eigen::VectorXd> velocity_x,
                                Eigen::Ref<Eigen::VectorXd> velocity_y);
 
 }  // namespace wpg
