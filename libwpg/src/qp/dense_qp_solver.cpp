@@ -171,7 +171,16 @@ QpStatus DenseQpSolver::solve(const HessianFactor& factor,
   // Dual iterations (the iteration limit bounds them with the warm start's updates).
   iterations_ = warm_start_updates_;
   any_set_aside_ = false;
-  for (int p = mostViolatedRow(C, d, x); p >= 0; p = mostViolatedRow(C, d, x)) {
+  for (;;) {
+    const int p = mostViolatedRow(C, d, x);
+    if (p == kInvalidRow) {
+      // A non-finite entry of C (or an overflowing row): nothing of this solve is kept.
+      x.setZero();
+      iterations_ = warm_start_updates_ = warm_start_kept_ = 0;
+      active_count_ = active_equality_count_ = 0;
+      return QpStatus::kInvalidInput;
+    }
+    if (p < 0) break;
     const QpStatus status = addViolatedRow(p, factor, g, C, x, me);
     if (status != QpStatus::kOptimal) return status;
   }
@@ -197,21 +206,24 @@ bool DenseQpSolver::scaleInequalityRows(const Eigen::Ref<const Eigen::VectorXd>&
                                         const Eigen::Ref<const Eigen::VectorXd>& e,
                                         const Eigen::Ref<const Eigen::MatrixXd>& C,
                                         const Eigen::Ref<const Eigen::VectorXd>& d) {
-  // Row norms of C (for scale-invariant selection of the most violated constraint); the same
-  // pass catches non-finite entries of C (and rows whose squared norm overflows, > ~1e154).
-  const int n = static_cast<int>(g.size()), me = static_cast<int>(E.rows());
-  const int mi = static_cast<int>(C.rows());
-  row_scale_.head(mi).setZero();
-  for (int col = 0; col < n; ++col) row_scale_.head(mi) += C.col(col).cwiseAbs2();
-  if (!g.allFinite() || !e.allFinite() || !d.allFinite() || !row_scale_.head(mi).allFinite() ||
-      (me > 0 && !E.allFinite())) {
-    return false;
-  }
-  for (int i = 0; i < mi; ++i) {
-    const double norm = std::sqrt(row_scale_(i));
-    row_scale_(i) = norm > 0.0 ? 1.0 / norm : 1.0;
-  }
-  return true;
+  // The row norms of C (for the scale-invariant choice of the most violated row) are computed
+  // when a row is first found violated (rowScale): most rows never are, and C is the largest
+  // input. C's entries are checked for finiteness by the first product C x (mostViolatedRow):
+  // with x finite, a non-finite entry makes its row's C x non-finite.
+  const int me = static_cast<int>(E.rows()), mi = static_cast<int>(C.rows());
+  row_scale_.head(mi).setZero();  // 0 = not computed yet (a computed scale is > 0)
+  return g.allFinite() && e.allFinite() && d.allFinite() && (me == 0 || E.allFinite());
+}
+
+double DenseQpSolver::rowScale(const Eigen::Ref<const Eigen::MatrixXd>& C, int i) {
+  if (row_scale_(i) > 0.0) return row_scale_(i);
+  // The squares summed in column order, as a column-by-column accumulation over all rows would.
+  double norm2 = 0.0;
+  for (Eigen::Index col = 0; col < C.cols(); ++col) norm2 += C(i, col) * C(i, col);
+  if (!std::isfinite(norm2)) return -1.0;  // overflows (> ~1e154): invalid input
+  const double norm = std::sqrt(norm2);
+  row_scale_(i) = norm > 0.0 ? 1.0 / norm : 1.0;
+  return row_scale_(i);
 }
 
 void DenseQpSolver::startFromUnconstrainedMinimum(const HessianFactor& factor,
@@ -335,17 +347,21 @@ int DenseQpSolver::mostViolatedRow(const Eigen::Ref<const Eigen::MatrixXd>& C,
   slack_.head(mi) -= d;
   int p = -1;
   double worst = 0.0;
+  bool finite = true;
   for (int i = 0; i < mi; ++i) {
     const double s = slack_(i);
+    finite = finite && std::isfinite(s);
     if (s > settings_.feasibility_tolerance && !in_working_set_(i)) {
-      const double scaled = s * row_scale_(i);
+      const double scale = rowScale(C, i);
+      if (scale < 0.0) return kInvalidRow;
+      const double scaled = s * scale;
       if (scaled > worst) {
         worst = scaled;
         p = i;
       }
     }
   }
-  return p;
+  return finite ? p : kInvalidRow;
 }
 
 double DenseQpSolver::dualStepLength(int* blocking) const {
