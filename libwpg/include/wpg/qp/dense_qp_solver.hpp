@@ -105,12 +105,19 @@ class DenseQpSolver {
                            const Eigen::Ref<const Eigen::VectorXd>& e,
                            const Eigen::Ref<const Eigen::MatrixXd>& C,
                            const Eigen::Ref<const Eigen::VectorXd>& d);
-  // Step 0: x = -H^{-1} g, J = J0, empty working set.
+  // Step 0: J = J0, empty working set; x = -H^{-1} g left to updateIterate.
   void startFromUnconstrainedMinimum(const HessianFactor& factor,
-                                     const Eigen::Ref<const Eigen::VectorXd>& g,
-                                     Eigen::Ref<Eigen::VectorXd> x);
-  // Adds every equality with a full step; false when they are inconsistent.
-  bool addEqualities(const Eigen::Ref<const Eigen::MatrixXd>& E,
+                                     const Eigen::Ref<const Eigen::VectorXd>& g);
+  // Adds every equality to the working set (their full steps left to updateIterate); false
+  // when they are inconsistent.
+  bool addEqualities(const HessianFactor& factor, const Eigen::Ref<const Eigen::VectorXd>& g,
+                     const Eigen::Ref<const Eigen::MatrixXd>& E,
+                     const Eigen::Ref<const Eigen::VectorXd>& e, Eigen::Ref<Eigen::VectorXd> x);
+  // Brings x (and the equalities' multipliers) up to the working set's equalities: x = -H^{-1}
+  // g, then the full step of each equality added since, in order, with the same operations as
+  // if each had been taken when it was added. Nothing when the iterate was computed afresh.
+  void updateIterate(const HessianFactor& factor, const Eigen::Ref<const Eigen::VectorXd>& g,
+                     const Eigen::Ref<const Eigen::MatrixXd>& E,
                      const Eigen::Ref<const Eigen::VectorXd>& e, Eigen::Ref<Eigen::VectorXd> x);
   // Loads the guessed inequality rows that are independent of the working set.
   void loadGuessedRows(int guess_count, const Eigen::Ref<const Eigen::MatrixXd>& C, int n);
@@ -196,6 +203,9 @@ class DenseQpSolver {
   int active_count_ = 0;          // q
   int active_equality_count_ = 0; // equalities in the working set (always the first ones)
   bool any_set_aside_ = false;    // some in_working_set_ entry is kSetAside
+  // updateIterate: 0 = x not computed yet; k > 0 = x holds -H^{-1} g and the full steps of the
+  // working set's first k - 1 equalities; -1 = x is current (computed afresh)
+  int iterate_steps_ = 0;
 };
 
 }  // namespace wpg::qp
