@@ -127,7 +127,7 @@ H5::Group openGroup(H5::Group& parent, const std::string& name) {
 namespace {
 
 // The attributes' string type and scalar dataspace, made once (HDF5 copies them into each
-// attribute, so the file is the same): making and closing them for each of a run's ~150
+// attribute, so the file is the same): making and closing them for each of a run's ~110
 // attributes was ~7 % of the batch writer's serial work. Made on first use, by a caller holding
 // hdf5Mutex() like every writer here, and never destroyed (HDF5 closes them at exit).
 const H5::StrType& utf8StringType() {
