@@ -20,6 +20,7 @@
 // infeasibility (degenerate vertices).
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -237,9 +238,10 @@ void DenseQpSolver::startFromUnconstrainedMinimum(const HessianFactor& factor,
   const int n = static_cast<int>(g.size());
   const int rows = paddedRows(n);
   const Eigen::MatrixXd& J0 = factor.inverse_factor_transposed;
-  for (int k = 0; k < n; ++k) {
-    J_.col(k).head(k + 1) = J0.col(k).head(k + 1);
-    J_.col(k).segment(k + 1, rows - k - 1).setZero();
+  for (int k = 0; k < n; ++k) {  // plain copies: Eigen's short dynamic segments cost more
+    double* column = J_.col(k).data();
+    std::memcpy(column, J0.col(k).data(), static_cast<std::size_t>(k + 1) * sizeof(double));
+    std::fill(column + k + 1, column + rows, 0.0);
   }
   iterate_steps_ = 0;  // x = -H^{-1} g is computed when needed (updateIterate)
 }
