@@ -117,9 +117,9 @@ void ReferenceBuilder::build(const Eigen::Vector3d& command, int phase_sample,
     robot_velocity_.col(history + i) = rotation(sample_heading(i)).transpose() * planned;
   }
   const auto robot_mean_y = [&](int last, int count) {  // sample index: -1 = newest walked
-    double sum = 0.0;
-    for (int i = last - count + 1; i <= last; ++i)
-      if (history + i >= 0) sum += robot_velocity_(1, history + i);
+    double sum = 0.0;  // the samples before the oldest walked one count as 0
+    for (int i = std::max(last - count + 1, -history); i <= last; ++i)
+      sum += robot_velocity_(1, history + i);
     return sum / count;
   };
 

@@ -329,6 +329,18 @@ TEST(DenseQpSolver, InvalidInput) {
   EXPECT_EQ(solver.solve(factor, g, E, e, C_bad, d, x), QpStatus::kInvalidInput);
   C_bad(1, 3) = nan;
   EXPECT_EQ(solver.solve(factor, g, E, e, C_bad, d, x), QpStatus::kInvalidInput);
+  // ... also when the row is loaded from the warm-start guess before any product C x
+  const int guess[] = {1};
+  solver.setActiveSetGuess(guess, 1);
+  EXPECT_EQ(solver.solve(factor, g, E, e, C_bad, d, x), QpStatus::kInvalidInput);
+  EXPECT_TRUE(x.allFinite());
+  // a violated row whose squared norm overflows (its scale cannot be computed)
+  C_bad = C;
+  C_bad.row(0) *= 1e200;
+  VectorXd d_far = d;
+  d_far(0) = -1e200;  // 1e200 x_0 <= -1e200: violated at the unconstrained minimum
+  EXPECT_EQ(solver.solve(factor, g, E, e, C_bad, d_far, x), QpStatus::kInvalidInput);
+  EXPECT_TRUE(x.allFinite());
   VectorXd d_bad = d;
   d_bad(0) = -inf;
   EXPECT_EQ(solver.solve(factor, g, E, e, C, d_bad, x), QpStatus::kInvalidInput);

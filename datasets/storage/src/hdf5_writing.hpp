@@ -103,12 +103,15 @@ H5::DataSet writeCodes(H5::Group& group, const std::string& name,
 
 // --- rows to the flat, time-major layout ------------------------------------------------------
 
+// The rows are stored back to back (a fixed-size Eigen vector is its Size doubles): one copy,
+// not one insertion per row (the batch writer runs this on its serial path too).
 template <int Size>
 std::vector<double> flatten(const std::vector<Eigen::Matrix<double, Size, 1>>& rows) {
-  std::vector<double> values;
-  values.reserve(rows.size() * Size);
-  for (const auto& row : rows) values.insert(values.end(), row.data(), row.data() + Size);
-  return values;
+  static_assert(sizeof(Eigen::Matrix<double, Size, 1>) == Size * sizeof(double),
+                "rows without padding");
+  if (rows.empty()) return {};
+  const double* first = rows.front().data();
+  return std::vector<double>(first, first + rows.size() * Size);
 }
 
 // get(row) for every row.

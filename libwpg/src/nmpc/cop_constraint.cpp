@@ -1,4 +1,6 @@
 // CoP in the support polygon, paper eq. (9)-(13): 4 rows per sample of the horizon.
+#include <cmath>
+
 #include "nmpc_internal.hpp"
 #include "wpg/nmpc/builtin_families.hpp"
 #include "wpg/nmpc/model.hpp"
@@ -29,28 +31,49 @@ class CopConstraint final : public NamedConstraintFamily {
     const PhaseStructure& phase = problem.phase;
     const auto jerk_x = U.segment(L.jerkX(), L.horizon);
     const auto jerk_y = U.segment(L.jerkY(), L.horizon);
+    // Its rows rewrite their jerk entries whole (columns 0..j of sample j); of the step
+    // columns only the frame's, so the others are cleared first (rewritesJacobianRows).
+    if (jacobian) nmpc_internal::clearStepColumns(*jacobian, L);
+    // The samples come in runs on one frame (the support, then each previewed step): its
+    // rotation is computed once per run, not per edge and sample.
+    int frame = -2;
+    double c = 1.0, s = 0.0;
     for (int j = 0; j < L.horizon; ++j) {
       const double zx = P.cop_state.row(j).dot(problem.com_x) +
                         P.cop_jerk.row(j).head(j + 1).dot(jerk_x.head(j + 1));
       const double zy = P.cop_state.row(j).dot(problem.com_y) +
                         P.cop_jerk.row(j).head(j + 1).dot(jerk_y.head(j + 1));
       const PoseRef f = nmpc_internal::supportOfSample(L, problem, U, j);
+      if (f.step != frame) {  // -1 = the current support
+        frame = f.step;
+        c = std::cos(f.yaw);
+        s = std::sin(f.yaw);
+      }
       const double half_length = f.step < 0 ? phase.support_half_length : w.copHalfLength();
       const double half_width = f.step < 0 ? phase.support_half_width : w.copHalfWidth();
       const double bound[4] = {half_length, half_length, half_width, half_width};
       const double dx = zx - f.x, dy = zy - f.y;
-      for (int e = 0; e < CopRows::kEdges; ++e) {
-        const RotatedEdge edge(kCopNormal[e][0], kCopNormal[e][1], f.yaw);
-        const int row = CopRows::row(j, e);
-        g(row) = edge.value(dx, dy, bound[e]);
-        if (!jacobian) continue;
-        auto G = jacobian->row(row);
-        G.segment(L.jerkX(), j + 1) = edge.wx * P.cop_jerk.row(j).head(j + 1);
-        G.segment(L.jerkY(), j + 1) = edge.wy * P.cop_jerk.row(j).head(j + 1);
-        edge.writeFrameJacobian(*jacobian, row, L, f, dx, dy);
+      RotatedEdge edges[CopRows::kEdges] = {
+          {kCopNormal[0][0], kCopNormal[0][1], c, s}, {kCopNormal[1][0], kCopNormal[1][1], c, s},
+          {kCopNormal[2][0], kCopNormal[2][1], c, s}, {kCopNormal[3][0], kCopNormal[3][1], c, s}};
+      const int first_row = CopRows::row(j, 0);
+      for (int e = 0; e < CopRows::kEdges; ++e)
+        g(first_row + e) = edges[e].value(dx, dy, bound[e]);
+      if (!jacobian) continue;
+      // The 4 rows of the sample are adjacent in each column: fill column by column.
+      JacobianRows& G = *jacobian;
+      for (int k = 0; k <= j; ++k) {
+        const double pzu = P.cop_jerk(j, k);
+        for (int e = 0; e < CopRows::kEdges; ++e) {
+          G(first_row + e, L.jerkX() + k) = edges[e].wx * pzu;
+          G(first_row + e, L.jerkY() + k) = edges[e].wy * pzu;
+        }
       }
+      for (int e = 0; e < CopRows::kEdges; ++e)
+        edges[e].writeFrameJacobian(G, first_row + e, L, f, dx, dy);
     }
   }
+  bool rewritesJacobianRows() const override { return true; }
 
   // Sample j becomes sample j - 1 (the same instant, one sample nearer); the first sample's
   // rows leave the horizon.

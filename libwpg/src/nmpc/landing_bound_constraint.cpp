@@ -46,6 +46,7 @@ class LandingBoundConstraint final : public NamedConstraintFamily {
     const NmpcLayout& L = model.layout();
     const WalkingParameters& w = model.parameters();
     g.setConstant(-1.0);
+    if (jacobian) nmpc_internal::clearStepColumns(*jacobian, L);  // rewritesJacobianRows
     if (rowCount(model) == 0 || !problem.landing_bounded || L.steps == 0 ||
         problem.phase.step_fixed(0))
       return;
@@ -62,6 +63,8 @@ class LandingBoundConstraint final : public NamedConstraintFamily {
       (*jacobian)(lower, columns[axis]) = -1.0;
     }
   }
+
+  bool rewritesJacobianRows() const override { return true; }
 
   // The rows keep their meaning during a swing; a completed step changes the swing foot.
   int shiftedRow(const NmpcModel&, int row, bool step_completed) const override {

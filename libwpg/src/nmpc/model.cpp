@@ -225,13 +225,15 @@ void evaluateConstraints(const NmpcModel& model, const NmpcProblem& problem,
 
 void nmpc_internal::stackConstraints(const NmpcModel& model, const NmpcProblem& problem,
                                      const Eigen::Ref<const Eigen::VectorXd>& U,
-                                     Eigen::Ref<Eigen::VectorXd> g, Eigen::MatrixXd* jacobian) {
-  if (jacobian) jacobian->setZero();
+                                     Eigen::Ref<Eigen::VectorXd> g, Eigen::MatrixXd* jacobian,
+                                     bool jacobian_is_previous) {
+  if (jacobian && !jacobian_is_previous) jacobian->setZero();
   for (int k = 0; k < model.familyCount(); ++k) {
     const int first = model.familyFirstRow(k), rows = model.familyRowCount(k);
     if (rows == 0) continue;
     if (jacobian) {
       JacobianRows block(jacobian->middleRows(first, rows));
+      if (jacobian_is_previous && !model.family(k).rewritesJacobianRows()) block.setZero();
       model.family(k).evaluate(model, problem, U, g.segment(first, rows), &block);
     } else {
       model.family(k).evaluate(model, problem, U, g.segment(first, rows), nullptr);

@@ -16,9 +16,20 @@ namespace wpg::nmpc_internal {
 
 // The bodies of evaluateConstraints, buildCostGradient and evaluateCost without their size
 // checks: for the solver, whose entry point has checked the model and the problem once.
+// `jacobian_is_previous`: the Jacobian holds zeros or an earlier result of stackConstraints on
+// this model (the solver's workspace), so that only the rows of the families that do not
+// rewrite their rows (ConstraintFamily::rewritesJacobianRows) are zeroed; else all of it is.
 void stackConstraints(const NmpcModel& model, const NmpcProblem& problem,
                       const Eigen::Ref<const Eigen::VectorXd>& U, Eigen::Ref<Eigen::VectorXd> g,
-                      Eigen::MatrixXd* jacobian);
+                      Eigen::MatrixXd* jacobian, bool jacobian_is_previous = false);
+
+// Zeroes the step columns (F_x, F_y, F_theta of every previewed step) of a family's Jacobian
+// rows: the only columns the built-in families write besides the CoP rows' jerks, which those
+// rows rewrite whole (ConstraintFamily::rewritesJacobianRows).
+inline void clearStepColumns(JacobianRows& G, const NmpcLayout& L) {
+  G.middleCols(L.stepX(), L.steps).setZero();
+  G.middleCols(L.stepY(), 2 * L.steps).setZero();  // F_y and F_theta are adjacent
+}
 void costGradient(const NmpcModel& model, const NmpcProblem& problem,
                   Eigen::Ref<Eigen::VectorXd> gradient);
 double cost(const NmpcModel& model, const NmpcProblem& problem,
@@ -64,8 +75,9 @@ inline PoseRef previousOfStep(const NmpcLayout& L, const NmpcProblem& problem,
 // w = R(theta)' a and its derivative w' = dw/dtheta.
 struct RotatedEdge {
   double wx, wy, dwx, dwy;
-  RotatedEdge(double a1, double a2, double yaw) {
-    const double c = std::cos(yaw), s = std::sin(yaw);
+  RotatedEdge(double a1, double a2, double yaw) : RotatedEdge(a1, a2, std::cos(yaw), std::sin(yaw)) {}
+  // With c = cos(theta), s = sin(theta) computed once for every edge of a frame.
+  RotatedEdge(double a1, double a2, double c, double s) {
     wx = a1 * c - a2 * s;
     wy = a1 * s + a2 * c;
     dwx = -a1 * s - a2 * c;

@@ -26,6 +26,7 @@ class ObstacleConstraint final : public NamedConstraintFamily {
                 JacobianRows* jacobian) const override {
     const NmpcLayout& L = model.layout();
     const ObstacleRows rows = ObstacleRows::of(model);
+    if (jacobian) nmpc_internal::clearStepColumns(*jacobian, L);  // rewritesJacobianRows
     for (int i = 0; i < L.steps; ++i) {
       for (int k = 0; k < rows.slots; ++k) {
         const int row = rows.row(i, k);
@@ -79,6 +80,8 @@ class ObstacleConstraint final : public NamedConstraintFamily {
       }
     }
   }
+
+  bool rewritesJacobianRows() const override { return true; }
 
   // Step i becomes step i - 1 when a step was completed (step 0 has landed: its rows leave);
   // slot k stays slot k (it keeps its obstacle only approximately: the selection is redone at

@@ -201,7 +201,7 @@ NmpcSolveResult NmpcSolver::runSqp(const NmpcProblem& problem, const GeneratorSe
   for (int it = 0; it < max_iterations; ++it) {
     // eq. (21b)/(22b): g(U_lin) + G (U - U_lin) <= 0  <=>  G U <= G U_lin - g(U_lin)
     nmpc_internal::stackConstraints(model, problem, ws.linearization, ws.constraints,
-                                    &ws.jacobian);
+                                    &ws.jacobian, true);
     ws.upper.noalias() = ws.jacobian * ws.linearization;
     ws.upper -= ws.constraints;
     ws.solver.setActiveSetGuess(active_set_.data(), active_count_);

@@ -1,5 +1,7 @@
 // Step feasibility, paper eq. (14)-(15): each previewed step inside the polygon of reachable
 // placements attached to the step before it (5 rows per step for HRP-2's polygon).
+#include <cmath>
+
 #include "nmpc_internal.hpp"
 #include "wpg/nmpc/builtin_families.hpp"
 #include "wpg/nmpc/model.hpp"
@@ -24,6 +26,7 @@ class StepFeasibilityConstraint final : public NamedConstraintFamily {
     const NmpcLayout& L = model.layout();
     const PhaseStructure& phase = problem.phase;
     const StepFeasibilityRows rows = StepFeasibilityRows::of(model);
+    if (jacobian) nmpc_internal::clearStepColumns(*jacobian, L);  // rewritesJacobianRows
     for (int i = 0; i < L.steps; ++i) {
       const ConvexPolygon& polygon = model.feasibilityPolygon(phase.stepSide(i));
       if (phase.step_fixed(i)) {
@@ -32,8 +35,9 @@ class StepFeasibilityConstraint final : public NamedConstraintFamily {
       }
       const PoseRef prev = nmpc_internal::previousOfStep(L, problem, U, i);
       const double dx = U(L.stepX() + i) - prev.x, dy = U(L.stepY() + i) - prev.y;
+      const double c = std::cos(prev.yaw), s = std::sin(prev.yaw);  // once for every edge
       for (int e = 0; e < rows.edges; ++e) {
-        const RotatedEdge edge(polygon.normals()(e, 0), polygon.normals()(e, 1), prev.yaw);
+        const RotatedEdge edge(polygon.normals()(e, 0), polygon.normals()(e, 1), c, s);
         const int row = rows.row(i, e);
         g(row) = edge.value(dx, dy, polygon.offsets()(e));
         if (!jacobian) continue;
@@ -43,6 +47,8 @@ class StepFeasibilityConstraint final : public NamedConstraintFamily {
       }
     }
   }
+
+  bool rewritesJacobianRows() const override { return true; }
 
   // Step i becomes step i - 1 when a step was completed (step 0 has landed: its rows leave).
   int shiftedRow(const NmpcModel& model, int row, bool step_completed) const override {

@@ -17,6 +17,7 @@ class YawBoundConstraint final : public NamedConstraintFamily {
                 JacobianRows* jacobian) const override {
     const NmpcLayout& L = model.layout();
     const double bound = model.parameters().max_step_yaw_change;
+    if (jacobian) nmpc_internal::clearStepColumns(*jacobian, L);  // rewritesJacobianRows
     for (int i = 0; i < L.steps; ++i) {
       const int upper = YawBoundRows::row(i, true), lower = YawBoundRows::row(i, false);
       if (problem.phase.step_fixed(i)) {
@@ -37,6 +38,8 @@ class YawBoundConstraint final : public NamedConstraintFamily {
       }
     }
   }
+
+  bool rewritesJacobianRows() const override { return true; }
 
   // Step i becomes step i - 1 when a step was completed (step 0 has landed: its rows leave).
   int shiftedRow(const NmpcModel&, int row, bool step_completed) const override {

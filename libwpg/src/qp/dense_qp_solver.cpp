@@ -20,6 +20,7 @@
 // infeasibility (degenerate vertices).
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -157,21 +158,34 @@ QpStatus DenseQpSolver::solve(const HessianFactor& factor,
   }
   in_working_set_.head(mi).setZero();
 
-  startFromUnconstrainedMinimum(factor, g, x);
-  if (!addEqualities(E, e, x)) {
+  startFromUnconstrainedMinimum(factor, g);
+  if (!addEqualities(factor, g, E, e, x)) {
     storeResults(factor, g, x, me, mi, -1, 0.0);
     return QpStatus::kInfeasible;  // inconsistent equalities
   }
   active_equality_count_ = active_count_;
   if (guess_count > 0 && mi > 0) {
     loadGuessedRows(guess_count, C, n);
-    if (warm_start_kept_ > 0) solveOnWorkingSet(g, e, d, x);
+    if (warm_start_kept_ > 0) {
+      solveOnWorkingSet(g, e, d, x);  // the iterate afresh: the one of the equalities is not needed
+      iterate_steps_ = -1;
+    }
   }
+  updateIterate(factor, g, E, e, x);
 
   // Dual iterations (the iteration limit bounds them with the warm start's updates).
   iterations_ = warm_start_updates_;
   any_set_aside_ = false;
-  for (int p = mostViolatedRow(C, d, x); p >= 0; p = mostViolatedRow(C, d, x)) {
+  for (;;) {
+    const int p = mostViolatedRow(C, d, x);
+    if (p == kInvalidRow) {
+      // A non-finite entry of C (or an overflowing row): nothing of this solve is kept.
+      x.setZero();
+      iterations_ = warm_start_updates_ = warm_start_kept_ = 0;
+      active_count_ = active_equality_count_ = 0;
+      return QpStatus::kInvalidInput;
+    }
+    if (p < 0) break;
     const QpStatus status = addViolatedRow(p, factor, g, C, x, me);
     if (status != QpStatus::kOptimal) return status;
   }
@@ -197,33 +211,69 @@ bool DenseQpSolver::scaleInequalityRows(const Eigen::Ref<const Eigen::VectorXd>&
                                         const Eigen::Ref<const Eigen::VectorXd>& e,
                                         const Eigen::Ref<const Eigen::MatrixXd>& C,
                                         const Eigen::Ref<const Eigen::VectorXd>& d) {
-  // Row norms of C (for scale-invariant selection of the most violated constraint); the same
-  // pass catches non-finite entries of C (and rows whose squared norm overflows, > ~1e154).
-  const int n = static_cast<int>(g.size()), me = static_cast<int>(E.rows());
-  const int mi = static_cast<int>(C.rows());
-  row_scale_.head(mi).setZero();
-  for (int col = 0; col < n; ++col) row_scale_.head(mi) += C.col(col).cwiseAbs2();
-  if (!g.allFinite() || !e.allFinite() || !d.allFinite() || !row_scale_.head(mi).allFinite() ||
-      (me > 0 && !E.allFinite())) {
-    return false;
-  }
-  for (int i = 0; i < mi; ++i) {
-    const double norm = std::sqrt(row_scale_(i));
-    row_scale_(i) = norm > 0.0 ? 1.0 / norm : 1.0;
-  }
-  return true;
+  // The row norms of C (for the scale-invariant choice of the most violated row) are computed
+  // when a row is first found violated (rowScale): most rows never are, and C is the largest
+  // input. C's entries are checked for finiteness by the first product C x (mostViolatedRow):
+  // with x finite, a non-finite entry makes its row's C x non-finite.
+  const int me = static_cast<int>(E.rows()), mi = static_cast<int>(C.rows());
+  row_scale_.head(mi).setZero();  // 0 = not computed yet (a computed scale is > 0)
+  return g.allFinite() && e.allFinite() && d.allFinite() && (me == 0 || E.allFinite());
+}
+
+double DenseQpSolver::rowScale(const Eigen::Ref<const Eigen::MatrixXd>& C, int i) {
+  if (row_scale_(i) > 0.0) return row_scale_(i);
+  // The squares summed in column order, as a column-by-column accumulation over all rows would.
+  double norm2 = 0.0;
+  for (Eigen::Index col = 0; col < C.cols(); ++col) norm2 += C(i, col) * C(i, col);
+  if (!std::isfinite(norm2)) return -1.0;  // overflows (> ~1e154): invalid input
+  const double norm = std::sqrt(norm2);
+  row_scale_(i) = norm > 0.0 ? 1.0 / norm : 1.0;
+  return row_scale_(i);
 }
 
 void DenseQpSolver::startFromUnconstrainedMinimum(const HessianFactor& factor,
-                                                  const Eigen::Ref<const Eigen::VectorXd>& g,
-                                                  Eigen::Ref<Eigen::VectorXd> x) {
-  // x = -H^{-1} g = -J0 J0' g with J = J0: J' H J = I, and every column of J is free.
+                                                  const Eigen::Ref<const Eigen::VectorXd>& g) {
+  // J = J0: J' H J = I, and every column of J is free. Copied column by column, the upper
+  // triangle and then zeros (with the padding rows), as a triangular view would assign it.
   const int n = static_cast<int>(g.size());
-  J_.topLeftCorner(n, n) =
-      factor.inverse_factor_transposed.topLeftCorner(n, n).triangularView<Eigen::Upper>();
-  J_.block(n, 0, paddedRows(n) - n, n).setZero();
-  x = -g;
-  factor.solveInPlace(x);
+  const int rows = paddedRows(n);
+  const Eigen::MatrixXd& J0 = factor.inverse_factor_transposed;
+  for (int k = 0; k < n; ++k) {  // plain copies: Eigen's short dynamic segments cost more
+    double* column = J_.col(k).data();
+    std::memcpy(column, J0.col(k).data(), static_cast<std::size_t>(k + 1) * sizeof(double));
+    std::fill(column + k + 1, column + rows, 0.0);
+  }
+  iterate_steps_ = 0;  // x = -H^{-1} g is computed when needed (updateIterate)
+}
+
+void DenseQpSolver::updateIterate(const HessianFactor& factor,
+                                  const Eigen::Ref<const Eigen::VectorXd>& g,
+                                  const Eigen::Ref<const Eigen::MatrixXd>& E,
+                                  const Eigen::Ref<const Eigen::VectorXd>& e,
+                                  Eigen::Ref<Eigen::VectorXd> x) {
+  if (iterate_steps_ < 0) return;
+  const int n = static_cast<int>(x.size());
+  if (iterate_steps_ == 0) {
+    x = -g;  // x = -H^{-1} g = -J0 J0' g
+    factor.solveInPlace(x);
+    iterate_steps_ = 1;
+  }
+  // The full step of each equality added since, as it would have been taken when the equality
+  // was added: column q of J, column q of R and the dual direction from R's first q columns
+  // have not changed since (later updates touch only the columns after the equalities').
+  for (int q = iterate_steps_ - 1; q < active_count_ && active_(q) < 0; ++q) {
+    const int i = -1 - active_(q);
+    normal_.head(n) = -E.row(i).transpose();
+    const double violation = normal_.head(n).dot(x) + e(i);  // s = n'x - b with b = -e_i
+    const double h = R_(q, q);
+    r_.head(q) = R_.col(q).head(q);
+    R_.topLeftCorner(q, q).triangularView<Eigen::Upper>().solveInPlace(r_.head(q));
+    const double t = -violation / (h * h);
+    x += (t * h) * J_.col(q).head(n);  // z = h J_q
+    u_.head(q) -= t * r_.head(q);
+    u_(q) = t;
+    iterate_steps_ = q + 2;
+  }
 }
 
 bool DenseQpSolver::isDependent(double h, int n) const {
@@ -237,30 +287,32 @@ void DenseQpSolver::computeDualDirection() {
   R_.topLeftCorner(q, q).triangularView<Eigen::Upper>().solveInPlace(r_.head(q));
 }
 
-bool DenseQpSolver::addEqualities(const Eigen::Ref<const Eigen::MatrixXd>& E,
+bool DenseQpSolver::addEqualities(const HessianFactor& factor,
+                                  const Eigen::Ref<const Eigen::VectorXd>& g,
+                                  const Eigen::Ref<const Eigen::MatrixXd>& E,
                                   const Eigen::Ref<const Eigen::VectorXd>& e,
                                   Eigen::Ref<Eigen::VectorXd> x) {
   // Each is a full step of the paper with an unrestricted multiplier (no inequality is in the
-  // working set yet, so no partial step can occur).
+  // working set yet, so no partial step can occur). The steps themselves wait for updateIterate:
+  // a warm start that keeps a guessed row computes its iterate afresh and needs none of them.
   const int n = static_cast<int>(x.size());
   for (int i = 0; i < E.rows(); ++i) {
     normal_.head(n) = -E.row(i).transpose();
-    const double violation = normal_.head(n).dot(x) + e(i);  // s = n'x - b with b = -e_i
     const double h = reduceNormal(n);
     const int q = active_count_;
-    computeDualDirection();
     if (isDependent(h, n)) {
       // n+ = N r: consistent (hence redundant) when the violation is within what the
       // residuals of the equalities already in the working set can explain.
+      updateIterate(factor, g, E, e, x);
+      normal_.head(n) = -E.row(i).transpose();
+      const double violation = normal_.head(n).dot(x) + e(i);  // s = n'x - b with b = -e_i
+      computeDualDirection();
       const double explainable =
           settings_.feasibility_tolerance * (1.0 + r_.head(q).cwiseAbs().sum());
       if (std::abs(violation) <= explainable) continue;
       return false;
     }
-    const double t = -violation / (h * h);
-    x += (t * h) * J_.col(q).head(n);  // z = h J_q
-    u_.head(q) -= t * r_.head(q);
-    appendToWorkingSet(-1 - i, t);
+    appendToWorkingSet(-1 - i, 0.0);  // its multiplier: updateIterate
   }
   return true;
 }
@@ -335,17 +387,21 @@ int DenseQpSolver::mostViolatedRow(const Eigen::Ref<const Eigen::MatrixXd>& C,
   slack_.head(mi) -= d;
   int p = -1;
   double worst = 0.0;
+  bool finite = true;
   for (int i = 0; i < mi; ++i) {
     const double s = slack_(i);
+    finite = finite && std::isfinite(s);
     if (s > settings_.feasibility_tolerance && !in_working_set_(i)) {
-      const double scaled = s * row_scale_(i);
+      const double scale = rowScale(C, i);
+      if (scale < 0.0) return kInvalidRow;
+      const double scaled = s * scale;
       if (scaled > worst) {
         worst = scaled;
         p = i;
       }
     }
   }
-  return p;
+  return finite ? p : kInvalidRow;
 }
 
 double DenseQpSolver::dualStepLength(int* blocking) const {

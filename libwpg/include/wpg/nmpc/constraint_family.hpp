@@ -49,12 +49,18 @@ class ConstraintFamily {
   // set, its families and rows not yet.
   virtual int rowCount(const NmpcModel& model) const = 0;
   // g(U) of its rows (<= 0 when satisfied) into `g` (rowCount entries, its row 0 first) and,
-  // when `jacobian` is not null, dg/dU into its rows; the caller has zeroed them. Inactive
-  // rows (of a fixed step, an empty obstacle slot) are g = -1 with a zero Jacobian row. Must
-  // not allocate.
+  // when `jacobian` is not null, dg/dU into its rows; the caller has zeroed them, unless the
+  // family rewritesJacobianRows(). Inactive rows (of a fixed step, an empty obstacle slot) are
+  // g = -1 with a zero Jacobian row. Must not allocate.
   virtual void evaluate(const NmpcModel& model, const NmpcProblem& problem,
                         const Eigen::Ref<const Eigen::VectorXd>& U,
                         Eigen::Ref<Eigen::VectorXd> g, JacobianRows* jacobian) const = 0;
+  // True when evaluate() leaves its Jacobian rows exact whatever they held on entry, provided
+  // they held zeros or what an earlier evaluate() of this family on this model wrote: it
+  // rewrites (zeros included) every entry it may ever write. The solver then hands it the
+  // previous sample's Jacobian instead of zeroing its rows first (the built-in families do;
+  // a family that does not is simply zeroed).
+  virtual bool rewritesJacobianRows() const { return false; }
   // Warm start: the row that its row `row` (active at the last sample) becomes once the plan
   // is shifted one sample forward (and one step when a step was completed), or -1 when it
   // leaves the horizon or changes meaning. Must not allocate.

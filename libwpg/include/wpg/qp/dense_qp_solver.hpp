@@ -98,18 +98,26 @@ class DenseQpSolver {
                 const Eigen::Ref<const Eigen::MatrixXd>& C,
                 const Eigen::Ref<const Eigen::VectorXd>& d,
                 const Eigen::Ref<const Eigen::VectorXd>& x) const;
-  // row_scale_ = 1 / ||C_i||; false when some entry of g, E, e, C or d is not finite.
+  // Marks every row scale 1 / ||C_i|| not computed yet (rowScale computes them on demand);
+  // false when some entry of g, E, e or d is not finite (C's are checked by mostViolatedRow).
   bool scaleInequalityRows(const Eigen::Ref<const Eigen::VectorXd>& g,
                            const Eigen::Ref<const Eigen::MatrixXd>& E,
                            const Eigen::Ref<const Eigen::VectorXd>& e,
                            const Eigen::Ref<const Eigen::MatrixXd>& C,
                            const Eigen::Ref<const Eigen::VectorXd>& d);
-  // Step 0: x = -H^{-1} g, J = J0, empty working set.
+  // Step 0: J = J0, empty working set; x = -H^{-1} g left to updateIterate.
   void startFromUnconstrainedMinimum(const HessianFactor& factor,
-                                     const Eigen::Ref<const Eigen::VectorXd>& g,
-                                     Eigen::Ref<Eigen::VectorXd> x);
-  // Adds every equality with a full step; false when they are inconsistent.
-  bool addEqualities(const Eigen::Ref<const Eigen::MatrixXd>& E,
+                                     const Eigen::Ref<const Eigen::VectorXd>& g);
+  // Adds every equality to the working set (their full steps left to updateIterate); false
+  // when they are inconsistent.
+  bool addEqualities(const HessianFactor& factor, const Eigen::Ref<const Eigen::VectorXd>& g,
+                     const Eigen::Ref<const Eigen::MatrixXd>& E,
+                     const Eigen::Ref<const Eigen::VectorXd>& e, Eigen::Ref<Eigen::VectorXd> x);
+  // Brings x (and the equalities' multipliers) up to the working set's equalities: x = -H^{-1}
+  // g, then the full step of each equality added since, in order, with the same operations as
+  // if each had been taken when it was added. Nothing when the iterate was computed afresh.
+  void updateIterate(const HessianFactor& factor, const Eigen::Ref<const Eigen::VectorXd>& g,
+                     const Eigen::Ref<const Eigen::MatrixXd>& E,
                      const Eigen::Ref<const Eigen::VectorXd>& e, Eigen::Ref<Eigen::VectorXd> x);
   // Loads the guessed inequality rows that are independent of the working set.
   void loadGuessedRows(int guess_count, const Eigen::Ref<const Eigen::MatrixXd>& C, int n);
@@ -119,8 +127,13 @@ class DenseQpSolver {
                          const Eigen::Ref<const Eigen::VectorXd>& e,
                          const Eigen::Ref<const Eigen::VectorXd>& d,
                          Eigen::Ref<Eigen::VectorXd> x);
+  // 1 / ||C_i|| (1 for a zero row), computed at the first call of the solve; -1 when the
+  // squared norm is not finite.
+  double rowScale(const Eigen::Ref<const Eigen::MatrixXd>& C, int i);
   // Step 1: the most violated row not in the working set (violation scaled by the row norm),
-  // -1 when x is feasible. slack_ = C x - d afterwards.
+  // -1 when x is feasible, kInvalidRow when C x - d is not finite (a non-finite entry of C,
+  // x being finite) or a violated row's norm overflows. slack_ = C x - d afterwards.
+  static constexpr int kInvalidRow = -2;
   int mostViolatedRow(const Eigen::Ref<const Eigen::MatrixXd>& C,
                       const Eigen::Ref<const Eigen::VectorXd>& d,
                       const Eigen::Ref<const Eigen::VectorXd>& x);
@@ -184,12 +197,15 @@ class DenseQpSolver {
   Eigen::VectorXd gradient_;      // max_n: J'g (warm start)
   Eigen::VectorXd cosines_, sines_;  // max_n: Givens rotations of one update, applied to J at once
   Eigen::VectorXd slack_;         // max_mi: C x - d (positive = violated)
-  Eigen::VectorXd row_scale_;     // max_mi: 1 / ||C_i|| (1 for zero rows)
+  Eigen::VectorXd row_scale_;     // max_mi: 1 / ||C_i|| (1 for zero rows), 0 = not computed yet
   Eigen::VectorXi active_;        // max_n: working set, equality i -> -1-i, inequality i -> i
   Eigen::Matrix<unsigned char, Eigen::Dynamic, 1> in_working_set_;  // max_mi
   int active_count_ = 0;          // q
   int active_equality_count_ = 0; // equalities in the working set (always the first ones)
   bool any_set_aside_ = false;    // some in_working_set_ entry is kSetAside
+  // updateIterate: 0 = x not computed yet; k > 0 = x holds -H^{-1} g and the full steps of the
+  // working set's first k - 1 equalities; -1 = x is current (computed afresh)
+  int iterate_steps_ = 0;
 };
 
 }  // namespace wpg::qp
