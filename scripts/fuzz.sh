@@ -32,11 +32,6 @@ wpg_sanitizer_env ""  # reports on stderr, in the fuzzer's log with the input th
 dataset_seeds="$build/fuzz/seeds/fuzz_run_dataset_reader"
 "$build/tests/fuzz/make_dataset_seeds" "$dataset_seeds" 40 \
   "$repo"/datasets/references/{walk_forward,push,goal_with_yaw,obstacle_cluttered}.h5 >/dev/null
-# Seeds of the shard reader: the shard files of small studies (tests/fuzz/seeds/shard_files/),
-# cut the same way.
-shard_seeds="$build/fuzz/seeds/fuzz_shard_reader"
-"$build/tests/fuzz/make_dataset_seeds" "$shard_seeds" 40 "$repo"/tests/fuzz/seeds/shard_files/*.h5 \
-  >/dev/null
 
 status=0
 for target in "${targets[@]}"; do
@@ -55,7 +50,7 @@ for target in "${targets[@]}"; do
              "$repo/tests/cli/bad_compare_studies" "$repo/tests/fuzz/seeds/study_loader")
       extra=(-dict="$repo/tests/fuzz/study_loader.dict") ;;
     fuzz_shard_reader)
-      seeds=("$shard_seeds") ;;
+      seeds=("$repo/tests/fuzz/seeds/shard_reader") ;;
   esac
   [[ -d "$repo/tests/fuzz/regressions/$target" ]] && seeds+=("$repo/tests/fuzz/regressions/$target")
   echo "fuzz: $target for ${seconds} s (log: $work/fuzz.log)"

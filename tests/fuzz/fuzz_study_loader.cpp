@@ -16,6 +16,9 @@
 // limit (a million runs) is slow by design, not a hang. The count is a harness estimate; the
 // loader's own count and cap are what the test exercises below that size.
 //
+// WPG_FUZZ_VERBOSE=1 (environment) prints what each loader made of an input (runs, or the
+// refusal).
+//
 // Properties checked, beyond "no crash, no sanitizer report, no hang, no leak": bad input is an
 // InputError (the CLI's exit 2), any other exception escapes and is reported as a crash; an
 // accepted study has unique run names, one swept value per key in every run, a 16-digit
@@ -77,13 +80,17 @@ std::string shippedScenario(const std::string& name) {
   return path.string();
 }
 
+// yaml-cpp throws on the type of a missing key's node: these answer false instead.
+bool isMap(const YAML::Node& node) { return node.IsDefined() && node.IsMap(); }
+bool isSequence(const YAML::Node& node) { return node.IsDefined() && node.IsSequence(); }
+
 // The length of a sequence node, 1 for anything else (a harness estimate only).
 std::size_t lengthOf(const YAML::Node& node) {
-  return node.IsSequence() ? std::max<std::size_t>(node.size(), 1) : 1;
+  return isSequence(node) ? std::max<std::size_t>(node.size(), 1) : 1;
 }
 
 std::size_t countOf(const YAML::Node& node) {
-  if (!node.IsScalar()) return 1;
+  if (!node.IsDefined() || !node.IsScalar()) return 1;
   try {
     const long long value = node.as<long long>();
     return value < 1 ? 1 : static_cast<std::size_t>(std::min<long long>(value, 1LL << 40));
@@ -97,31 +104,29 @@ std::size_t countOf(const YAML::Node& node) {
 std::size_t estimatedRuns(const std::string& text) {
   try {
     const YAML::Node root = YAML::Load(text);
-    if (!root.IsMap()) return 0;
+    if (!isMap(root)) return 0;
     std::size_t runs = 1;
     const auto times = [&](std::size_t factor) {
       runs = factor != 0 && runs > (std::size_t{1} << 40) / factor ? (std::size_t{1} << 40)
                                                                    : runs * factor;
     };
     const YAML::Node sweep = root["sweep"];
-    if (sweep.IsMap()) {
-      if (sweep["grid"].IsMap()) {
+    if (isMap(sweep)) {
+      if (isMap(sweep["grid"])) {
         for (const auto& item : sweep["grid"]) times(lengthOf(item.second));
       }
-      if (sweep["zip"].IsMap()) {
+      if (isMap(sweep["zip"])) {
         std::size_t longest = 1;
         for (const auto& item : sweep["zip"]) longest = std::max(longest, lengthOf(item.second));
         times(longest);
       }
-      if (sweep["random"].IsMap()) times(countOf(sweep["random"]["samples"]));
+      if (isMap(sweep["random"])) times(countOf(sweep["random"]["samples"]));
     }
     times(lengthOf(root["worlds"]));
-    if (root["variants"].IsMap()) times(std::max<std::size_t>(root["variants"].size(), 1));
-    times(root["seeds"].IsSequence() ? lengthOf(root["seeds"]) : countOf(root["seeds"]));
+    if (isMap(root["variants"])) times(std::max<std::size_t>(root["variants"].size(), 1));
+    times(isSequence(root["seeds"]) ? lengthOf(root["seeds"]) : countOf(root["seeds"]));
     return runs;
-  } catch (const YAML::Exception&) {
-    return 0;
-  } catch (const std::exception&) {
+  } catch (const std::exception&) {  // YAML::Exception; the loader says what is wrong
     return 0;
   }
 }
@@ -170,9 +175,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     writeFile(base_path, input.substr(separator + 1));
   }
 
+  static const bool verbose = std::getenv("WPG_FUZZ_VERBOSE") != nullptr;
   try {
-    checkStudy(wpg::datasets::loadStudy(study_path.string(), shippedScenario, robots, 1), text);
-  } catch (const wpg::datasets::InputError&) {
+    const wpg::datasets::Study study =
+        wpg::datasets::loadStudy(study_path.string(), shippedScenario, robots, 1);
+    checkStudy(study, text);
+    if (verbose) std::fprintf(stderr, "batch study: %zu runs\n", study.runs.size());
+  } catch (const wpg::datasets::InputError& error) {
+    if (verbose) std::fprintf(stderr, "batch study: %s\n", error.what());
   }
   try {
     const wpg::datasets::ComparisonStudy comparison =
@@ -182,7 +192,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         comparison.worlds.size() * comparison.variants.size() * comparison.seeds.size()) {
       propertyViolated("runs are not worlds x variants x seeds", text);
     }
-  } catch (const wpg::datasets::InputError&) {
+    if (verbose) std::fprintf(stderr, "comparison study: %zu runs\n", comparison.study.runs.size());
+  } catch (const wpg::datasets::InputError& error) {
+    if (verbose) std::fprintf(stderr, "comparison study: %s\n", error.what());
   }
   return 0;
 }
