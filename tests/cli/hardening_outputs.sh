@@ -189,6 +189,22 @@ compare_full_disk)
     [[ "$(wc -l <stderr)" == 1 ]] || fail "batch on a full disk: not one line: $(head -5 stderr)"
   done
   ;;
+push_sweep_full_disk)
+  # The push-sweep file past a file size limit: its close failed inside ~H5File, unheard, the
+  # partial file was renamed into place and HDF5's exit-time cleanup crashed (exit 139). Now
+  # exit 3, one line, no file left, for a limit hit while writing (4 kB) or while closing.
+  for limit in 4 10 30; do
+    status=0
+    ( ulimit -f $limit; exec "$wpg" push-sweep --situation forward --phases 2 -o ps.h5 --no-plot ) \
+      >stdout 2>stderr || status=$?
+    [[ $status == 3 ]] || fail "push-sweep past ulimit -f $limit: exit $status, expected 3 ($(cat stderr))"
+    # (besides its progress line)
+    [[ "$(grep -cv '^push-sweep: [0-9]*/[0-9]* runs' stderr)" == 1 ]] ||
+      fail "push-sweep past ulimit -f $limit: not one line: $(cat stderr)"
+    [[ ! -e ps.h5 ]] || fail "push-sweep past ulimit -f $limit: ps.h5 was left"
+    no_leftovers
+  done
+  ;;
 *) fail "unknown case $case_name" ;;
 esac
 echo ok
