@@ -11,11 +11,13 @@ regular expressions.
 """
 import math
 import os
+import stat
 import sys
 
 # As wpg/datasets/storage/read_limits.hpp.
 MAX_STORED_SAMPLES = 720001  # rows of a run's per-sample datasets (3600 s at 5 ms, + 1)
 MAX_READ_ELEMENTS = 1 << 26  # elements of any one dataset or attribute
+MAX_LINK_DEPTH = 8  # links followed inside links, as kMaxExternalLinkDepth of wpg's readers
 
 
 class BadFile(Exception):
@@ -128,9 +130,66 @@ class Reader:
     def _get(self, parent, name):
         where = _join(parent.name, name)
         try:
-            return parent.get(name), where
+            return self._follow(parent, name, 0), where
+        except BadFile:
+            raise
         except (OSError, KeyError, ValueError, RuntimeError) as error:
             self.fail(where, "cannot read it (%s)" % one_line(error)[:160])
+
+    def _follow(self, parent, name, depth):
+        """The object `name` (a path) below `parent`, or None: every link on the way checked
+        BEFORE h5py follows it. h5py (HDF5) would open an external link's target with open(2),
+        which blocks forever on a FIFO and reads any file: as wpg's C++ readers
+        (external_link_guard.cpp), the target must be a regular file, and links inside links
+        are followed at most MAX_LINK_DEPTH deep (a cycle)."""
+        import h5py
+        current = parent.file["/"] if name.startswith("/") else parent
+        for part in [part for part in name.split("/") if part and part != "."]:
+            where = _join(current.name, part)
+            if not isinstance(current, h5py.Group):
+                self.fail(current.name, "expected a group")
+            link = current.get(part, getlink=True)
+            if link is None:
+                return None
+            if isinstance(link, (h5py.SoftLink, h5py.ExternalLink)) and depth >= MAX_LINK_DEPTH:
+                self.fail(where, "more than %d links followed one inside another (a cycle?)"
+                          % MAX_LINK_DEPTH)
+            if isinstance(link, h5py.SoftLink):
+                current = self._follow(current, link.path, depth + 1)
+            elif isinstance(link, h5py.ExternalLink):
+                current = self._follow_external(current.file.filename, where, link, depth)
+            else:
+                current = current[part]
+            if current is None:
+                return None
+        return current
+
+    def _follow_external(self, holder, where, link, depth):
+        """The object an external link of the file `holder` names, its file checked first."""
+        import h5py
+        described = "external link to '%s'" % link.filename
+        # Where HDF5 looks (without HDF5_EXT_PREFIX): an absolute name as it is; a relative one
+        # beside the file holding the link, then from the working folder.
+        candidates = [link.filename] if os.path.isabs(link.filename) else [
+            os.path.join(os.path.dirname(os.path.abspath(holder)), link.filename), link.filename]
+        for candidate in candidates:
+            try:
+                mode = os.stat(candidate).st_mode
+            except (OSError, ValueError):
+                continue
+            if not stat.S_ISREG(mode):
+                self.fail(where, "%s: expected a regular file, got %s"
+                          % (described, _file_type_name(mode)))
+            try:
+                target = h5py.File(candidate, "r")
+            except (OSError, ValueError) as error:
+                self.fail(where, "%s: cannot open it as an HDF5 file (%s)"
+                          % (described, one_line(error)[:120]))
+            found = self._follow(target["/"], link.path, depth + 1)
+            if found is None:
+                self.fail(where, "%s: no object '%s' in it" % (described, link.path))
+            return found
+        self.fail(where, "%s: no such file" % described)
 
     def group(self, parent, name, optional=False):
         """The group `name` below `parent` (None when optional and absent)."""
@@ -143,8 +202,11 @@ class Reader:
         return item
 
     def has(self, parent, name):
+        """Whether `name` exists below `parent` (its links checked: BadFile on a hostile one)."""
         try:
-            return name in parent
+            return self._follow(parent, name, 0) is not None
+        except BadFile:
+            raise
         except (OSError, KeyError, ValueError, RuntimeError):
             return False
 
@@ -253,6 +315,15 @@ class Reader:
 
 def _text(value):
     return value.decode("utf-8", "replace") if isinstance(value, bytes) else str(value)
+
+
+def _file_type_name(mode):
+    for test, name in ((stat.S_ISDIR, "a folder"), (stat.S_ISFIFO, "a FIFO (pipe)"),
+                       (stat.S_ISCHR, "a character device"), (stat.S_ISBLK, "a block device"),
+                       (stat.S_ISSOCK, "a socket"), (stat.S_ISLNK, "a symbolic link")):
+        if test(mode):
+            return name
+    return "a special file"
 
 
 def _join(parent, name):

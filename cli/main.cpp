@@ -13,6 +13,7 @@
 #include "data_paths.hpp"
 #include "error_messages.hpp"
 #include "exit_codes.hpp"
+#include "hdf5_destructor_reports.hpp"
 #include "registration.hpp"
 #include "wpg/datasets/input/input_error.hpp"
 #include "wpg/engine/mpi_executor.hpp"
@@ -37,6 +38,8 @@ int main(int argc, char** argv) {
   // temporary file left behind: ignored, the write fails with EFBIG instead, an I/O error like
   // a full disk (exit 3, the temporary file removed). Inherited by the plot scripts too.
   std::signal(SIGXFSZ, SIG_IGN);
+  // A failed write is one line on stderr, not one more per HDF5 object unwound.
+  dropHdf5DestructorReports();
 
   CLI::App app{
       "wpg: walking pattern generator for humanoid robots, after Naveau et al., \"A Reactive "

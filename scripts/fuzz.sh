@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # scripts/fuzz.sh [SECONDS] [TARGET...]: runs each libFuzzer target (tests/fuzz/README.md) for
-# SECONDS (default 60, the CI smoke run) in the sanitizer tree build-sanitize/ (or
+# SECONDS (default 30: CI's smoke run, 4 x 30 s) in the sanitizer tree build-sanitize/ (or
 # $WPG_SANITIZE_BUILD_DIR; built when needed). Targets: fuzz_scenario_loader,
-# fuzz_run_dataset_reader (default: both). The corpus grows in BUILD/fuzz/<target>/corpus and is
+# fuzz_run_dataset_reader, fuzz_study_loader, fuzz_shard_reader (default: all four). The corpus grows in BUILD/fuzz/<target>/corpus and is
 # kept between runs; the seeds and tests/fuzz/regressions/<target>/ are run first. Fails on a
 # crash, hang (> 10 s for one input), leak, sanitizer report or allocation over 1 GB; the
 # input that did it is BUILD/fuzz/<target>/crash-* (or timeout-*, leak-*, oom-*).
@@ -12,14 +12,15 @@ build="$(realpath -m -- "${WPG_SANITIZE_BUILD_DIR:-$repo/build-sanitize}")"
 # shellcheck source=scripts/sanitizer-env.sh
 source "$repo/scripts/sanitizer-env.sh"
 
-seconds="${1:-60}"
+seconds="${1:-30}"
 [[ "$seconds" =~ ^[1-9][0-9]*$ ]] || { echo "fuzz: error: SECONDS must be a positive integer, got '$seconds'" >&2; exit 2; }
 shift $(($# > 0 ? 1 : 0))
 targets=("$@")
-((${#targets[@]})) || targets=(fuzz_scenario_loader fuzz_run_dataset_reader)
+all_targets=(fuzz_scenario_loader fuzz_run_dataset_reader fuzz_study_loader fuzz_shard_reader)
+((${#targets[@]})) || targets=("${all_targets[@]}")
 for target in "${targets[@]}"; do
-  [[ "$target" == fuzz_scenario_loader || "$target" == fuzz_run_dataset_reader ]] \
-    || { echo "fuzz: error: unknown target '$target' (fuzz_scenario_loader, fuzz_run_dataset_reader)" >&2; exit 2; }
+  [[ " ${all_targets[*]} " == *" $target "* ]] \
+    || { echo "fuzz: error: unknown target '$target' (${all_targets[*]})" >&2; exit 2; }
 done
 
 wpg_sanitizer_tree "$build"
@@ -44,6 +45,12 @@ for target in "${targets[@]}"; do
       extra=(-dict="$repo/tests/fuzz/scenario_loader.dict") ;;
     fuzz_run_dataset_reader)
       seeds=("$dataset_seeds") ;;
+    fuzz_study_loader)
+      seeds=("$repo/datasets/studies" "$repo/tests/cli/studies" "$repo/tests/cli/bad_studies"
+             "$repo/tests/cli/bad_compare_studies" "$repo/tests/fuzz/seeds/study_loader")
+      extra=(-dict="$repo/tests/fuzz/study_loader.dict") ;;
+    fuzz_shard_reader)
+      seeds=("$repo/tests/fuzz/seeds/shard_reader") ;;
   esac
   [[ -d "$repo/tests/fuzz/regressions/$target" ]] && seeds+=("$repo/tests/fuzz/regressions/$target")
   echo "fuzz: $target for ${seconds} s (log: $work/fuzz.log)"

@@ -111,6 +111,25 @@ PY
   refused 2 "s1.h5: /batch/summary/exit_status: expected numbers" merge idx.h5 s1.h5 s0.h5 --copy --no-plot
   [[ ! -e idx.h5 ]] || fail "an index was written"
   ;;
+huge_shard_names)
+  # A shard whose /batch/summary/name declares 2^40 runs in a few kB (found by
+  # fuzz_shard_reader): refused before anything is allocated (8 TB of pointers), naming the
+  # shard and the dataset; no index written. Its `done` too.
+  "$wpg" batch study.yaml -o s0.h5 --shard 0/2 --no-plot >/dev/null 2>&1
+  cp s0.h5 s1.h5
+  "$PYTHON" - <<'PY'
+import h5py
+for path, name in (("s0.h5", "name"), ("s1.h5", "done")):
+    with h5py.File(path, "r+") as f:
+        table = f["batch/summary"]
+        dtype = table[name].dtype
+        del table[name]
+        table.create_dataset(name, shape=(2**40,), dtype=dtype, chunks=(1024,))
+PY
+  refused 2 "s0.h5: /batch/summary/name: expected at most 1000000 runs" merge idx.h5 s0.h5 --no-plot
+  refused 2 "s1.h5: /batch/summary/done: expected at most 1000000 runs" merge idx.h5 s1.h5 --no-plot
+  [[ ! -e idx.h5 ]] || fail "an index was written"
+  ;;
 messages)
   # Values as given, never rounded away: 1e-320 s is not "0.000000".
   refused 2 "got 1e-320" run walk_forward --set duration=1e-320 -o a.h5 --no-plot

@@ -103,7 +103,32 @@ class QuietHdf5 {
   void* data_ = nullptr;
 };
 
+// A 1-D dataset of variable-length UTF-8 strings, `texts` repeated over its rows.
+void writeTextDataset(hid_t file, hid_t link_plist, const std::string& path,
+                      const ArrayEntry& array) {
+  const hsize_t rows = std::min<hsize_t>(array.rows, kMaxWrittenValues);
+  const hid_t space = H5Screate_simple(1, &rows, nullptr);
+  if (space < 0) return;
+  const hid_t type = H5Tcopy(H5T_C_S1);
+  H5Tset_size(type, H5T_VARIABLE);
+  H5Tset_cset(type, H5T_CSET_UTF8);
+  const hid_t dataset =
+      H5Dcreate2(file, path.c_str(), type, space, link_plist, H5P_DEFAULT, H5P_DEFAULT);
+  if (dataset >= 0 && rows > 0) {
+    static const std::string empty;
+    std::vector<const char*> pointers(rows);
+    for (hsize_t i = 0; i < rows; ++i) {
+      pointers[i] = (array.texts.empty() ? empty : array.texts[i % array.texts.size()]).c_str();
+    }
+    H5Dwrite(dataset, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, pointers.data());
+  }
+  if (dataset >= 0) H5Dclose(dataset);
+  H5Tclose(type);
+  H5Sclose(space);
+}
+
 void writeDataset(hid_t file, hid_t link_plist, const std::string& path, const ArrayEntry& array) {
+  if (array.text) return writeTextDataset(file, link_plist, path, array);
   const hsize_t dims[2] = {array.rows, array.columns};
   const hid_t space = H5Screate_simple(array.rank, dims, nullptr);
   if (space < 0) return;
@@ -116,7 +141,8 @@ void writeDataset(hid_t file, hid_t link_plist, const std::string& path, const A
                               std::max<hsize_t>(array.columns, 1)};
     H5Pset_chunk(create_plist, array.rank, chunk);
   }
-  const hid_t file_type = array.integer ? H5T_STD_I32LE : H5T_IEEE_F64LE;
+  const hid_t file_type =
+      array.integer ? (array.byte ? H5T_STD_U8LE : H5T_STD_I32LE) : H5T_IEEE_F64LE;
   const hid_t dataset =
       H5Dcreate2(file, path.c_str(), file_type, space, link_plist, create_plist, H5P_DEFAULT);
   if (dataset >= 0 && !declared_only && count > 0) {
@@ -143,19 +169,35 @@ void writeAttribute(hid_t file, hid_t link_plist, const std::string& path,
     if (object < 0) return;
   }
   if (H5Aexists(object, attribute.name.c_str()) > 0) H5Adelete(object, attribute.name.c_str());
-  const hid_t space = H5Screate(H5S_SCALAR);
+  const hsize_t items = attribute.kind == AttributeEntry::Kind::kString ? attribute.texts.size()
+                                                                        : attribute.numbers.size();
+  const hid_t space = attribute.list ? H5Screate_simple(1, &items, nullptr) : H5Screate(H5S_SCALAR);
   hid_t type = -1;
   if (attribute.kind == AttributeEntry::Kind::kString) {
     // Variable-length, as hdf5_writing.cpp stores the scenario and every text attribute.
     type = H5Tcopy(H5T_C_S1);
     H5Tset_size(type, H5T_VARIABLE);
+    H5Tset_cset(type, H5T_CSET_UTF8);
   } else {
     type = H5Tcopy(attribute.kind == AttributeEntry::Kind::kDouble ? H5T_IEEE_F64LE
                                                                   : H5T_STD_I32LE);
   }
   const hid_t created =
       H5Acreate2(object, attribute.name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT);
-  if (created >= 0) {
+  if (created >= 0 && attribute.list) {
+    if (attribute.kind == AttributeEntry::Kind::kString) {
+      std::vector<const char*> pointers;
+      for (const std::string& text : attribute.texts) pointers.push_back(text.c_str());
+      if (!pointers.empty()) H5Awrite(created, type, pointers.data());
+    } else if (attribute.kind == AttributeEntry::Kind::kDouble) {
+      if (!attribute.numbers.empty()) H5Awrite(created, H5T_NATIVE_DOUBLE, attribute.numbers.data());
+    } else {
+      std::vector<std::int32_t> values;
+      for (const double number : attribute.numbers) values.push_back(toInt32(number));
+      if (!values.empty()) H5Awrite(created, H5T_NATIVE_INT32, values.data());
+    }
+    H5Aclose(created);
+  } else if (created >= 0) {
     if (attribute.kind == AttributeEntry::Kind::kString) {
       const char* text = attribute.text.c_str();  // an embedded NUL ends the stored text
       H5Awrite(created, type, &text);
@@ -198,7 +240,33 @@ bool readAttribute(hid_t object, hsize_t index, Entry* entry) {
   const hid_t type = H5Aget_type(attribute);
   const H5T_class_t type_class = H5Tget_class(type);
   bool keep = true;
-  if (type_class == H5T_STRING) {
+  const hid_t attribute_space = H5Aget_space(attribute);
+  const int rank = H5Sget_simple_extent_ndims(attribute_space);
+  const hssize_t points = H5Sget_simple_extent_npoints(attribute_space);
+  H5Sclose(attribute_space);
+  if (rank == 1 && points >= 0 && static_cast<std::size_t>(points) <= kMaxListItems &&
+      (type_class == H5T_STRING || type_class == H5T_FLOAT || type_class == H5T_INTEGER)) {
+    // A list: variable-length strings (the summary's `columns`) or numbers.
+    result.list = true;
+    if (type_class == H5T_STRING) {
+      result.kind = AttributeEntry::Kind::kString;
+      std::vector<char*> texts(static_cast<std::size_t>(points), nullptr);
+      if (H5Tis_variable_str(type) > 0 && points > 0 &&
+          H5Aread(attribute, type, texts.data()) >= 0) {
+        for (char* text : texts) {
+          result.texts.emplace_back(text ? text : "");
+          H5free_memory(text);
+        }
+      }
+    } else {
+      result.kind = type_class == H5T_FLOAT ? AttributeEntry::Kind::kDouble
+                                            : AttributeEntry::Kind::kInt;
+      result.numbers.resize(static_cast<std::size_t>(points));
+      if (points > 0 && H5Aread(attribute, H5T_NATIVE_DOUBLE, result.numbers.data()) < 0) {
+        result.numbers.clear();
+      }
+    }
+  } else if (type_class == H5T_STRING) {
     result.kind = AttributeEntry::Kind::kString;
     if (H5Tis_variable_str(type) > 0) {
       char* text = nullptr;
@@ -241,11 +309,42 @@ void readAttributes(hid_t object, const std::string& path, FileImage* image) {
   }
 }
 
+void readTextDataset(hid_t dataset, const std::string& path, FileImage* image) {
+  const hid_t space = H5Dget_space(dataset);
+  const int rank = H5Sget_simple_extent_ndims(space);
+  const hssize_t rows = H5Sget_simple_extent_npoints(space);
+  H5Sclose(space);
+  if (rank != 1 || rows < 0 || static_cast<std::size_t>(rows) > kMaxListItems) return;
+  Entry entry;
+  entry.kind = Entry::Kind::kDataset;
+  entry.path = path;
+  entry.array.text = true;
+  entry.array.rows = static_cast<std::uint64_t>(rows);
+  std::vector<char*> texts(static_cast<std::size_t>(rows), nullptr);
+  const hid_t type = H5Tcopy(H5T_C_S1);
+  H5Tset_size(type, H5T_VARIABLE);
+  H5Tset_cset(type, H5T_CSET_UTF8);
+  if (rows > 0 && H5Dread(dataset, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, texts.data()) >= 0) {
+    for (char* text : texts) {
+      entry.array.texts.emplace_back(text ? text : "");
+      H5free_memory(text);
+    }
+  }
+  H5Tclose(type);
+  image->entries.push_back(entry);
+}
+
 void readDataset(hid_t dataset, const std::string& path, std::uint64_t max_rows,
                  FileImage* image) {
   const hid_t type = H5Dget_type(dataset);
   const H5T_class_t type_class = H5Tget_class(type);
+  const std::size_t type_size = H5Tget_size(type);
+  const bool variable_string = type_class == H5T_STRING && H5Tis_variable_str(type) > 0;
   H5Tclose(type);
+  if (variable_string) {
+    readTextDataset(dataset, path, image);
+    return;
+  }
   if (type_class != H5T_FLOAT && type_class != H5T_INTEGER) return;
   const hid_t space = H5Dget_space(dataset);
   const int rank = H5Sget_simple_extent_ndims(space);
@@ -261,6 +360,7 @@ void readDataset(hid_t dataset, const std::string& path, std::uint64_t max_rows,
   entry.path = path;
   ArrayEntry& array = entry.array;
   array.integer = type_class == H5T_INTEGER;
+  array.byte = array.integer && type_size == 1;
   array.rank = rank;
   array.rows = dims[0];
   array.columns = static_cast<std::uint32_t>(rank == 2 ? dims[1] : 1);
@@ -305,31 +405,62 @@ FileImage decode(const std::uint8_t* data, std::size_t size, std::uint64_t max_r
   FileImage image;
   while (!in.empty() && image.entries.size() < kMaxEntries) {
     Entry entry;
-    entry.kind = static_cast<Entry::Kind>(in.unsignedValue(1) % 3);
+    // Kind byte: 0x80 a link (0x40: external), else group, dataset, attribute (mod 3).
+    const std::uint64_t kind = in.unsignedValue(1);
+    entry.kind = (kind & 0x80) != 0
+                     ? ((kind & 0x40) != 0 ? Entry::Kind::kExternalLink : Entry::Kind::kSoftLink)
+                     : static_cast<Entry::Kind>(kind % 3);
     entry.path = in.text();
     if (entry.kind == Entry::Kind::kDataset) {
       ArrayEntry& array = entry.array;
+      // Flags: 1 integer, 2 two columns or more, 4 uint8 (integer) or text (not integer).
       const std::uint64_t flags = in.unsignedValue(1);
       array.integer = (flags & 1) != 0;
-      array.rank = (flags & 2) != 0 ? 2 : 1;
-      array.rows = in.unsignedValue(8) % (max_rows + 1);
+      array.byte = array.integer && (flags & 4) != 0;
+      array.text = !array.integer && (flags & 4) != 0;
+      array.rank = (flags & 2) != 0 && !array.text ? 2 : 1;
+      array.rows = in.unsignedValue(8) % ((array.text ? kMaxWrittenValues : max_rows) + 1);
       array.columns = static_cast<std::uint32_t>(in.unsignedValue(1) % (kMaxColumns + 1));
       if (array.rank == 1) array.columns = 1;
       array.step = in.number();
       const std::uint64_t wanted = in.unsignedValue(4);
-      const std::uint64_t available = in.remaining() / 8;
-      const std::uint64_t count = std::min({wanted, valueCount(array), kMaxWrittenValues, available});
-      array.values.resize(count);
-      for (double& value : array.values) value = in.number();
+      if (array.text) {
+        const std::uint64_t count = std::min<std::uint64_t>({wanted, kMaxListItems, in.remaining()});
+        for (std::uint64_t i = 0; i < count && !in.empty(); ++i) array.texts.push_back(in.text());
+      } else {
+        const std::uint64_t available = in.remaining() / 8;
+        const std::uint64_t count =
+            std::min({wanted, valueCount(array), kMaxWrittenValues, available});
+        array.values.resize(count);
+        for (double& value : array.values) value = in.number();
+      }
     } else if (entry.kind == Entry::Kind::kAttribute) {
       AttributeEntry& attribute = entry.attribute;
       attribute.name = in.text();
-      attribute.kind = static_cast<AttributeEntry::Kind>(in.unsignedValue(1) % 3);
-      if (attribute.kind == AttributeEntry::Kind::kString) {
+      // Kind byte: string, double, int (mod 3 of the low 7 bits); 0x80 a list of them.
+      const std::uint64_t attribute_kind = in.unsignedValue(1);
+      attribute.kind = static_cast<AttributeEntry::Kind>((attribute_kind & 0x7f) % 3);
+      attribute.list = (attribute_kind & 0x80) != 0;
+      if (attribute.list) {
+        const std::uint64_t count =
+            std::min<std::uint64_t>({in.unsignedValue(2), kMaxListItems, in.remaining()});
+        for (std::uint64_t i = 0; i < count && !in.empty(); ++i) {
+          if (attribute.kind == AttributeEntry::Kind::kString) {
+            attribute.texts.push_back(in.text());
+          } else {
+            attribute.numbers.push_back(in.number());
+          }
+        }
+      } else if (attribute.kind == AttributeEntry::Kind::kString) {
         attribute.text = in.text();
       } else {
         attribute.number = in.number();
       }
+    } else if (entry.kind == Entry::Kind::kExternalLink) {
+      entry.target_file = in.text();
+      entry.target = in.text();
+    } else if (entry.kind == Entry::Kind::kSoftLink) {
+      entry.target = in.text();
     }
     image.entries.push_back(std::move(entry));
   }
@@ -339,24 +470,48 @@ FileImage decode(const std::uint8_t* data, std::size_t size, std::uint64_t max_r
 std::vector<std::uint8_t> encode(const FileImage& image) {
   ByteWriter out;
   for (const Entry& entry : image.entries) {
-    out.unsignedValue(static_cast<std::uint64_t>(entry.kind), 1);
+    const std::uint64_t kind = entry.kind == Entry::Kind::kExternalLink ? 0xc0
+                               : entry.kind == Entry::Kind::kSoftLink   ? 0x80
+                                                                        : static_cast<std::uint64_t>(entry.kind);
+    out.unsignedValue(kind, 1);
     out.text(entry.path);
     if (entry.kind == Entry::Kind::kDataset) {
       const ArrayEntry& array = entry.array;
-      out.unsignedValue((array.integer ? 1 : 0) | (array.rank == 2 ? 2 : 0), 1);
+      out.unsignedValue((array.integer ? 1 : 0) | (array.rank == 2 ? 2 : 0) |
+                            (array.byte || array.text ? 4 : 0),
+                        1);
       out.unsignedValue(array.rows, 8);
       out.unsignedValue(array.columns, 1);
       out.number(array.step);
-      out.unsignedValue(array.values.size(), 4);
-      for (const double value : array.values) out.number(value);
-    } else if (entry.kind == Entry::Kind::kAttribute) {
-      out.text(entry.attribute.name);
-      out.unsignedValue(static_cast<std::uint64_t>(entry.attribute.kind), 1);
-      if (entry.attribute.kind == AttributeEntry::Kind::kString) {
-        out.text(entry.attribute.text);
+      if (array.text) {
+        out.unsignedValue(array.texts.size(), 4);
+        for (const std::string& text : array.texts) out.text(text);
       } else {
-        out.number(entry.attribute.number);
+        out.unsignedValue(array.values.size(), 4);
+        for (const double value : array.values) out.number(value);
       }
+    } else if (entry.kind == Entry::Kind::kAttribute) {
+      const AttributeEntry& attribute = entry.attribute;
+      out.text(attribute.name);
+      out.unsignedValue(static_cast<std::uint64_t>(attribute.kind) | (attribute.list ? 0x80 : 0), 1);
+      if (attribute.list) {
+        const bool texts = attribute.kind == AttributeEntry::Kind::kString;
+        out.unsignedValue(texts ? attribute.texts.size() : attribute.numbers.size(), 2);
+        if (texts) {
+          for (const std::string& text : attribute.texts) out.text(text);
+        } else {
+          for (const double number : attribute.numbers) out.number(number);
+        }
+      } else if (attribute.kind == AttributeEntry::Kind::kString) {
+        out.text(attribute.text);
+      } else {
+        out.number(attribute.number);
+      }
+    } else if (entry.kind == Entry::Kind::kExternalLink) {
+      out.text(entry.target_file);
+      out.text(entry.target);
+    } else if (entry.kind == Entry::Kind::kSoftLink) {
+      out.text(entry.target);
     }
   }
   return std::move(out).bytes();
@@ -388,6 +543,18 @@ bool writeHdf5(const FileImage& image, const std::string& path) {
       case Entry::Kind::kAttribute:
         if (entry.attribute.name.find('\0') == std::string::npos) {
           writeAttribute(file, link_plist, entry.path, entry.attribute);
+        }
+        break;
+      case Entry::Kind::kSoftLink:
+        if (entry.target.find('\0') == std::string::npos) {
+          H5Lcreate_soft(entry.target.c_str(), file, entry.path.c_str(), link_plist, H5P_DEFAULT);
+        }
+        break;
+      case Entry::Kind::kExternalLink:
+        if (entry.target.find('\0') == std::string::npos &&
+            entry.target_file.find('\0') == std::string::npos) {
+          H5Lcreate_external(entry.target_file.c_str(), entry.target.c_str(), file,
+                             entry.path.c_str(), link_plist, H5P_DEFAULT);
         }
         break;
     }

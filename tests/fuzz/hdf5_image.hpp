@@ -1,6 +1,7 @@
 #pragma once
-// The input format of fuzz_run_dataset_reader: a description of an HDF5 file's content
-// (groups, numeric datasets with their declared shapes, attributes) that the fuzzer mutates,
+// The input format of fuzz_run_dataset_reader and fuzz_shard_reader: a description of an HDF5
+// file's content (groups, numeric and text datasets with their declared shapes, attributes,
+// soft and external links) that the fuzzer mutates,
 // decoded from bytes, written as a valid HDF5 file, and encoded back (make_dataset_seeds turns
 // real run datasets into seeds).
 //
@@ -20,8 +21,14 @@ namespace wpg_fuzz {
 // declare a long walk with a monotonic time. Past kMaxWrittenValues the dataset is chunked and
 // no value is written: HDF5 reads the fill value (0), and the file stays a few KB however many
 // rows it declares (e.g. a 226 KB file declaring 2e8 rows).
+// A text dataset (`text`) is 1-D, variable-length UTF-8 strings (as the summary table's `name`
+// column): its rows are `texts`, repeated cyclically up to `rows` (at most kMaxWrittenValues;
+// empty strings when there is none).
 struct ArrayEntry {
   bool integer = false;  // int32 (H5T_STD_I32LE) rather than float64
+  bool byte = false;     // with `integer`: uint8 (H5T_STD_U8LE, the summary's `done` column)
+  bool text = false;     // variable-length strings (not with `integer`)
+  std::vector<std::string> texts;
   int rank = 1;          // 1: (rows,); 2: (rows, columns)
   std::uint64_t rows = 0;
   std::uint32_t columns = 1;
@@ -29,20 +36,28 @@ struct ArrayEntry {
   std::vector<double> values;  // integer datasets: truncated to int32 when written
 };
 
+// A scalar attribute, or with `list` a 1-D one: `texts` (strings) or `numbers`.
 struct AttributeEntry {
   enum class Kind : std::uint8_t { kString, kDouble, kInt } kind = Kind::kString;
   std::string name;
   std::string text;
   double number = 0.0;
+  bool list = false;
+  std::vector<std::string> texts;
+  std::vector<double> numbers;
 };
 
-// An object of the file: a group, a dataset, or an attribute on the object at `path` (created
-// as a group when missing).
+// An object of the file: a group, a dataset, an attribute on the object at `path` (created
+// as a group when missing), or a link at `path`: soft (to `target`, a path in the file) or
+// external (to `target_file`:`target`, whatever file that names: a shard, the other shard, a
+// device).
 struct Entry {
-  enum class Kind : std::uint8_t { kGroup, kDataset, kAttribute } kind = Kind::kGroup;
+  enum class Kind : std::uint8_t { kGroup, kDataset, kAttribute, kSoftLink, kExternalLink } kind =
+      Kind::kGroup;
   std::string path;  // absolute, e.g. /runs/walk_forward/com
   ArrayEntry array;
   AttributeEntry attribute;
+  std::string target_file, target;  // links
 };
 
 struct FileImage {
@@ -53,6 +68,7 @@ constexpr std::size_t kMaxEntries = 1024;
 constexpr std::size_t kMaxStringBytes = 1 << 16;
 constexpr std::uint64_t kMaxWrittenValues = 1 << 16;
 constexpr std::uint32_t kMaxColumns = 64;
+constexpr std::size_t kMaxListItems = 1 << 12;  // texts of a text dataset or list attribute
 
 // Never fails: a truncated input ends the image, out-of-range fields are reduced into range
 // (declared rows into [0, max_rows]).

@@ -13,6 +13,7 @@
 #include "mpi_world.hpp"
 #include "wpg/datasets/input/input_error.hpp"
 #include "wpg/datasets/storage/batch_index.hpp"
+#include "wpg/datasets/storage/output_file.hpp"
 
 namespace fs = std::filesystem;
 
@@ -32,11 +33,19 @@ std::vector<std::string> shardFiles(const fs::path& folder) {
 }
 
 // Rank 0 before any rank opens its shard: the runs already done (resume), or a clean folder.
+// The folder is claimed by the caller (held while the job runs); every shard file of it is
+// claimed here before it is read, moved or removed: a shard another process holds (a
+// `wpg batch --shard` or any HDF5 program) is refused, "in use by another wpg", and nothing
+// is touched.
 std::vector<bool> prepareShardFolder(const datasets::Study& study, const StudyOutput& output,
                                      StudyObserver& observer) {
   const fs::path folder = shardFolderOf(output.path);
   std::vector<bool> done(study.runs.size(), false);
   std::error_code ec;
+  std::vector<std::unique_ptr<datasets::OutputClaim>> claims;
+  for (const std::string& file : shardFiles(folder)) {
+    claims.push_back(std::make_unique<datasets::OutputClaim>(file));
+  }
   if (!output.resume) {
     fs::remove(output.path, ec);  // its links would point into shards rewritten now
     for (const std::string& file : shardFiles(folder)) {
@@ -143,8 +152,13 @@ bool MpiExecutor::run(const datasets::Study& study, const StudyOutput& output,
   std::vector<bool> done;
   std::exception_ptr setup_error;
   bool bad_input = false;
+  // Rank 0 holds the shard folder until the job ends: a second job on the same OUT.h5 (or
+  // OUT.shards/) is refused before it touches the index or a shard, "in use by another wpg".
+  // Each rank holds its own shard while it writes it.
+  std::unique_ptr<datasets::FolderClaim> folder_claim;
   if (root) {
     try {
+      folder_claim = std::make_unique<datasets::FolderClaim>(shardFolderOf(output.path), output.path);
       done = prepareShardFolder(study, output, observer);
     } catch (const datasets::InputError&) {
       setup_error = std::current_exception();
@@ -168,9 +182,12 @@ bool MpiExecutor::run(const datasets::Study& study, const StudyOutput& output,
   const std::string shard =
       (fs::path(shardFolderOf(output.path)) / ("rank-" + std::to_string(world_.rank) + ".h5")).string();
   std::unique_ptr<datasets::BatchDatasetWriter> writer;
+  std::unique_ptr<datasets::OutputClaim> shard_claim;
   try {
     std::error_code ec;
-    writer = output.resume && fs::exists(shard, ec)
+    const bool existing = output.resume && fs::exists(shard, ec);
+    shard_claim = std::make_unique<datasets::OutputClaim>(shard);
+    writer = existing
                  ? datasets::BatchDatasetWriter::resume(shard, study, handling.columns)
                  : datasets::BatchDatasetWriter::create(
                        shard, study, handling.columns, datasets::mpiRankLabel(world_.rank, world_.size));

@@ -19,6 +19,7 @@
 #include <sys/resource.h>
 
 #include "wpg/datasets/input/input_error.hpp"
+#include "wpg/datasets/input/input_limits.hpp"
 #include "wpg/datasets/storage/output_file.hpp"
 #include "wpg/datasets/storage/run_dataset.hpp"
 
@@ -196,7 +197,21 @@ ShardContents readShardContents(const std::string& path) {
     if (file.attrExists("created_by")) shard.created_by = readStringAttribute(file, "created_by");
     const H5::Group table = file.openGroup(kSummaryPath);
     const H5::DataSet done = table.openDataSet("done");
-    const std::vector<std::string> names = readStrings(table.openDataSet("name"));
+    const H5::DataSet name = table.openDataSet("name");
+    // One row per run of the study: sizes checked before anything is allocated (a shard can
+    // declare 2^40 names in a few kB).
+    for (const auto& [column, dataset] : {std::pair<const char*, const H5::DataSet*>{"name", &name},
+                                          {"done", &done}}) {
+      const H5::DataSpace space = dataset->getSpace();
+      const hssize_t rows = space.getSimpleExtentNpoints();
+      if (space.getSimpleExtentNdims() != 1 || rows < 0 ||
+          static_cast<std::uint64_t>(rows) > kMaxStudyRuns) {
+        throw InputError(path + ": " + kSummaryPath + "/" + column + ": expected at most " +
+                         std::to_string(kMaxStudyRuns) + " runs (one row each), got " +
+                         std::to_string(rows) + " values");
+      }
+    }
+    const std::vector<std::string> names = readStrings(name);
     std::vector<unsigned char> flags(names.size());
     if (done.getSpace().getSimpleExtentNpoints() != static_cast<hssize_t>(names.size())) {
       throw InputError(path + ": /batch/summary/done and name have different lengths");

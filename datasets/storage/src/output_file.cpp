@@ -273,6 +273,24 @@ OutputClaim::~OutputClaim() {
   ::close(fd_);  // releases the claim
 }
 
+FolderClaim::FolderClaim(const std::string& folder, const std::string& owner) {
+  std::error_code ec;
+  fs::create_directories(folder, ec);
+  fd_ = ::open(folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC | O_NOFOLLOW);
+  if (fd_ < 0) throw std::runtime_error("cannot open " + folder + ": " + std::strerror(errno));
+  if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
+    ::close(fd_);
+    fd_ = -1;
+    throw InputError("'" + escapeControlCharacters(owner) + "': in use by another wpg ('" +
+                     escapeControlCharacters(folder) +
+                     "' is held by a running job; nothing written)");
+  }
+}
+
+FolderClaim::~FolderClaim() {
+  if (fd_ >= 0) ::close(fd_);  // releases the flock
+}
+
 TemporaryOutput::TemporaryOutput(const std::string& target) : target_(target) {
   const fs::path file(target);
   if (target.empty() || !file.has_filename())

@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <memory>
 #include <mutex>
 #include <stdexcept>
 
@@ -46,7 +47,14 @@ std::vector<double> columnOf(const std::vector<PushSweepRow>& rows, Get get) {
 }
 
 void writeFile(const std::string& path, const PushSweepFile& sweep) {
-  H5::H5File file(path, H5F_ACC_TRUNC);
+  // Closing the file closes every object still open and flushes them (a strong close): a write
+  // that fails there (a full disk) is an error of file.close(), not a message of ~H5File that
+  // the commit would never hear of (the partial file was renamed into place).
+  H5::FileAccPropList access;
+  access.setFcloseDegree(H5F_CLOSE_STRONG);
+  auto owned = std::make_unique<H5::H5File>(path, H5F_ACC_TRUNC, H5::FileCreatPropList::DEFAULT,
+                                            access);
+  H5::H5File& file = *owned;
   detail::writeStringAttribute(file, "created_by", "wpg push-sweep");
   detail::writeStringAttribute(file, "wpg_version", WPG_VERSION_STRING);
   detail::writeProvenanceAttributes(file);
@@ -110,6 +118,15 @@ void writeFile(const std::string& path, const PushSweepFile& sweep) {
                                    {"situation", "direction", "phase", "t", "force", "impulse", "fx",
                                     "fy", "duration", "scenario", "at_upper_bound", "walks",
                                     "swing_speed_max", "swing_acceleration_max"});
+  try {
+    file.close();  // inside the caller's try: a failed flush is an error
+  } catch (const H5::Exception&) {
+    // HDF5 1.10 crashes when a file whose close failed is closed again (as ~H5File would):
+    // the handle is let go; the caller removes the temporary file, the CLI exits without
+    // HDF5's termination (exit 3, cli/main.cpp).
+    static_cast<void>(owned.release());
+    throw;
+  }
 }
 
 }  // namespace

@@ -72,6 +72,22 @@ class OutputClaim {
   bool created_ = false;
 };
 
+// An exclusive claim on a folder of files that one job writes together (the shards of `wpg
+// batch` under MPI, OUT.shards/): a flock on the folder itself (created when missing), held
+// until destruction and released by the kernel however the process ends (an aborted MPI job
+// leaves nothing behind). A folder another process holds is refused with InputError
+// "'<owner>': in use by another wpg (<folder> is held by a running job; nothing written)".
+class FolderClaim {
+ public:
+  FolderClaim(const std::string& folder, const std::string& owner);
+  ~FolderClaim();
+  FolderClaim(const FolderClaim&) = delete;
+  FolderClaim& operator=(const FolderClaim&) = delete;
+
+ private:
+  int fd_ = -1;
+};
+
 // Throws InputError ("cannot write output '<output>': '<folder>' is not a writable directory")
 // unless the nearest existing folder above `output` is a directory this process may write in.
 void checkWritableParent(const std::string& output);
