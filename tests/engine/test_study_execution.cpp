@@ -66,6 +66,21 @@ class StudyExecution : public wpg_test::ScratchDirectoryTest {
   StudyExecution() : ScratchDirectoryTest("wpg_test_study_execution") {}
   std::string path(const std::string& name) const { return (directory_ / name).string(); }
 
+  // One world (goal_with_yaw, 4 s) x two variants (no planner, rrtconnect) x 2 seeds.
+  wpg::datasets::ComparisonStudy loadTinyComparison() {
+    std::ofstream(path("compare.yaml"))
+        << "name: tiny_compare\n"
+           "seeds: 2\n"
+           "set: {duration: 4.0}\n"
+           "worlds:\n"
+           "  - {name: yaw, scenario: goal_with_yaw}\n"
+           "variants:\n"
+           "  straight: {planner.algorithm: none}\n"
+           "  rrt: {planner.algorithm: rrtconnect}\n";
+    return wpg::datasets::loadComparisonStudy(path("compare.yaml"), resolveShipped,
+                                              wpg_test::kRobotsDir);
+  }
+
   wpg::datasets::Study loadStudy(const char* text) {
     std::ofstream(path("study.yaml")) << text;
     return wpg::datasets::loadStudy(path("study.yaml"), resolveShipped, wpg_test::kRobotsDir);
@@ -164,17 +179,7 @@ TEST_F(StudyExecution, AResumeRunsOnlyWhatIsMissingAndAShardOnlyItsSlice) {
 }
 
 TEST_F(StudyExecution, AComparisonHasACellPerWorldAndVariantFromItsSeeds) {
-  std::ofstream(path("compare.yaml"))
-      << "name: tiny_compare\n"
-         "seeds: 2\n"
-         "set: {duration: 4.0}\n"
-         "worlds:\n"
-         "  - {name: yaw, scenario: goal_with_yaw}\n"
-         "variants:\n"
-         "  straight: {planner.algorithm: none}\n"
-         "  rrt: {planner.algorithm: rrtconnect}\n";
-  const wpg::datasets::ComparisonStudy comparison = wpg::datasets::loadComparisonStudy(
-      path("compare.yaml"), resolveShipped, wpg_test::kRobotsDir);
+  const wpg::datasets::ComparisonStudy comparison = loadTinyComparison();
   ASSERT_EQ(comparison.study.runs.size(), 4u);  // 1 world x 2 variants x 2 seeds
   std::vector<std::vector<wpg::analysis::ComparisonCell>> tables;
   for (const int threads : {1, 2}) {
@@ -204,17 +209,7 @@ TEST_F(StudyExecution, AComparisonHasACellPerWorldAndVariantFromItsSeeds) {
 }
 
 TEST_F(StudyExecution, AComparisonInSlicesMergedOrResumedIsTheComparisonOfOneRun) {
-  std::ofstream(path("compare.yaml"))
-      << "name: tiny_compare\n"
-         "seeds: 2\n"
-         "set: {duration: 4.0}\n"
-         "worlds:\n"
-         "  - {name: yaw, scenario: goal_with_yaw}\n"
-         "variants:\n"
-         "  straight: {planner.algorithm: none}\n"
-         "  rrt: {planner.algorithm: rrtconnect}\n";
-  const wpg::datasets::ComparisonStudy comparison = wpg::datasets::loadComparisonStudy(
-      path("compare.yaml"), resolveShipped, wpg_test::kRobotsDir);
+  const wpg::datasets::ComparisonStudy comparison = loadTinyComparison();
   const auto executor = wpg::engine::makeThreadExecutor(2, wpg_test::kRobotsDir);
   CountingObserver whole_observer;
   const wpg::engine::ComparisonOutcome whole =

@@ -33,6 +33,7 @@
 #include <vector>
 
 #include "hdf5_image.hpp"
+#include "private_folder.hpp"
 #include "wpg/datasets/input/input_error.hpp"
 #include "wpg/datasets/storage/batch_dataset.hpp"
 #include "wpg/datasets/storage/batch_index.hpp"
@@ -114,13 +115,8 @@ void merge(const std::string& output, const std::vector<std::string>& shards,
 }  // namespace
 
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
-  std::error_code ec;
-  const fs::path parent = fs::is_directory("/dev/shm", ec) && access("/dev/shm", W_OK) == 0
-                              ? fs::path("/dev/shm")
-                              : fs::temp_directory_path();
-  std::string pattern = (parent / "wpg-fuzz-shards-XXXXXX").string();
-  if (mkdtemp(pattern.data()) == nullptr) propertyViolated("cannot create " + pattern);
-  g_folder = pattern;
+  g_folder = wpg_fuzz::makePrivateFolder("wpg-fuzz-shards-");
+  if (g_folder.empty()) propertyViolated("cannot create a private folder");
   std::atexit(removeFolder);
   return 0;
 }

@@ -38,6 +38,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "private_folder.hpp"
 #include "wpg/datasets/input/input_error.hpp"
 #include "wpg/datasets/study_design/comparison_study.hpp"
 #include "wpg/datasets/study_design/study.hpp"
@@ -146,13 +147,8 @@ void checkStudy(const wpg::datasets::Study& study, const std::string& text) {
 }  // namespace
 
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
-  std::error_code ec;
-  const fs::path parent = fs::is_directory("/dev/shm", ec) && access("/dev/shm", W_OK) == 0
-                              ? fs::path("/dev/shm")
-                              : fs::temp_directory_path();
-  std::string pattern = (parent / "wpg-fuzz-study-XXXXXX").string();
-  if (mkdtemp(pattern.data()) == nullptr) propertyViolated("cannot create " + pattern, "");
-  g_folder = pattern;
+  g_folder = wpg_fuzz::makePrivateFolder("wpg-fuzz-study-");
+  if (g_folder.empty()) propertyViolated("cannot create a private folder", "");
   std::atexit(removeFolder);
   return 0;
 }
