@@ -1,0 +1,15 @@
+#pragma once
+// The obstacles group of a run dataset (datasets/SCHEMA.md, "obstacles"): the scenario's
+// obstacles as a table, so that plots and analyses need nothing but the file.
+#include <vector>
+
+#include <H5Cpp.h>
+
+#include "wpg/obstacles.hpp"
+
+namespace wpg::datasets::detail {
+
+// /runs/<name>/obstacles: one row per obstacle, in the scenario's order.
+void writeObstacles(H5::Group& run, const std::vector<Obstacle>& obstacles);
+
+}  // namespace wpg::datasets::detail
