@@ -89,10 +89,12 @@ int main(int argc, char** argv) {
   } catch (const std::invalid_argument& e) {
     printError(e.what());
     return kExitBadInput;
-  } catch (const wpg::engine::RankStopped& e) {
-    // Another rank (rank 0) reported why on stderr: this one leaves quietly, with rank 0's
-    // exit code (bad input, or rank 0 could not complete: no walk failed).
-    return e.badInput() ? kExitBadInput : kExitIncomplete;
+  } catch (const wpg::engine::RankStopped&) {
+    // Rank 0 reports why on stderr and exits with the code (bad input, or could not complete);
+    // this rank leaves quietly with 0. A non-zero exit here let mpiexec abort the job, rank 0
+    // included, before rank 0 had written its line (seen in CI: no error line at all); mpiexec
+    // returns rank 0's code all the same.
+    return 0;
   } catch (const std::bad_alloc&) {
     leaveIncomplete("out of memory");
   } catch (const std::exception& e) {

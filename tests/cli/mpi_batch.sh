@@ -3,8 +3,8 @@
 #  - `mpirun --oversubscribe -np 3 wpg batch STUDY -o OUT.h5` gives the same runs as
 #    `wpg batch -j 1`, bit for bit but the wall times (compare_batch_files.py), in OUT.h5 (the
 #    index) and OUT.shards/rank-{0,1,2}.h5, every rank having run some of them;
-#  - one rank killed (SIGKILL) mid-study: mpirun aborts the job; `--resume` (on 2 ranks) runs the
-#    runs done in no shard (a shard HDF5 cannot open is moved to .damaged and redone), and the
+#  - the ranks killed (SIGKILL) mid-study, as a lost node: mpirun aborts the job; `--resume`
+#    (on 2 ranks) runs the runs done in no shard (a shard HDF5 cannot open is moved to .damaged and redone), and the
 #    index holds the same runs as the uninterrupted batch; a complete study resumed runs nothing;
 #    a shard truncated by hand is moved aside and its runs redone;
 #  - bad input under mpirun: exit 2, one `wpg: error:` line (rank 0's), nothing written: a bad
@@ -49,18 +49,21 @@ for r in range(3):
         assert shard.attrs["shard"] == f"rank {r} of 3"
 PY
 
-# One rank killed mid-study. The delay after the ranks have opened their shards is adjusted until
+# The ranks killed mid-study. The delay after rank 0 has opened its shard is adjusted until
 # the kill lands with some, not all, runs done.
-delay=0.3
+delay=0.1
 partial=""
 for attempt in 1 2 3 4 5 6 7 8; do
   rm -rf killed
   "${mpi[@]}" -np 3 "$wpg" batch "$study" -o killed/out.h5 --no-plot >killed.log 2>&1 &
   pid=$!
-  for _ in $(seq 200); do [[ -f killed/out.shards/rank-2.h5 ]] && break; sleep 0.05; done
+  # From rank 0's first shard on (not the last rank's: rank 0 runs before the other ranks are
+  # up, and on an idle machine it had done 143 of the 144 runs by then).
+  for _ in $(seq 200); do [[ -f killed/out.shards/rank-0.h5 ]] && break; sleep 0.01; done
   sleep "$delay"
-  victim="$(children "$pid" | tail -1)"
-  [[ -n "$victim" ]] && kill -KILL "$victim" 2>/dev/null || true
+  # Every rank at once (a node lost): killing one rank left the others time to finish the
+  # study (~0.5 s on an idle machine) before mpirun aborted them.
+  for victim in $(children "$pid"); do kill -KILL "$victim" 2>/dev/null || true; done
   status=0
   wait "$pid" 2>/dev/null || status=$?
   if [[ $status == 0 ]]; then  # finished before the kill
@@ -83,13 +86,13 @@ for path in sys.argv[1:]:
 print(len(done))
 PY
 )"
-  echo "attempt $attempt: rank killed after ${delay}s, $done_runs of $total runs done"
+  echo "attempt $attempt: ranks killed after ${delay}s, $done_runs of $total runs done"
   # At least a few runs left, so that the resume has real work (the killed rank's run among it).
   if (( done_runs == 0 )); then delay="$(echo "$delay * 1.6" | bc -l)"
   elif (( done_runs > total - 4 )); then delay="$(echo "$delay * 0.5" | bc -l)"
   else partial=yes; break; fi
 done
-[[ -n "$partial" ]] || fail "could not kill a rank mid-study"
+[[ -n "$partial" ]] || fail "could not kill the ranks mid-study"
 "${mpi[@]}" -np 2 "$wpg" batch "$study" -o killed/out.h5 --resume --no-plot >/dev/null 2>resume.err ||
   fail "--resume: exit $? ($(cat resume.err))"
 grep -Eq "resuming, [0-9]+ of $total runs already" resume.err || fail "resume: $(cat resume.err)"

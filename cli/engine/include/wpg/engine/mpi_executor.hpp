@@ -45,7 +45,8 @@ void finishMpi();
 
 // Thrown on the ranks other than 0 when the study cannot go on for a reason rank 0 reports
 // (bad input it found, or its error before the runs): MPI is finished, and this process should
-// exit quietly, with the bad-input status when `badInput()`, else the failed-run one.
+// exit quietly with 0, leaving the exit code to rank 0 (a non-zero exit lets mpiexec abort
+// rank 0 before it has reported); `badInput()` says which of the two it was.
 class RankStopped : public std::exception {
  public:
   explicit RankStopped(bool bad_input) : bad_input_(bad_input) {}
