@@ -49,8 +49,7 @@ bool walkRecovers(const datasets::Scenario& scenario, double push_start,
                   SwingPeaks* peaks) {
   const RunResult result = runScenario(scenario, settings);
   const WalkTrajectory& trajectory = result.walk.result.trajectory;
-  WalkCheckReport report;
-  swingFootPeaks(trajectory, report);
+  const WalkCheckReport& report = result.checks.walk;  // the run's checks hold the swing peaks
   if (peaks) *peaks = {report.swing_foot_speed_max, report.swing_foot_acceleration_max};
   if (result.outcome != RunOutcome::kSucceeded) return false;
   for (const MpcIterationLog& row : trajectory.mpc) {
