@@ -130,6 +130,35 @@ PY
   refused 2 "s1.h5: /batch/summary/done: expected at most 1000000 runs" merge idx.h5 s1.h5 --no-plot
   [[ ! -e idx.h5 ]] || fail "an index was written"
   ;;
+shard_attribute_shapes)
+  # A shard's root attributes of another shape or type: refused, naming the shard and the
+  # attribute. A study_name of three strings was read into one (HDF5's C++ API writes the
+  # three pointers over one: memory past it overwritten).
+  "$wpg" batch study.yaml -o s0.h5 --shard 0/1 --no-plot >/dev/null 2>&1
+  cp s0.h5 s1.h5
+  cp s0.h5 s2.h5
+  "$PYTHON" - <<'PY'
+import h5py
+import numpy as np
+with h5py.File("s0.h5", "r+") as f:
+    name = f.attrs["study_name"]
+    del f.attrs["study_name"]
+    f.attrs.create("study_name", [name] * 3, dtype=h5py.string_dtype())
+with h5py.File("s1.h5", "r+") as f:
+    del f.attrs["study_fingerprint"]
+    f.attrs["study_fingerprint"] = np.arange(5.0)
+with h5py.File("s2.h5", "r+") as f:
+    table = f["batch/summary"]
+    columns = list(table.attrs["columns"])
+    del table.attrs["columns"]
+    table.attrs.create("columns", np.array(columns * 2).reshape(2, -1), dtype=h5py.string_dtype())
+PY
+  refused 2 "s0.h5: attribute /:study_name: expected one value, got 3" merge idx.h5 s0.h5 --no-plot
+  refused 2 "s1.h5: attribute /:study_fingerprint: expected a string" merge idx.h5 s1.h5 --no-plot
+  refused 2 "s2.h5: attribute /batch/summary:columns: expected a list of strings, got a 2-D array" \
+    merge idx.h5 s2.h5 --no-plot
+  [[ ! -e idx.h5 ]] || fail "an index was written"
+  ;;
 messages)
   # Values as given, never rounded away: 1e-320 s is not "0.000000".
   refused 2 "got 1e-320" run walk_forward --set duration=1e-320 -o a.h5 --no-plot

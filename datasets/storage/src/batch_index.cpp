@@ -18,6 +18,7 @@
 #include <H5Cpp.h>
 #include <sys/resource.h>
 
+#include "hdf5_bounded_reading.hpp"
 #include "wpg/datasets/input/input_error.hpp"
 #include "wpg/datasets/input/input_limits.hpp"
 #include "wpg/datasets/storage/output_file.hpp"
@@ -29,43 +30,6 @@ namespace wpg::datasets {
 namespace {
 
 constexpr const char* kSummaryPath = "/batch/summary";
-
-H5::StrType stringType() {
-  H5::StrType type(H5::PredType::C_S1, H5T_VARIABLE);
-  type.setCset(H5T_CSET_UTF8);
-  return type;
-}
-
-std::string readStringAttribute(const H5::H5Object& object, const std::string& name) {
-  const H5::Attribute attribute = object.openAttribute(name);
-  std::string value;
-  attribute.read(attribute.getStrType(), value);
-  return value;
-}
-
-std::vector<std::string> readStrings(const H5::DataSet& dataset) {
-  const hsize_t count = static_cast<hsize_t>(dataset.getSpace().getSimpleExtentNpoints());
-  std::vector<char*> pointers(count);
-  const H5::StrType type = stringType();
-  if (count > 0) dataset.read(pointers.data(), type);
-  std::vector<std::string> values;
-  for (char* pointer : pointers) values.emplace_back(pointer ? pointer : "");
-  if (count > 0) H5Dvlen_reclaim(type.getId(), dataset.getSpace().getId(), H5P_DEFAULT, pointers.data());
-  return values;
-}
-
-std::vector<std::string> readStringListAttribute(const H5::H5Object& object,
-                                                 const std::string& name) {
-  const H5::Attribute attribute = object.openAttribute(name);
-  const hsize_t count = static_cast<hsize_t>(attribute.getSpace().getSimpleExtentNpoints());
-  std::vector<char*> pointers(count);
-  const H5::StrType type = stringType();
-  if (count > 0) attribute.read(type, pointers.data());
-  std::vector<std::string> values;
-  for (char* pointer : pointers) values.emplace_back(pointer ? pointer : "");
-  if (count > 0) H5Dvlen_reclaim(type.getId(), attribute.getSpace().getId(), H5P_DEFAULT, pointers.data());
-  return values;
-}
 
 // Every root attribute of `from` but `skip` onto `to`, with its own type and shape.
 void copyAttributes(hid_t from, hid_t to, const std::string& skip) {
@@ -191,10 +155,10 @@ ShardContents readShardContents(const std::string& path) {
         !file.nameExists("batch") || !file.nameExists(kSummaryPath) || !file.nameExists("runs")) {
       throw InputError(path + ": not a batch or shard file (no study_name, /batch/summary, /runs)");
     }
-    shard.study_name = readStringAttribute(file, "study_name");
-    shard.study_fingerprint = readStringAttribute(file, "study_fingerprint");
-    if (file.attrExists("shard")) shard.label = readStringAttribute(file, "shard");
-    if (file.attrExists("created_by")) shard.created_by = readStringAttribute(file, "created_by");
+    shard.study_name = detail::readStringAttribute(file, "study_name", path, "/:");
+    shard.study_fingerprint = detail::readStringAttribute(file, "study_fingerprint", path, "/:");
+    if (file.attrExists("shard")) shard.label = detail::readStringAttribute(file, "shard", path, "/:");
+    if (file.attrExists("created_by")) shard.created_by = detail::readStringAttribute(file, "created_by", path, "/:");
     const H5::Group table = file.openGroup(kSummaryPath);
     const H5::DataSet done = table.openDataSet("done");
     const H5::DataSet name = table.openDataSet("name");
@@ -211,7 +175,7 @@ ShardContents readShardContents(const std::string& path) {
                          std::to_string(rows) + " values");
       }
     }
-    const std::vector<std::string> names = readStrings(name);
+    const std::vector<std::string> names = detail::readVariableStrings(name);
     std::vector<unsigned char> flags(names.size());
     if (done.getSpace().getSimpleExtentNpoints() != static_cast<hssize_t>(names.size())) {
       throw InputError(path + ": /batch/summary/done and name have different lengths");
@@ -244,7 +208,8 @@ IndexReport writeBatchIndex(const std::string& output, const std::vector<std::st
       for (const ShardContents& shard : contents) {
         const H5::H5File file(shard.path, H5F_ACC_RDONLY);
         const std::vector<std::string> columns =
-            readStringListAttribute(file.openGroup(kSummaryPath), "columns");
+            detail::readStringListAttribute(file.openGroup(kSummaryPath), "columns", shard.path,
+                                            std::string(kSummaryPath) + ":");
         if (&shard == &first) first_columns = columns;
         if (shard.study_name != first.study_name ||
             shard.study_fingerprint != first.study_fingerprint || shard.done.size() != first.done.size()) {
@@ -337,7 +302,7 @@ IndexReport writeBatchIndex(const std::string& output, const std::vector<std::st
         if (H5Ocopy(source.getId(), "batch", index.getId(), "batch", H5P_DEFAULT, H5P_DEFAULT) < 0) {
           throw H5::Exception("H5Ocopy", "cannot copy /batch from " + first.path);
         }
-        names = readStrings(source.openDataSet(std::string(kSummaryPath) + "/name"));
+        names = detail::readVariableStrings(source.openDataSet(std::string(kSummaryPath) + "/name"));
       }
       // The result columns: `done` and every column after it (batch_dataset.cpp's order).
       const auto done_column = std::find(first_columns.begin(), first_columns.end(), "done");

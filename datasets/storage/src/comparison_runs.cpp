@@ -59,14 +59,7 @@ std::vector<std::string> strings(const H5::Group& group, const std::string& name
     throw InputError(path + ": dataset /" + where + ": expected " + std::to_string(expected) +
                      " strings");
   }
-  H5::StrType type(H5::PredType::C_S1, H5T_VARIABLE);
-  type.setCset(H5T_CSET_UTF8);
-  std::vector<char*> pointers(rows);
-  if (rows > 0) dataset.read(pointers.data(), type);
-  std::vector<std::string> values;
-  for (char* pointer : pointers) values.emplace_back(pointer ? pointer : "");
-  if (rows > 0) H5Dvlen_reclaim(type.getId(), dataset.getSpace().getId(), H5P_DEFAULT, pointers.data());
-  return values;
+  return detail::readVariableStrings(dataset);
 }
 
 }  // namespace

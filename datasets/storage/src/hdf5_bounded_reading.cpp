@@ -94,6 +94,38 @@ double readNumberAttribute(const H5::H5Object& object, const std::string& name,
   return value;
 }
 
+namespace {
+
+// HDF5 hands variable-length strings over as pointers it allocated; they are copied, then
+// reclaimed. `read` reads into the pointers with the given memory type.
+template <typename Read>
+std::vector<std::string> copyVariableStrings(const H5::DataSpace& space, Read read) {
+  const std::size_t count = static_cast<std::size_t>(space.getSimpleExtentNpoints());
+  H5::StrType type(H5::PredType::C_S1, H5T_VARIABLE);
+  type.setCset(H5T_CSET_UTF8);
+  std::vector<char*> pointers(count, nullptr);
+  if (count > 0) read(type, pointers.data());
+  std::vector<std::string> values;
+  values.reserve(count);
+  for (const char* pointer : pointers) values.emplace_back(pointer ? pointer : "");
+  if (count > 0) H5Dvlen_reclaim(type.getId(), space.getId(), H5P_DEFAULT, pointers.data());
+  return values;
+}
+
+}  // namespace
+
+std::vector<std::string> readVariableStrings(const H5::DataSet& dataset) {
+  return copyVariableStrings(dataset.getSpace(), [&](const H5::StrType& type, char** pointers) {
+    dataset.read(pointers, type);
+  });
+}
+
+std::vector<std::string> readVariableStrings(const H5::Attribute& attribute) {
+  return copyVariableStrings(attribute.getSpace(), [&](const H5::StrType& type, char** pointers) {
+    attribute.read(type, pointers);
+  });
+}
+
 std::vector<std::string> readStringListAttribute(const H5::H5Object& object,
                                                  const std::string& name, const std::string& file,
                                                  const std::string& where) {
@@ -106,16 +138,7 @@ std::vector<std::string> readStringListAttribute(const H5::H5Object& object,
       boundedExtent(space, sizeof(char*), kMaxReadElements, file, what);
   if (dims.size() > 1) fail(file, what + ": expected a list of strings, got a " +
                                       std::to_string(dims.size()) + "-D array");
-  const std::size_t count = static_cast<std::size_t>(space.getSimpleExtentNpoints());
-  H5::StrType type(H5::PredType::C_S1, H5T_VARIABLE);
-  type.setCset(H5T_CSET_UTF8);
-  std::vector<char*> pointers(count, nullptr);
-  if (count > 0) attribute.read(type, pointers.data());
-  std::vector<std::string> values;
-  values.reserve(count);
-  for (const char* pointer : pointers) values.emplace_back(pointer ? pointer : "");
-  if (count > 0) H5Dvlen_reclaim(type.getId(), space.getId(), H5P_DEFAULT, pointers.data());
-  return values;
+  return readVariableStrings(attribute);
 }
 
 }  // namespace wpg::datasets::detail

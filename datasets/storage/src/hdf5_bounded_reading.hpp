@@ -29,6 +29,11 @@ std::string readStringAttribute(const H5::H5Object& object, const std::string& n
 double readNumberAttribute(const H5::H5Object& object, const std::string& name,
                            const std::string& file, const std::string& where);
 
+// Every element of a dataset or attribute of variable-length strings, read as UTF-8. The caller
+// has bounded its extent (boundedExtent): this allocates one pointer per element.
+std::vector<std::string> readVariableStrings(const H5::DataSet& dataset);
+std::vector<std::string> readVariableStrings(const H5::Attribute& attribute);
+
 // The string-list attribute `name` (scalar or 1-D, of variable-length strings), bounded.
 std::vector<std::string> readStringListAttribute(const H5::H5Object& object,
                                                  const std::string& name, const std::string& file,
