@@ -74,6 +74,10 @@ class CopConstraint final : public NamedConstraintFamily {
     }
   }
   bool rewritesJacobianRows() const override { return true; }
+  // Sample j's rows: the jerks of samples 0..j (the lower-triangular Pzu of eq. 3).
+  int jerkSamplesOfRow(const NmpcModel&, int row) const override {
+    return row / CopRows::kEdges + 1;
+  }
 
   // Sample j becomes sample j - 1 (the same instant, one sample nearer); the first sample's
   // rows leave the horizon.

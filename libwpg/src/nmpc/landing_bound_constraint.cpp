@@ -67,6 +67,8 @@ class LandingBoundConstraint final : public NamedConstraintFamily {
   bool rewritesJacobianRows() const override { return true; }
 
   // The rows keep their meaning during a swing; a completed step changes the swing foot.
+  int jerkSamplesOfRow(const NmpcModel&, int) const override { return 0; }  // steps only
+
   int shiftedRow(const NmpcModel&, int row, bool step_completed) const override {
     return step_completed ? -1 : row;
   }

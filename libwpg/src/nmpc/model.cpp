@@ -115,6 +115,33 @@ void NmpcModel::addConstraintFamily(std::shared_ptr<const ConstraintFamily> fami
   if (rows < 0) throw std::invalid_argument("constraint family: negative row count");
   families_.push_back(std::move(family));
   family_first_row_.push_back(family_first_row_.back() + rows);
+  updateJacobianProfile();
+}
+
+int ConstraintFamily::jerkSamplesOfRow(const NmpcModel& model, int) const {
+  return model.layout().horizon;
+}
+
+void NmpcModel::updateJacobianProfile() {
+  const NmpcLayout& L = layout_;
+  const int N = L.horizon, m = inequalityCount();
+  // Steps: every row. Jerks: the rows that reach them, none to begin with ([m, 0) is empty).
+  Eigen::VectorXi first = Eigen::VectorXi::Zero(L.variableCount());
+  Eigen::VectorXi end = Eigen::VectorXi::Constant(L.variableCount(), m);
+  Eigen::VectorXi jerk_first = Eigen::VectorXi::Constant(N, m), jerk_end = Eigen::VectorXi::Zero(N);
+  for (int k = 0; k < familyCount(); ++k) {
+    for (int local = 0; local < familyRowCount(k); ++local) {
+      const int row = familyFirstRow(k) + local;
+      const int samples = std::clamp(family(k).jerkSamplesOfRow(*this, local), 0, N);
+      for (int j = 0; j < samples; ++j) {
+        jerk_first(j) = std::min(jerk_first(j), row);
+        jerk_end(j) = std::max(jerk_end(j), row + 1);
+      }
+    }
+  }
+  first.segment(L.jerkX(), N) = first.segment(L.jerkY(), N) = jerk_first;
+  end.segment(L.jerkX(), N) = end.segment(L.jerkY(), N) = jerk_end;
+  jacobian_profile_ = qp::ColumnProfile(m, first, end);
 }
 
 int NmpcModel::findFamily(const char* name) const {

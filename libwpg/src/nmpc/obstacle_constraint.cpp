@@ -86,6 +86,8 @@ class ObstacleConstraint final : public NamedConstraintFamily {
   // Step i becomes step i - 1 when a step was completed (step 0 has landed: its rows leave);
   // slot k stays slot k (it keeps its obstacle only approximately: the selection is redone at
   // every sample, a warm-start guess is a guess).
+  int jerkSamplesOfRow(const NmpcModel&, int) const override { return 0; }  // steps only
+
   int shiftedRow(const NmpcModel& model, int row, bool step_completed) const override {
     const ObstacleRows rows = ObstacleRows::of(model);
     if (!step_completed || rows.slots == 0) return rows.slots == 0 ? -1 : row;

@@ -79,6 +79,7 @@ NmpcWorkspace::NmpcWorkspace(const NmpcModel& model)
   orientation_equality_vector = Eigen::VectorXd::Zero(nf);
   orientation_gradient = Eigen::VectorXd::Zero(nf);
   orientation_solution = Eigen::VectorXd::Zero(nf);
+  solver.setInequalityProfile(model.jacobianProfile());
 }
 
 NmpcSolver::NmpcSolver(const NmpcModel& model)
@@ -199,11 +200,12 @@ NmpcSolveResult NmpcSolver::runSqp(const NmpcProblem& problem, const GeneratorSe
 
   const int max_iterations = iterations > 0 ? iterations : settings.max_sqp_iterations;
   for (int it = 0; it < max_iterations; ++it) {
-    // eq. (21b)/(22b): g(U_lin) + G (U - U_lin) <= 0  <=>  G U <= G U_lin - g(U_lin)
+    // eq. (21b)/(22b): g(U_lin) + G (U - U_lin) <= 0  <=>  G U <= G U_lin - g(U_lin), the
+    // product skipping G's zeros (the jerks a row does not depend on; the same bits)
     nmpc_internal::stackConstraints(model, problem, ws.linearization, ws.constraints,
                                     &ws.jacobian, true);
-    ws.upper.noalias() = ws.jacobian * ws.linearization;
-    ws.upper -= ws.constraints;
+    model.jacobianProfile().multiplySubtract(ws.jacobian, ws.linearization, ws.constraints,
+                                             ws.upper);
     ws.solver.setActiveSetGuess(active_set_.data(), active_count_);
     const qp::QpStatus status =
         ws.solver.solve(factor, ws.gradient, ws.equality_matrix.topRows(me),

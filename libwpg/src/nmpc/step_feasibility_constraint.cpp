@@ -51,6 +51,8 @@ class StepFeasibilityConstraint final : public NamedConstraintFamily {
   bool rewritesJacobianRows() const override { return true; }
 
   // Step i becomes step i - 1 when a step was completed (step 0 has landed: its rows leave).
+  int jerkSamplesOfRow(const NmpcModel&, int) const override { return 0; }  // steps only
+
   int shiftedRow(const NmpcModel& model, int row, bool step_completed) const override {
     if (!step_completed) return row;
     const StepFeasibilityRows rows = StepFeasibilityRows::of(model);

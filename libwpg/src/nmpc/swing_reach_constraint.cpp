@@ -50,6 +50,8 @@ class SwingReachConstraint final : public NamedConstraintFamily {
   }
 
   // The rows keep their meaning during a swing; a completed step changes the swing foot.
+  int jerkSamplesOfRow(const NmpcModel&, int) const override { return 0; }  // steps only
+
   int shiftedRow(const NmpcModel&, int row, bool step_completed) const override {
     return step_completed ? -1 : row;
   }

@@ -42,6 +42,8 @@ class YawBoundConstraint final : public NamedConstraintFamily {
   bool rewritesJacobianRows() const override { return true; }
 
   // Step i becomes step i - 1 when a step was completed (step 0 has landed: its rows leave).
+  int jerkSamplesOfRow(const NmpcModel&, int) const override { return 0; }  // steps only
+
   int shiftedRow(const NmpcModel&, int row, bool step_completed) const override {
     if (!step_completed) return row;
     const int step = row / 2;

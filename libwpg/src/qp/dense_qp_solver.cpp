@@ -81,6 +81,7 @@ DenseQpSolver::DenseQpSolver(int max_variables, int max_equalities, int max_ineq
   row_scale_.setZero(max_mi_);
   cosines_.setZero(max_n_);
   sines_.setZero(max_n_);
+  normal_pairs_.setZero(max_n_ / 2 + 1);
   active_.setZero(max_n_);
   in_working_set_.setZero(max_mi_);
 }
@@ -214,7 +215,8 @@ bool DenseQpSolver::scaleInequalityRows(const Eigen::Ref<const Eigen::VectorXd>&
   // The row norms of C (for the scale-invariant choice of the most violated row) are computed
   // when a row is first found violated (rowScale): most rows never are, and C is the largest
   // input. C's entries are checked for finiteness by the first product C x (mostViolatedRow):
-  // with x finite, a non-finite entry makes its row's C x non-finite.
+  // with x finite, a non-finite entry makes its row's C x non-finite (the entries a profile
+  // says are zeros are not read: setInequalityProfile).
   const int me = static_cast<int>(E.rows()), mi = static_cast<int>(C.rows());
   row_scale_.head(mi).setZero();  // 0 = not computed yet (a computed scale is > 0)
   return g.allFinite() && e.allFinite() && d.allFinite() && (me == 0 || E.allFinite());
@@ -383,8 +385,13 @@ int DenseQpSolver::mostViolatedRow(const Eigen::Ref<const Eigen::MatrixXd>& C,
   // slower).
   const int mi = static_cast<int>(C.rows());
   if (mi == 0) return -1;
-  slack_.head(mi).noalias() = C * x;
-  slack_.head(mi) -= d;
+  if (inequality_profile_.fits(C)) {
+    eigen_assert(inequality_profile_.covers(C) && "C is nonzero outside its profile");
+    inequality_profile_.multiplySubtract(C, x, d, slack_.head(mi));  // the same bits
+  } else {
+    slack_.head(mi).noalias() = C * x;
+    slack_.head(mi) -= d;
+  }
   int p = -1;
   double worst = 0.0;
   bool finite = true;

@@ -14,6 +14,7 @@
 
 #include "qp_internal.hpp"
 #include "wpg/qp/dense_qp_solver.hpp"
+#include "wpg/qp/sparse_vector_product.hpp"
 
 namespace wpg::qp {
 namespace {
@@ -62,7 +63,8 @@ void applyRotationChainAscending(double* matrix, Eigen::Index ld, int rows, int 
 
 double DenseQpSolver::reduceNormal(int n) {
   const int q = active_count_;
-  d_.head(n).noalias() = J_.topLeftCorner(n, n).transpose() * normal_.head(n);
+  // d = J' n+ over the nonzero entries of the normal (a row of C or E, mostly zeros)
+  transposedTimesSparse(J_.topLeftCorner(n, n), normal_.head(n), normal_pairs_, d_.head(n));
   if (q >= n) return 0.0;
   // Zero d(q+1..n-1) from the bottom up with rotations G_i of the pairs (i-1, i), i = n-1..q+1;
   // J2 <- J2 G' keeps J'n+ = d. Rotation i meets a = d(i-1) and b = what rotation i+1 left in

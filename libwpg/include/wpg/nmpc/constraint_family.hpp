@@ -61,6 +61,13 @@ class ConstraintFamily {
   // previous sample's Jacobian instead of zeroing its rows first (the built-in families do;
   // a family that does not is simply zeroed).
   virtual bool rewritesJacobianRows() const { return false; }
+  // The jerk columns its row `row` may be nonzero in: those of samples 0 .. k - 1 of both axes
+  // for the k returned; the step columns are always taken as possibly nonzero. A row about the
+  // CoM or the CoP of sample j depends on the jerks up to sample j only (the prediction of
+  // eq. 1-3 is lower triangular): j + 1; a row about the steps alone: 0. The products with the
+  // Jacobian skip the other columns (NmpcModel::jacobianProfile), so evaluate() must leave
+  // them zero. Default: every sample (the horizon).
+  virtual int jerkSamplesOfRow(const NmpcModel& model, int row) const;
   // Warm start: the row that its row `row` (active at the last sample) becomes once the plan
   // is shifted one sample forward (and one step when a step was completed), or -1 when it
   // leaves the horizon or changes meaning. Must not allocate.

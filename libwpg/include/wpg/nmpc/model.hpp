@@ -43,6 +43,11 @@ class NmpcModel {
   int familyOfRow(int row) const;
   // All inequality rows: the families' rows, stacked in registration order.
   int inequalityCount() const { return family_first_row_.back(); }
+  // Where the constraint Jacobian (inequalityCount() x variables) may be nonzero: the step
+  // columns in every row, the jerk columns of sample k in the rows whose family's
+  // jerkSamplesOfRow exceeds k (the CoP rows of samples k..N-1 for the paper's families).
+  // The solver's products with the Jacobian skip the rest.
+  const qp::ColumnProfile& jacobianProfile() const { return jacobian_profile_; }
 
   const WalkingParameters& parameters() const { return parameters_; }
   const NmpcLayout& layout() const { return layout_; }
@@ -88,6 +93,8 @@ class NmpcModel {
   // Families are stateless (const): models share them when copied.
   std::vector<std::shared_ptr<const ConstraintFamily>> families_;
   std::vector<int> family_first_row_;  // familyCount() + 1 entries
+  qp::ColumnProfile jacobian_profile_;  // of the families registered so far
+  void updateJacobianProfile();
 };
 
 }  // namespace wpg

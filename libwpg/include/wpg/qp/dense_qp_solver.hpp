@@ -12,6 +12,8 @@
 // method continues. A good guess leaves zero or few iterations.
 #include <Eigen/Core>
 
+#include "wpg/qp/column_profile.hpp"
+
 namespace wpg::qp {
 
 enum class QpStatus {
@@ -58,6 +60,11 @@ class DenseQpSolver {
   // Indices out of range are ignored. Copies into preallocated storage (no allocation).
   void setActiveSetGuess(const int* inequality_indices, int count);
   void clearActiveSetGuess();
+
+  // The structure of the C of the next solves (wpg/qp/column_profile.hpp): their products C x
+  // read only the entries it says may be nonzero (the others must be zeros). Used for a C of
+  // the profile's size, ignored for others. Copies it (allocates: once, not per solve).
+  void setInequalityProfile(const ColumnProfile& profile) { inequality_profile_ = profile; }
 
   QpSettings& settings() { return settings_; }
   const QpSettings& settings() const { return settings_; }
@@ -175,6 +182,7 @@ class DenseQpSolver {
 
   int max_n_, max_me_, max_mi_;
   QpSettings settings_;
+  ColumnProfile inequality_profile_;  // default: C dense
   int iterations_ = 0;
   int warm_start_updates_ = 0;
   double objective_ = 0.0;
@@ -196,6 +204,7 @@ class DenseQpSolver {
   Eigen::VectorXd work_;          // max_n: temporaries
   Eigen::VectorXd gradient_;      // max_n: J'g (warm start)
   Eigen::VectorXd cosines_, sines_;  // max_n: Givens rotations of one update, applied to J at once
+  Eigen::VectorXi normal_pairs_;  // max_n / 2: the pairs (2i, 2i + 1) of normal_ not both zero
   Eigen::VectorXd slack_;         // max_mi: C x - d (positive = violated)
   Eigen::VectorXd row_scale_;     // max_mi: 1 / ||C_i|| (1 for zero rows), 0 = not computed yet
   Eigen::VectorXi active_;        // max_n: working set, equality i -> -1-i, inequality i -> i
