@@ -11,6 +11,7 @@
 #include "hdf5_read.hpp"
 #include "test_support.hpp"
 #include "wpg/datasets/storage/batch_dataset.hpp"
+#include "wpg/datasets/storage/dataset_checks.hpp"
 #include "wpg/datasets/storage/run_dataset_reader.hpp"
 
 namespace fs = std::filesystem;
@@ -99,6 +100,37 @@ TEST_F(BatchFiles, RunsAndSummaryRowsAsTheyFinish) {
   const BatchSummaryTable summary = readBatchSummary(path);
   EXPECT_EQ(summary.rows, 3u);
   EXPECT_EQ(summary.column_names.front(), "index");
+}
+
+// The engine's run result holds the run's checks (computeDatasetChecks): the writer takes them
+// from the record, prepared or not, rather than computing them a second time.
+TEST_F(BatchFiles, ChecksOfTheRecordAreTheOnesWritten) {
+  const Study study = load("two", "{robot_mass: [50.0, 55.0]}");
+  const std::string path = (directory_ / "batch.h5").string();
+  const wpg::WalkResult result = handMadeResult(100, 4, 5);
+  DatasetChecks checks;  // values the hand-made walk's own checks cannot have
+  checks.walk.landed_steps = 4242;
+  checks.walk.max_step_yaw_change = 12.5;
+  {
+    auto writer = BatchDatasetWriter::create(path, study, kColumns);
+    BatchRunRecord record;
+    record.result = &result;
+    record.checks = &checks;
+    record.values = {1.0, 1.0};
+    record.run = &study.runs[0];
+    writer->write(record);
+    record.run = &study.runs[1];
+    const PreparedRun prepared = BatchDatasetWriter::prepare(record);
+    writer->write(record, &prepared);
+    writer->close();
+  }
+  const H5::H5File file(path, H5F_ACC_RDONLY);
+  for (const char* name : {"two_0", "two_1"}) {
+    SCOPED_TRACE(name);
+    const H5::Group group = file.openGroup(std::string("runs/") + name + "/checks");
+    EXPECT_EQ(intAttribute(group, "landed_steps"), 4242);
+    EXPECT_EQ(doubleAttribute(group, "max_step_yaw_change"), 12.5);
+  }
 }
 
 TEST_F(BatchFiles, ResumeKnowsTheDoneRunsAndRefusesAnotherStudy) {

@@ -1,6 +1,7 @@
 // Run datasets: a hand-made WalkResult written to HDF5 reads back identical with the HDF5 C++
 // API (no code of ours in the reader), with the contract's names, units and attributes; the
 // write is atomic and cleans up after itself.
+#include <algorithm>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -227,6 +228,41 @@ TEST_F(RunDatasetFiles, EveryDatasetHasUnitsFrameAndDescription) {
     const H5::DataSet dataset = mpc.openDataSet(name);
     EXPECT_EQ(stringAttribute(dataset, "units"), units);
     EXPECT_FALSE(stringAttribute(dataset, "description").empty());
+  }
+}
+
+// The writer makes each chunk shape's creation properties once (hdf5_writing.cpp) and starts
+// again past a few hundred shapes: every dataset of runs of 300+ lengths still gets its own
+// chunk shape (the whole dataset up to ~64 KiB of rows) and its values.
+TEST_F(RunDatasetFiles, ChunksFollowEachDatasetsShapeOverManyRunLengths) {
+  const auto chunkOf = [](const H5::DataSet& dataset) {
+    const H5::DSetCreatPropList properties = dataset.getCreatePlist();
+    EXPECT_EQ(properties.getLayout(), H5D_CHUNKED);
+    std::vector<hsize_t> chunk(static_cast<std::size_t>(dataset.getSpace().getSimpleExtentNdims()));
+    properties.getChunk(static_cast<int>(chunk.size()), chunk.data());
+    return chunk;
+  };
+  const auto chunkRows = [](hsize_t rows, hsize_t row_bytes) {
+    return std::min<hsize_t>(rows, std::max<hsize_t>(1, 65536 / row_bytes));
+  };
+  std::vector<std::size_t> lengths;
+  for (std::size_t samples = 1; samples <= 300; ++samples) lengths.push_back(samples);
+  lengths.insert(lengths.end(), {8191, 8193, 20000});  // longer than one chunk
+  const std::string path = (directory_ / "run.h5").string();
+  for (const std::size_t samples : lengths) {
+    SCOPED_TRACE(samples);
+    const wpg::WalkResult result = handMadeResult(samples, 3, 4);
+    writeRunDataset(path, handMadeScenario(), result);
+    const H5::H5File file(path, H5F_ACC_RDONLY);
+    const H5::Group run = file.openGroup("/runs/hand_made");
+    const hsize_t n = samples;
+    EXPECT_EQ(chunkOf(run.openDataSet("time")), (std::vector<hsize_t>{chunkRows(n, 8)}));
+    EXPECT_EQ(chunkOf(run.openDataSet("com")), (std::vector<hsize_t>{chunkRows(n, 24), 3}));
+    EXPECT_EQ(chunkOf(run.openDataSet("left_foot")), (std::vector<hsize_t>{chunkRows(n, 32), 4}));
+    EXPECT_EQ(chunkOf(run.openDataSet("support")), (std::vector<hsize_t>{chunkRows(n, 1)}));
+    EXPECT_EQ(chunkOf(run.openDataSet("footsteps")), (std::vector<hsize_t>{3, 4}));
+    EXPECT_EQ(readDoubles(run, "time"), result.trajectory.time);
+    expectRows(result.trajectory.left_foot, readDoubles(run, "left_foot"), 4);
   }
 }
 

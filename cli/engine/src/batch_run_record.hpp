@@ -17,6 +17,7 @@ class BatchRunRecordOf {
     record_.clearances = result.footsteps ? &result.footsteps->clearances : nullptr;
     record_.multibody = multibody_ ? &*multibody_ : nullptr;
     record_.goal = result.walk.goal ? &*result.walk.goal : nullptr;
+    record_.checks = &result.checks;  // computed by evaluateRun: not again by the writer
     record_.exit_status = result.exitStatus();
   }
   BatchRunRecordOf(const BatchRunRecordOf&) = delete;

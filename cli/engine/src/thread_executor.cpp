@@ -95,6 +95,16 @@ class ThreadExecutor : public StudyExecutor {
     return nullptr;  // created by run() once its workers have started
   }
 
+  // A run as its worker leaves it for the writer: everything that can be computed without the
+  // file is, on the worker (the walk, its checks and metrics, the chunks compressed, the summary
+  // row and the caller's report), so that the writer, one thread at a time, only writes.
+  struct FinishedRun {
+    RunResult result;
+    datasets::PreparedRun prepared;
+    std::vector<double> values;  // the summary row (handling.summary_values)
+    std::vector<double> report;  // handling.report, when collected
+  };
+
   // The runs on the workers, their datasets compressed there, written in study order.
   void runInto(const std::vector<const datasets::StudyRun*>& runs,
                const StudyRunHandling& handling,
@@ -105,27 +115,30 @@ class ThreadExecutor : public StudyExecutor {
         std::max<std::size_t>(1, std::min<std::size_t>(static_cast<std::size_t>(threads_), runs.size())));
     std::vector<RobotModelCache> models;
     for (int worker = 0; worker < workers; ++worker) models.emplace_back(robots_directory_);
-    // Each slot is written by the worker of its run, then read by the writer: none is shared.
-    std::vector<datasets::PreparedRun> prepared(runs.size());
-    runOrdered<RunResult>(
+    runOrdered<FinishedRun>(
         runs.size(), workers,
         [&](std::size_t position, int worker) {
-          RunSettings settings{robots_directory_, &models[static_cast<std::size_t>(worker)]};
-          RunResult result = runScenario(runs[position]->scenario, settings);
-          BatchRunRecordOf record(*runs[position], result);
-          prepared[position] = datasets::BatchDatasetWriter::prepare(record.record());
-          return result;
-        },
-        [&](std::size_t position, RunResult&& result) {
           const datasets::StudyRun& run = *runs[position];
-          BatchRunRecordOf record(run, result);
-          record.record().values = handling.summary_values(run, result);
-          writer->write(record.record(), &prepared[position]);
-          prepared[position] = datasets::PreparedRun{};  // free the chunks
+          RunSettings settings{robots_directory_, &models[static_cast<std::size_t>(worker)]};
+          FinishedRun finished;
+          finished.result = runScenario(run.scenario, settings);
+          BatchRunRecordOf record(run, finished.result);
+          finished.prepared = datasets::BatchDatasetWriter::prepare(record.record());
+          finished.values = handling.summary_values(run, finished.result);
           if (handling.report && handling.collect) {
-            handling.collect(run.index, handling.report(run, result));
+            finished.report = handling.report(run, finished.result);
           }
-          observer.runFinished(result.exitStatus() != 0);
+          return finished;
+        },
+        [&](std::size_t position, FinishedRun&& finished) {
+          const datasets::StudyRun& run = *runs[position];
+          BatchRunRecordOf record(run, finished.result);
+          record.record().values = std::move(finished.values);
+          writer->write(record.record(), &finished.prepared);
+          if (handling.report && handling.collect) {
+            handling.collect(run.index, std::move(finished.report));
+          }
+          observer.runFinished(finished.result.exitStatus() != 0);
         },
         ready);
   }

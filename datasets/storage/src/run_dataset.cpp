@@ -165,6 +165,12 @@ void writeTrajectory(H5::Group& run, const WalkTrajectory& trajectory) {
                 "landed footsteps in landing order, the two initial feet first (landing time 0): "
                 "landing time, ankle x, y, yaw",
                 "landing_time, x, y, yaw"});
+  writeDoubles(run, "footstep_lift_off",
+               column(steps, [](const Footstep& step) { return step.lift_off_time; }), 0,
+               {"s", nullptr,
+                "lift-off time of each row of footsteps' swing (0 for the initial feet): its "
+                "single support is the landing time minus it",
+                nullptr});
   H5::DataSet side_set = writeCodes(
       run, "footstep_side", sides,
       {"1", nullptr, "side of each row of footsteps: 1 left, 2 right", nullptr});
@@ -487,7 +493,8 @@ void checkRunInputs(const Scenario& scenario, const wpg::WalkResult& result,
 
 H5::Group writeRunGroup(H5::Group& runs, const std::string& group_name, const Scenario& scenario,
                         const WalkResult& result, const FootstepClearances* clearances,
-                        const MultibodyRecord* multibody, const GoalOutcome* goal) {
+                        const MultibodyRecord* multibody, const GoalOutcome* goal,
+                        const DatasetChecks* given_checks) {
   H5::Group run = createGroup(runs, group_name);
   writeStringAttribute(run, "algorithm",
                        generatorAlgorithmName(scenario.request.generator.algorithm));
@@ -498,17 +505,20 @@ H5::Group writeRunGroup(H5::Group& runs, const std::string& group_name, const Sc
   writeTrajectory(run, result.trajectory);
   writeMpcLog(run, result.trajectory);
   writeObstacles(run, scenario.request.obstacles);
-  // The checks are computed once: while recording (a batch worker, off the lock) when there
-  // is a recording, and kept for the replay.
-  std::shared_ptr<const DatasetChecks> checks;
-  if (ChunkRecording* replay = activeReplay(); replay && replay->cache) {
-    checks = std::static_pointer_cast<const DatasetChecks>(replay->cache);
-  } else {
-    checks = std::make_shared<DatasetChecks>(
-        computeDatasetChecks(scenario, result.trajectory, clearances));
-    if (ChunkRecording* recording = activeRecording()) recording->cache = checks;
+  // The checks are computed at most once: by the caller (a batch run's result holds them), else
+  // here, while recording (a batch worker, off the lock) when there is a recording, and kept
+  // for the replay.
+  std::shared_ptr<const DatasetChecks> computed;
+  if (!given_checks) {
+    if (ChunkRecording* replay = activeReplay(); replay && replay->cache) {
+      computed = std::static_pointer_cast<const DatasetChecks>(replay->cache);
+    } else {
+      computed = std::make_shared<DatasetChecks>(
+          computeDatasetChecks(scenario, result.trajectory, clearances));
+      if (ChunkRecording* recording = activeRecording()) recording->cache = computed;
+    }
   }
-  writeChecks(run, *checks, clearances);
+  writeChecks(run, given_checks ? *given_checks : *computed, clearances);
   if (multibody) writeMultibody(run, scenario, *multibody);
   if (goal) writeGoal(run, scenario, *goal);  // and below, the follower's commands (replay too)
   if (scenario.goal.enabled) writeGoalCommands(run, result.trajectory);

@@ -282,9 +282,17 @@ StoredRun readFile(const std::string& path, const std::string& run_name) {
   hsize_t m = 0;
   const std::vector<double> footsteps = reader.doubles("footsteps", 4, &m);
   const std::vector<int> sides = reader.codes("footstep_side", m, 1, 2);
+  // Files written before the step timing was recorded have no lift-off times: NaN.
+  std::vector<double> lift_off(m, std::numeric_limits<double>::quiet_NaN());
+  if (run.nameExists("footstep_lift_off")) {
+    hsize_t rows = 0;
+    lift_off = reader.doubles("footstep_lift_off", 0, &rows);
+    reader.expectRows("footstep_lift_off", rows, m);
+  }
   for (hsize_t j = 0; j < m; ++j) {
     Footstep step;
     step.landing_time = footsteps[4 * j];
+    step.lift_off_time = lift_off[j];
     step.pose = Eigen::Vector3d(footsteps[4 * j + 1], footsteps[4 * j + 2], footsteps[4 * j + 3]);
     step.side = static_cast<FootSide>(sides[j]);
     t.footsteps.push_back(step);

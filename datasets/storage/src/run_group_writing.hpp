@@ -6,6 +6,7 @@
 
 #include <H5Cpp.h>
 
+#include "wpg/datasets/storage/dataset_checks.hpp"
 #include "wpg/datasets/storage/run_dataset.hpp"
 
 namespace wpg::datasets::detail {
@@ -15,9 +16,12 @@ void checkRunInputs(const Scenario& scenario, const wpg::WalkResult& result,
                     const FootstepClearances* clearances, const MultibodyRecord* multibody);
 
 // Creates runs/<group_name> with everything of the run schema; the caller holds hdf5Mutex().
+// `checks`: computeDatasetChecks of these inputs when the caller has them (the engine computed
+// them for its run result), else null: computed here.
 H5::Group writeRunGroup(H5::Group& runs, const std::string& group_name, const Scenario& scenario,
                         const wpg::WalkResult& result, const FootstepClearances* clearances,
                         const MultibodyRecord* multibody,
-                        const GoalOutcome* goal = nullptr);
+                        const GoalOutcome* goal = nullptr,
+                        const DatasetChecks* checks = nullptr);
 
 }  // namespace wpg::datasets::detail

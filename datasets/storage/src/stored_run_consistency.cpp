@@ -118,6 +118,12 @@ class ConsistencyCheck {
              number(t.footsteps[j - 1].landing_time) + " s (the previous row) to " +
              number(last) + " s (the walk's end), got " + number(landing) + " s");
       }
+      const double lift_off = t.footsteps[j].lift_off_time;  // NaN: not stored (older files)
+      if (!std::isnan(lift_off) && !(lift_off >= 0.0 && lift_off < landing)) {
+        fail("dataset " + run_path_ + "/footstep_lift_off row " + std::to_string(j) +
+             ": expected a lift-off time from 0 s to the landing time " + number(landing) +
+             " s, got " + number(lift_off) + " s");
+      }
     }
   }
 

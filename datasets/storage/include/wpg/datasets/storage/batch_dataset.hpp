@@ -17,6 +17,8 @@
 
 namespace wpg::datasets {
 
+struct DatasetChecks;  // dataset_checks.hpp
+
 // The schema version of the batch layout (root attribute `batch_schema_version`).
 constexpr int kBatchDatasetSchemaVersion = 1;
 
@@ -35,6 +37,9 @@ struct BatchRunRecord {
   const FootstepClearances* clearances = nullptr;       // may be null
   const MultibodyRecord* multibody = nullptr;  // may be null (not replayed)
   const GoalOutcome* goal = nullptr;                     // a walk to a goal, else null
+  // computeDatasetChecks of this run (the engine's run result holds them), or null: the writer
+  // computes them (prepare(), on the worker)
+  const DatasetChecks* checks = nullptr;
   int exit_status = 0;                 // 0 the walk succeeded, 1 it failed (as `wpg run`)
   std::vector<double> values;          // one per SummaryColumn, in the writer's order
 };
