@@ -27,15 +27,11 @@ else
 fi
 
 # One cell: "RMS / max" after the filter (before it for --replay), "falls at T s" when the
-# robot fell, "offline only" when the scenario's walk has no online loop (a goal walk).
+# robot fell; a walk to a goal that did not reach it says so (" (goal not reached)").
 cell() {
   local scenario=$1 status=0 out
   shift
   out="$("$wpg" run "$scenario" --no-plot -o "$work/run.h5" "$@" 2>&1)" || status=$?
-  if [[ $status == 2 ]] && grep -q "online filter loop runs velocity-command walks only" <<<"$out"; then
-    echo "offline only"
-    return
-  fi
   if grep -q "fallen" <<<"$out"; then
     local iterations
     iterations="$(sed -n 's/.*(\([0-9]*\) NMPC iterations).*/\1/p' <<<"$out" | head -1)"
@@ -53,6 +49,9 @@ cell() {
     sed -E 's/.*RMS [0-9.]+ mm -> ([0-9.]+) mm, max [0-9.]+ mm -> ([0-9.]+) mm.*/\1 \/ \2/' <<<"$line"
   else
     sed -E 's/.*RMS ([0-9.]+) mm, max ([0-9.]+) mm.*/\1 \/ \2/' <<<"$line"
+  fi
+  if grep -q "^goal " <<<"$out" && ! grep -q "^goal      reached" <<<"$out"; then
+    echo " (goal not reached)"
   fi
   [[ $status == 0 ]] || echo " (exit $status)"
 }

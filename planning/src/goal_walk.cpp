@@ -338,7 +338,8 @@ class GoalCommands final : public CommandSource {
 
 GoalWalkResult walkToGoal(const wpg::WalkingParameters& parameters, const wpg::WalkRequest& request,
                           const wpg::GoalRequest& goal,
-                          const PathFollowerSettings& follower_settings) {
+                          const PathFollowerSettings& follower_settings,
+                          wpg::ControlLoopObserver* observer) {
   parameters.validate();
   request.validate();
   checkWalkSize(parameters, request);
@@ -350,7 +351,7 @@ GoalWalkResult walkToGoal(const wpg::WalkingParameters& parameters, const wpg::W
   GoalWalkResult result;
   result.time_to_goal = kNaN;
   GoalCommands commands(parameters, request, goal, follower_settings, result);
-  result.walk = runWalkLoop(generator, request, commands);
+  result.walk = runWalkLoop(generator, request, commands, observer);
 
   WalkResult& walk = result.walk;
   const bool fallen = generator.fallen();

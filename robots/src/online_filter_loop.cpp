@@ -37,7 +37,8 @@ MultibodyReplaySettings zmpReplaySettings(const WalkingParameters& w) {
 }
 
 
-// The controller around the WPG, called by generateWalk around every control period.
+// The controller around the WPG, called by the walk loop (runWalkLoop: generateWalk or the walk
+// to a goal) around every control period.
 class FilterLoop : public ControlLoopObserver {
  public:
   FilterLoop(const RobotModel& model, const WalkingParameters& w,
@@ -114,7 +115,7 @@ class FilterLoop : public ControlLoopObserver {
     nmpc_.push_back(sample.nmpc_sample ? 1 : 0);
   }
 
-  // The samples generateWalk recorded after the last control period (the closing sample, at
+  // The samples the walk loop recorded after the last control period (the closing sample, at
   // the end or at a fall): the correction held, no timing (they are not control periods).
   void closeWalk(const WalkTrajectory& walk) {
     const std::size_t ticks = com_filtered_.size();
@@ -303,20 +304,31 @@ PreviewControlSettings onlinePreviewSettings(const PreviewControlSettings& filte
 OnlineFilterRun runOnlineFilterLoop(const RobotModel& model, const WalkingParameters& parameters,
                                     const WalkRequest& request,
                                     const OnlineFilterLoopSettings& settings,
-                                    const ConstraintFamilies& extra_families) {
+                                    const ObservedWalk& walk) {
   parameters.validate();
   if (settings.closed_loop && settings.reinitialize_wpg)
     throw std::invalid_argument("online filter: closed_loop and reinitialize_wpg are two forms "
                                 "of the re-initialisation, choose one");
   FilterLoop loop(model, parameters, settings);
+  // A walk to a goal may end before its duration: the duration bounds every walk's samples.
   loop.reserve(static_cast<std::size_t>(std::lround(request.duration / parameters.control_period)) + 2);
   OnlineFilterRun run;
-  run.walk = generateWalk(parameters, request, extra_families, &loop);
+  run.walk = walk(loop);
   if (run.walk.trajectory.size() < 3)
     throw std::runtime_error("online filter: the walk has fewer than 3 samples to replay");
   loop.closeWalk(run.walk.trajectory);
   run.validation = loop.validation(run.walk.trajectory, request);
   return run;
+}
+
+OnlineFilterRun runOnlineFilterLoop(const RobotModel& model, const WalkingParameters& parameters,
+                                    const WalkRequest& request,
+                                    const OnlineFilterLoopSettings& settings,
+                                    const ConstraintFamilies& extra_families) {
+  return runOnlineFilterLoop(model, parameters, request, settings,
+                             [&](ControlLoopObserver& observer) {
+                               return generateWalk(parameters, request, extra_families, &observer);
+                             });
 }
 
 }  // namespace wpg::robots

@@ -132,10 +132,3 @@ TEST_F(ScenarioRun, TheSameScenarioGivesTheSameWalk) {
   EXPECT_FALSE(a.footsteps.has_value());  // nor has obstacles
 }
 
-TEST_F(ScenarioRun, AGoalWalkWithTheOnlineFilterIsBadInput) {
-  const Scenario scenario =
-      shipped("goal_with_yaw", {"filter=true", "filter_settings.mode=online"});
-  wpg_test::expectInputError(
-      [&] { wpg::engine::runScenario(scenario, {wpg_test::kRobotsDir, nullptr}); },
-      scenario.source_path, {"filter_settings.mode", "expected offline"});
-}

@@ -6,7 +6,6 @@
 
 #include "wpg/analysis/chain_timing.hpp"
 #include "wpg/analysis/run_summary.hpp"
-#include "wpg/engine/run_input_checks.hpp"
 #include "wpg/planning/goal_walk.hpp"
 #include "wpg/planning/obstacle_checks.hpp"
 #include "wpg/planning/world.hpp"
@@ -15,14 +14,18 @@
 
 namespace wpg::engine {
 
-WalkOutcome runScenarioWalk(const datasets::Scenario& scenario) {
+namespace {
+
+// The walk of the scenario as WalkOutcome's stage records it: generateWalk, or the walk to its
+// goal with its plans and outcome; `observer` (may be null) around every control period.
+WalkOutcome scenarioWalk(const datasets::Scenario& scenario, ControlLoopObserver* observer) {
   WalkOutcome outcome;
   if (!scenario.goal.enabled) {
-    outcome.result = generateWalk(scenario.walking, scenario.request);
+    outcome.result = generateWalk(scenario.walking, scenario.request, {}, observer);
     return outcome;
   }
   planning::GoalWalkResult walk =
-      planning::walkToGoal(scenario.walking, scenario.request, scenario.goal);
+      planning::walkToGoal(scenario.walking, scenario.request, scenario.goal, {}, observer);
   outcome.result = std::move(walk.walk);
   outcome.planning_time = walk.planning_time;
   outcome.replans = walk.plans.empty() ? 0 : static_cast<int>(walk.plans.size()) - 1;
@@ -57,6 +60,12 @@ WalkOutcome runScenarioWalk(const datasets::Scenario& scenario) {
     goal.plans.push_back(std::move(row));
   }
   return outcome;
+}
+
+}  // namespace
+
+WalkOutcome runScenarioWalk(const datasets::Scenario& scenario) {
+  return scenarioWalk(scenario, nullptr);
 }
 
 double ReplayOutcome::realTimeFactor() const {
@@ -139,7 +148,6 @@ WalkAndReplay runWalkAndReplay(const robots::RobotModel* model,
     }
     return run;
   }
-  checkFilterMode(scenario, scenario.source_path);
   robots::OnlineFilterLoopSettings settings;
   settings.preview = robots::onlinePreviewSettings(scenario.filter_settings, scenario.filter_loop);
   settings.reinitialize_wpg = scenario.filter_loop.reinitialize_wpg;
@@ -148,7 +156,13 @@ WalkAndReplay runWalkAndReplay(const robots::RobotModel* model,
   const auto start = std::chrono::steady_clock::now();
   robots::OnlineFilterRun loop;
   try {
-    loop = robots::runOnlineFilterLoop(*model, scenario.walking, scenario.request, settings);
+    // The loop runs around the scenario's own walk: the velocity schedule, or the path
+    // follower of a walk to a goal (its plans and outcome kept in run.walk).
+    loop = robots::runOnlineFilterLoop(
+        *model, scenario.walking, scenario.request, settings, [&](ControlLoopObserver& observer) {
+          run.walk = scenarioWalk(scenario, &observer);
+          return std::move(run.walk.result);
+        });
   } catch (const std::runtime_error& e) {
     // The loop keeps no walk it cannot follow (one too short to replay): the walk is
     // generated again without the loop, and the run fails for the replay.
@@ -168,7 +182,7 @@ WalkAndReplay runWalkAndReplay(const robots::RobotModel* model,
   if (scenario.filter_loop.mode == DynamicFilterMode::kBoth) {
     // The offline pass needs the open-loop walk (the online one's CoM jumps where the WPG was
     // re-initialised): generated again without the loop.
-    const WalkResult open_loop = generateWalk(scenario.walking, scenario.request);
+    const WalkResult open_loop = runScenarioWalk(scenario).result;
     try {
       const ReplayOutcome offline =
           replayScenarioWalk(*model, scenario, open_loop.trajectory, true);

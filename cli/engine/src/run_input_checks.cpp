@@ -32,17 +32,6 @@ void checkGoalRequest(const datasets::Scenario& scenario, const std::string& ori
   }
 }
 
-void checkFilterMode(const datasets::Scenario& scenario, const std::string& origin) {
-  if (!scenario.goal.enabled || !scenario.filter ||
-      scenario.filter_loop.mode == DynamicFilterMode::kOffline) {
-    return;
-  }
-  throw datasets::InputError(
-      origin + ": key 'filter_settings.mode': expected offline for a scenario with a goal (the "
-      "online filter loop runs velocity-command walks only), got " +
-      dynamicFilterModeName(scenario.filter_loop.mode));
-}
-
 void checkRunInput(const datasets::Scenario& scenario, const std::string& origin,
                    RobotModelCache& models) {
   if (scenario.replay) {
@@ -50,7 +39,6 @@ void checkRunInput(const datasets::Scenario& scenario, const std::string& origin
     if (scenario.filter) checkFilterSettings(scenario, origin);
   }
   checkGoalRequest(scenario, origin);
-  if (scenario.replay) checkFilterMode(scenario, origin);
 }
 
 void checkStudyRobotModels(const datasets::Study& study, const std::string& robots_directory) {

@@ -71,8 +71,13 @@ double plannerRobotRadius(const wpg::WalkingParameters& parameters,
 void checkGoalRequest(const wpg::WalkingParameters& parameters, const wpg::WalkRequest& request,
                       const wpg::GoalRequest& goal);
 
-// Runs the walk. Throws std::invalid_argument on invalid parameters, request or goal.
+// Runs the walk. `observer` (not owned, may be null): a controller around the WPG, called
+// around every control period of the walk loop as in generateWalk (the dynamic filter's loop of
+// the paper's Fig. 3, robots/online_filter_loop.hpp); the follower reads the WPG's own CoM,
+// which the closed loop re-initialises at each NMPC iteration. Throws std::invalid_argument on
+// invalid parameters, request or goal.
 GoalWalkResult walkToGoal(const wpg::WalkingParameters& parameters, const wpg::WalkRequest& request,
-                          const wpg::GoalRequest& goal, const PathFollowerSettings& follower = {});
+                          const wpg::GoalRequest& goal, const PathFollowerSettings& follower = {},
+                          wpg::ControlLoopObserver* observer = nullptr);
 
 }  // namespace wpg::planning

@@ -5,6 +5,10 @@
 //     ^                                        |
 //     +---- CoM state sent (every NMPC iteration, when closed_loop or reinitialize_wpg) ----+
 //
+// The WPG is whoever commands it: the velocity schedule of the request (generateWalk) or the
+// route planner's path follower of a walk to a goal (planning/goal_walk.hpp), which gives the
+// NMPC a command every iteration in the same loop (runWalkLoop, walk_loop.hpp): the filter
+// sits around the generator's steps, not around the command source, so both run the same loop.
 // The arrow back is off by default (mode online, an open loop). closed_loop closes it in a
 // stable form: the WPG restarts from the CoM state sent to the robot and the filter runs on
 // (OnlineDynamicFilter::absorbIncrement); reinitialize_wpg is the paper's Fig. 3 read
@@ -26,11 +30,14 @@
 // paper's Sec. V-C table measures the control loop. The motion sent to the robot is replayed
 // once more at the end (validation, not part of the loop: Simbody's inverse dynamics) for the
 // ZMP error after the filter.
+#include <functional>
+
 #include "wpg/dynamic_filter.hpp"
 #include "wpg/multibody_validation.hpp"
 #include "wpg/preview_control.hpp"
 #include "wpg/robots/robot_model.hpp"
 #include "wpg/walk_generator.hpp"
+#include "wpg/walk_loop.hpp"
 #include "wpg/walk_request.hpp"
 #include "wpg/walking_parameters.hpp"
 
@@ -59,8 +66,23 @@ struct OnlineFilterRun {
   MultibodyValidation validation;   // filter_mode "online", per-tick timings
 };
 
-// Throws std::invalid_argument on invalid parameters or request (as generateWalk), and
-// std::runtime_error when the walk is too short to replay (fewer than 3 samples).
+// The walk the loop runs around: whoever commands it (generateWalk's velocity schedule, or
+// planning/'s walk to a goal, whose path follower gives the NMPC its command at every
+// iteration), it is runWalkLoop (walk_loop.hpp) with `observer`, called with the parameters
+// and the request given to runOnlineFilterLoop; returns the loop's result.
+using ObservedWalk = std::function<WalkResult(ControlLoopObserver& observer)>;
+
+// The loop around `walk` (see ObservedWalk). Throws std::invalid_argument on invalid parameters
+// (and what `walk` throws for its own input), and std::runtime_error when the walk is too short
+// to replay (fewer than 3 samples).
+OnlineFilterRun runOnlineFilterLoop(const RobotModel& model, const WalkingParameters& parameters,
+                                    const WalkRequest& request,
+                                    const OnlineFilterLoopSettings& settings,
+                                    const ObservedWalk& walk);
+
+// The loop around generateWalk (the request's velocity schedule). Throws std::invalid_argument
+// on invalid parameters or request (as generateWalk), and std::runtime_error when the walk is
+// too short to replay (fewer than 3 samples).
 OnlineFilterRun runOnlineFilterLoop(const RobotModel& model, const WalkingParameters& parameters,
                                     const WalkRequest& request,
                                     const OnlineFilterLoopSettings& settings,

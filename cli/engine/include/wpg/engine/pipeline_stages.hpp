@@ -48,14 +48,13 @@ ReplayOutcome replayScenarioWalk(const robots::RobotModel& model,
 // Stages walk + replay + filter as the scenario says (`scenario.replay`, `filter`,
 // `filter_settings.mode`): runScenarioWalk then replayScenarioWalk (no filter, or mode
 // offline), or the online loop of the paper's Fig. 3 (robots/online_filter_loop.hpp: the walk
-// and its filter together; mode both also runs generateWalk + the offline pass, whose ZMP
-// errors go to validation.offline_*). `model` is needed (non-null) when the scenario replays.
+// and its filter together, the velocity-command walk or the walk to a goal alike; mode both
+// also runs the walk again without the loop + the offline pass, whose ZMP errors go to
+// validation.offline_*). `model` is needed (non-null) when the scenario replays.
 // A replay that cannot follow the walk is written into the walk (success false, the reason
 // appended to its message) and into `replay_failure`: the run failed, its walk is kept. When the
 // online loop cannot follow its walk it returns none, and the walk is generated without it.
-// A goal walk is filtered offline only: datasets::InputError otherwise (checkFilterMode,
-// run_input_checks.hpp). Throws std::invalid_argument for a walk the generator rejects (as
-// generateWalk).
+// Throws std::invalid_argument for a walk the generator rejects (as generateWalk).
 struct WalkAndReplay {
   WalkOutcome walk;
   std::optional<ReplayOutcome> replay;

@@ -18,9 +18,6 @@ void checkFilterSettings(const datasets::Scenario& scenario, const std::string& 
 // bounds, a known planner. Nothing to check without a goal.
 void checkGoalRequest(const datasets::Scenario& scenario, const std::string& origin);
 
-// A walk to a goal is filtered offline only: the online filter loop runs velocity-command walks.
-void checkFilterMode(const datasets::Scenario& scenario, const std::string& origin);
-
 // Every check above that applies to the scenario, after loading the robot's multibody model into
 // `models` when the scenario replays, in the order `wpg run` reports them.
 void checkRunInput(const datasets::Scenario& scenario, const std::string& origin,

@@ -54,8 +54,7 @@ struct RunResult {
 
 // Runs `scenario` (loaded and checked by datasets/input; checkRunInput, run_input_checks.hpp,
 // checks the rest). Throws datasets::InputError, naming the scenario's file, for input that
-// cannot run (no robot model, a goal walk with the online filter, parameters the generator
-// rejects).
+// cannot run (no robot model, parameters the generator rejects).
 RunResult runScenario(const datasets::Scenario& scenario, const RunSettings& settings);
 
 // The rest of a result whose walk (and replay) are set: its outcome from the walk's success
