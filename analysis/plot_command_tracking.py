@@ -8,8 +8,12 @@ scenario's reference: vx, vy, omega), the steady-state tracking metrics of /batc
 kinematic reach (gait_reach.py; feasibility polygon and step duration from the run's stored
 scenario). A cell is "tracked" when steady_tracking <= 1 (every component within 10 % of the
 command, 0.01 of a zero one); otherwise "limp" when only a gait whose two steps reach unequally
-far can walk it, "unreachable" when no two-step gait can, else "missed". The figure: one panel
-per omega, vy across, vx up, the cell coloured by steady_tracking. Checked reads
+far can walk it, "unreachable" when no two-step gait can, else "missed" (the reach is that
+of the parameters' own steps, single_support_samples: the paper's timing). The step duration
+walked: the mean interval between the steady landings (those 15 s or more after the command;
+with walking.step_timing: adaptive a command beyond the reach is walked with shorter steps).
+The figure: one panel per omega, vy across, vx up, the cell coloured by steady_tracking and
+marked with its step duration when it is not the parameters'. Checked reads
 (wpg_file_reading.py): a bad file is one line and exit status 2.
 """
 import argparse
@@ -62,12 +66,18 @@ def read(path):
         data["name"] = reader.dataset(table, "name", kind="text", rows=rows)
         runs = reader.group(f, "runs")
         data["command"] = [None] * rows
+        data["step"] = [math.nan] * rows
         walking = None
         for i in np.flatnonzero(data["done"] == 1):
             run = reader.group(runs, data["name"][i])
             where = run.name + ":scenario"
             scenario = parse_scenario(path, where, reader.attribute(run, "scenario", kind="text"))
             data["command"][i] = command_of(path, where, scenario)
+            steps = reader.dataset(run, "footsteps", columns=4)
+            t_c = float(scenario["reference"][-1]["t"])
+            landings = [row[0] for row in steps[2:] if row[0] >= t_c + 15.0 - 1e-9]
+            data["step"][i] = ((landings[-1] - landings[0]) / (len(landings) - 1)
+                               if len(landings) >= 2 else math.nan)
             if walking is None:
                 walking = (where, scenario.get("walking"))
     if walking is None:
@@ -106,7 +116,7 @@ def classify(data, step, fx, fy):
         else:
             kind = "missed"
         cells.append(dict(v=v, measured=measured, reach=reach, regular=regular, kind=kind,
-                          failed=data["exit_status"][i] != 0))
+                          failed=data["exit_status"][i] != 0, step=data["step"][i]))
     return cells
 
 
@@ -118,15 +128,16 @@ def percent(measured, commanded):
 
 def write_table(cells, path):
     lines = ["| vx | vy | omega | steady vx | steady vy | steady omega | score | reach "
-             "(any / regular gait) | |", "|---|---|---|---|---|---|---|---|---|"]
+             "(any / regular gait) | step [s] | |", "|---|---|---|---|---|---|---|---|---|---|"]
     for c in sorted(cells, key=lambda c: (c["v"][2], c["v"][0], c["v"][1])):
         v, m = c["v"], c["measured"]
         reach = "-" if math.isinf(c["reach"]) else "%.2f / %.2f" % (c["reach"], c["regular"])
         values = ("-", "-", "-", "-") if math.isnan(m[3]) else (
             "%.3f (%s)" % (m[0], percent(m[0], v[0])), "%.3f (%s)" % (m[1], percent(m[1], v[1])),
             "%.3f (%s)" % (m[2], percent(m[2], v[2])), "%.2f" % m[3])
-        lines.append("| %g | %g | %g | %s | %s | %s | %s | %s | %s |"
-                     % ((v[0], v[1], v[2]) + values + (reach, c["kind"] + (
+        step = "-" if math.isnan(c["step"]) else "%.2f" % c["step"]
+        lines.append("| %g | %g | %g | %s | %s | %s | %s | %s | %s | %s |"
+                     % ((v[0], v[1], v[2]) + values + (reach, step, c["kind"] + (
                          ", walk failed" if c["failed"] else ""))))
     counts = {}
     for c in cells:
@@ -138,7 +149,7 @@ def write_table(cells, path):
         out.write("\n".join(lines) + "\n")
 
 
-def draw(cells, path, study):
+def draw(cells, path, study, step):
     omegas = sorted({c["v"][2] for c in cells})
     vxs = sorted({c["v"][0] for c in cells})
     vys = sorted({c["v"][1] for c in cells})
@@ -159,8 +170,10 @@ def draw(cells, path, study):
             x, y = vys.index(c["v"][1]), vxs.index(c["v"][0])
             mark = {"tracked": "", "unreachable": "x", "limp": "L", "missed": "!",
                     "stands": "s", "no steady state": "?"}[c["kind"]]
+            if not math.isnan(c["step"]) and abs(c["step"] - step) > 1e-6:
+                mark = (mark + " " if mark else "") + "%.1f" % c["step"]
             if mark:
-                ax.text(x, y, mark, ha="center", va="center", fontsize=8)
+                ax.text(x, y, mark, ha="center", va="center", fontsize=7)
         ax.set_title("omega = %g rad/s" % omega, fontsize=9)
         ax.set_xticks(range(len(vys)))
         ax.set_xticklabels(["%g" % v for v in vys], fontsize=7, rotation=90)
@@ -173,9 +186,10 @@ def draw(cells, path, study):
     counts = {}
     for c in cells:
         counts[c["kind"]] = counts.get(c["kind"], 0) + 1
-    fig.suptitle("%s: %s   (x beyond any two-step gait, L a limping gait only, ! missed, "
-                 "s stands)" % (study, ", ".join("%d %s" % (n, k) for k, n in
-                                                 sorted(counts.items(), key=lambda kv: -kv[1]))),
+    summary = ", ".join("%d %s" % (n, k)
+                        for k, n in sorted(counts.items(), key=lambda kv: -kv[1]))
+    fig.suptitle("%s: %s   (x beyond any two-step gait of %g s steps, L a limping gait only, "
+                 "! missed, s stands; a number: the steps walked [s])" % (study, summary, step),
                  fontsize=8)
     fig.savefig(path, dpi=80)
 
@@ -188,7 +202,7 @@ def main():
     args = parser.parse_args()
     data, step, fx, fy = read(args.batch_file)
     cells = classify(data, step, fx, fy)
-    draw(cells, args.output, os.path.basename(args.batch_file))
+    draw(cells, args.output, os.path.basename(args.batch_file), step)
     if args.table:
         write_table(cells, args.table)
     missed = sum(c["kind"] == "missed" for c in cells)

@@ -16,10 +16,22 @@ SteadyTracking steadyTracking(const WalkingParameters& w, const WalkRequest& req
   if (request.reference.empty() || n == 0) return result;
   const VelocityCommand& command = request.reference.back();
 
+  // The steady steps: the landings at or after the settling time.
+  std::vector<double> landings;
+  for (std::size_t k = 2; k < tr.footsteps.size(); ++k)
+    if (tr.footsteps[k].landing_time >= command.t + kSteadySettlingTime - 1e-9)
+      landings.push_back(tr.footsteps[k].landing_time);
+
   // The heading: the free-flyer yaw unwrapped, then its centred mean over one gait cycle W
   // (samples i - h .. i + h - 1): the feet turn once per step, the mean over two steps is
-  // smooth, and the sway's part of the velocity, periodic over W, then averages out.
-  const double cycle = 2.0 * w.stepDuration();
+  // smooth, and the sway's part of the velocity, periodic over W, then averages out. W is two
+  // of the steady steps as they were walked (their mean duration: with the adaptive step
+  // timing a command may be walked with shorter steps than the parameters'), two steps of the
+  // parameters without them.
+  const double cycle =
+      landings.size() >= 3
+          ? 2.0 * (landings.back() - landings.front()) / static_cast<double>(landings.size() - 1)
+          : 2.0 * w.stepDuration();
   const std::size_t h = static_cast<std::size_t>(std::lround(cycle / (2.0 * w.control_period)));
   if (h == 0 || n < 2 * h + 1) return result;
   std::vector<double> yaw(n), sums(n + 1, 0.0);
@@ -35,10 +47,6 @@ SteadyTracking steadyTracking(const WalkingParameters& w, const WalkRequest& req
 
   // Whole gait cycles: from the first landing at or after the settling time to the last
   // landing an even number of steps later whose heading window ends within the walk.
-  std::vector<double> landings;
-  for (std::size_t k = 2; k < tr.footsteps.size(); ++k)
-    if (tr.footsteps[k].landing_time >= command.t + kSteadySettlingTime - 1e-9)
-      landings.push_back(tr.footsteps[k].landing_time);
   const auto sampleAt = [&](double t) {
     return static_cast<std::size_t>(
         std::lower_bound(tr.time.begin(), tr.time.end(), t - 1e-9) - tr.time.begin());

@@ -27,7 +27,9 @@ Eigen::Vector3d nominalStep(const WalkingParameters& w, const Eigen::Vector3d& p
 }
 
 GaitScheduler::GaitScheduler(const WalkingParameters& parameters)
-    : parameters_(parameters), samples_per_step_(parameters.stepSamples()) {
+    : parameters_(parameters),
+      samples_per_step_(parameters.stepSamples()),
+      requested_samples_(parameters.stepSamples()) {
   reset(Eigen::Vector3d::Zero());
 }
 
@@ -36,6 +38,7 @@ void GaitScheduler::reset(const Eigen::Vector3d& pose) {
   left_ = composePose(pose, {0.0, half, 0.0});
   right_ = composePose(pose, {0.0, -half, 0.0});
   last_landing_ = Footstep();
+  samples_per_step_ = requested_samples_ = parameters_.stepSamples();
   standing_ = true;
   support_side_ = FootSide::kRight;
   phase_sample_ = 0;
@@ -50,6 +53,11 @@ void GaitScheduler::reset(const Eigen::Vector3d& pose) {
 
 GaitScheduler::SampleStart GaitScheduler::beginSample(const Eigen::Vector3d& command,
                                                       const Eigen::Vector2d& capture_point) {
+  bool cadence_changed = false;
+  if (standing_ && requested_samples_ != samples_per_step_) {
+    samples_per_step_ = requested_samples_;  // standing: no phase time to carry over
+    structure_changed_ = cadence_changed = true;
+  }
   const int S = samples_per_step_;
   const bool zero = isZeroCommand(command);
   // A zero command halts the walk only when the gait stops on it.
@@ -105,6 +113,14 @@ GaitScheduler::SampleStart GaitScheduler::beginSample(const Eigen::Vector3d& com
       structure_changed_ = true;
     }
   }
+  if (atLanding() && requested_samples_ != samples_per_step_) {
+    // The landed step is fixed and the next steps take the new timing from their lift-off.
+    samples_per_step_ = requested_samples_;
+    phase_sample_ = samples_per_step_ - 1;
+    lift_off_sample_ = 0;
+    structure_changed_ = cadence_changed = true;
+  }
+  start.cadence_changed = cadence_changed;
   start.structure_changed = structure_changed_;
   structure_changed_ = false;
   return start;
@@ -145,6 +161,7 @@ void GaitScheduler::fillPhase(const NmpcModel& model, PhaseStructure& phase) con
   const WalkingParameters& w = parameters_;
   const int S = samples_per_step_;
   const int nf = model.layout().steps;
+  assert(model.parameters().stepSamples() == S);
   assert(phase.step_fixed.size() == nf && phase.fixed_step_pose.cols() == nf);
   if (standing_) {
     phase.pattern = model.standingPattern();
@@ -197,6 +214,8 @@ GaitScheduler::SampleEnd GaitScheduler::endSample(const Eigen::Vector3d& planned
       const FootSide side = otherSide(support_side_);
       foot(side) = planned_landing;
       last_landing_.landing_time = end_time;
+      last_landing_.lift_off_time =
+          end_time - (S - 1 - lift_off_sample_) * parameters_.sampling_period;
       last_landing_.pose = planned_landing;
       last_landing_.side = side;
       end.landed = true;
@@ -206,7 +225,7 @@ GaitScheduler::SampleEnd GaitScheduler::endSample(const Eigen::Vector3d& planned
       // start lifts off later in the step (a swing of push_step_swing_samples).
       support_side_ = otherSide(support_side_);
       lift_off_sample_ =
-          short_first_swing_ ? S - 1 - parameters_.push_step_swing_samples : 0;
+          short_first_swing_ ? S - 1 - std::min(parameters_.push_step_swing_samples, S - 1) : 0;
       short_first_swing_ = false;
       phase_sample_ = lift_off_sample_;
       end.step_completed = true;

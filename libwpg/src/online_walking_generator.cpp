@@ -163,7 +163,7 @@ void OnlineWalkingGenerator::previewReference(int ticks, WalkTrajectory& out) co
     const int m = gait.phaseSample();
     if (!was_swinging) {  // a new swing: its polynomial from the lift-off pose (runNmpcSample)
       swing.start(gait.footPose(swing_side), start - (m - gait.liftOffSample()) * w.sampling_period,
-                  start + (w.stepSamples() - 1 - m) * w.sampling_period, w.step_height);
+                  start + (gait.stepSamples() - 1 - m) * w.sampling_period, w.step_height);
     }
     swing.replan(start, planned_step(step_offset));
   }

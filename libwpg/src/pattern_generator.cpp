@@ -28,41 +28,58 @@ double tangentClearance(const WalkingParameters& w) { return 1.5 * w.stop_foot_s
 
 }  // namespace
 
+PatternGenerator::Cadence::Cadence(const WalkingParameters& parameters,
+                                   const GeneratorSettings& settings,
+                                   const ConstraintFamilies& extra_families)
+    : model(makeModel(parameters, settings, extra_families)),
+      solver(model),
+      problem(model.makeProblem()),
+      planned_velocity_x(Eigen::VectorXd::Zero(parameters.horizon_length)),
+      planned_velocity_y(Eigen::VectorXd::Zero(parameters.horizon_length)) {}
+
 PatternGenerator::PatternGenerator(const WalkingParameters& parameters,
                                    const GeneratorSettings& settings,
                                    const ConstraintFamilies& extra_families)
-    : model_(makeModel(parameters, settings, extra_families)),
-      settings_(settings),
-      solver_(model_),
-      problem_(model_.makeProblem()),
+    : settings_(settings),
       gait_(parameters),
       references_(parameters),
-      planned_velocity_x_(Eigen::VectorXd::Zero(parameters.horizon_length)),
-      planned_velocity_y_(Eigen::VectorXd::Zero(parameters.horizon_length)),
+      cadence_choice_(parameters),
       omega0_(std::sqrt(parameters.gravity / parameters.com_height)) {
+  for (int c = 0; c < parameters.cadenceCount(); ++c) {
+    cadences_.push_back(std::make_unique<Cadence>(
+        c == 0 ? parameters : parameters.withSingleSupport(parameters.cadenceSingleSupport(c)),
+        settings, extra_families));
+  }
   reset();
 }
 
 void PatternGenerator::setObstacles(std::vector<Obstacle> obstacles) {
   obstacles_.set(std::move(obstacles));
-  problem_.obstacle_slot.setConstant(-1);
+  for (auto& cadence : cadences_) cadence->problem.obstacle_slot.setConstant(-1);
   obstacles_changed_ = true;
 }
 
 void PatternGenerator::reset(const Eigen::Vector3d& pose) {
+  active_ = 0;
+  model_ = &cadences_[0]->model;
+  solver_ = &cadences_[0]->solver;
+  problem_ = &cadences_[0]->problem;
+  for (auto& cadence : cadences_) cadence->solver.clearActiveSet();
   gait_.reset(pose);
+  references_.setCadence(model_->parameters());
   references_.reset(pose.z());
   obstacles_.forgetSides();
   com_x_ = Eigen::Vector3d(pose.x(), 0.0, 0.0);
   com_y_ = Eigen::Vector3d(pose.y(), 0.0, 0.0);
   command_.setZero();
+  held_samples_ = 0;
   time_ = 0.0;
   clearPlan();
   plan_ = SamplePlan();
 }
 
 Eigen::Vector3d PatternGenerator::clampCommand(const Eigen::Vector3d& command) const {
-  const WalkingParameters& w = model_.parameters();
+  const WalkingParameters& w = model_->parameters();
   return {std::clamp(command.x(), -w.max_forward_velocity, w.max_forward_velocity),
           std::clamp(command.y(), -w.max_lateral_velocity, w.max_lateral_velocity),
           std::clamp(command.z(), -w.max_angular_velocity, w.max_angular_velocity)};
@@ -72,6 +89,7 @@ const MpcIterationLog& PatternGenerator::update(double time, const Eigen::Vector
                                                 const SwingFootTrajectory* swing) {
   const auto start = std::chrono::steady_clock::now();
   const Eigen::Vector3d command = clampCommand(raw_command);
+  held_samples_ = command == command_ ? held_samples_ + 1 : 0;
   // The previous command held since the previous sample.
   if (!gait_.standing()) references_.integrateHeading(command_.z(), time - time_);
   time_ = time;
@@ -79,10 +97,26 @@ const MpcIterationLog& PatternGenerator::update(double time, const Eigen::Vector
 
   // The capture point c + c'/omega0 of the LIPM (eq. 3): where the CoP would have to be to
   // bring the CoM to rest; out of a standing robot's reach it must step.
-  const WalkingParameters& w = model_.parameters();
   const Eigen::Vector2d capture_point(com_x_(0) + com_x_(1) / omega0_,
                                       com_y_(0) + com_y_(1) / omega0_);
+  // Step timing: the cadence of the steps from the next landing on, for a steady command, one
+  // held for the whole step before that landing: the reach is that of a periodic gait, and a
+  // command that changes every sample (a path follower's) keeps the cadence in force. A
+  // standing robot starts with the parameters' own steps. The NMPC changes at the landing.
+  int wanted = gait_.standing()                                ? 0
+               : held_samples_ + 1 >= gait_.stepSamples() ? cadence_choice_.choose(command)
+                                                           : active_;
+  // Longer steps come one cadence a step: the CoM runs further during a longer step, and a
+  // robot walking fast needs the shorter steps to slow down (stopping at once from 0.5 s to
+  // 0.8 s steps made HRP-2 fall).
+  if (!gait_.standing()) wanted = std::max(wanted, active_ - 1);
+  gait_.requestStepSamples(parameters().cadenceSingleSupport(wanted) +
+                           parameters().double_support_samples);
   const GaitScheduler::SampleStart phase_start = gait_.beginSample(command, capture_point);
+  if (phase_start.cadence_changed) {
+    switchCadence(parameters().stepSamples() - gait_.stepSamples());
+  }
+  const WalkingParameters& w = model_->parameters();  // the cadence in force's
   if (phase_start.started) {
     references_.restartHeading(gait_.feetMeanYaw());
     seedPlanFromStanding(command, phase_start.first_swing);
@@ -91,36 +125,38 @@ const MpcIterationLog& PatternGenerator::update(double time, const Eigen::Vector
   obstacles_changed_ = false;
 
   // The problem of this sample: phase structure, cost references, CoM state, obstacles.
-  gait_.fillPhase(model_, problem_.phase);
+  gait_.fillPhase(*model_, problem_->phase);
   if (gait_.standing() || gait_.starting()) references_.forgetWalkedSamples();
   // The CoM velocities the warm start (the previous plan, shifted) predicts: J1's window
   // takes its turn there (reference_builder.hpp).
-  const LipmPrediction& P = model_.prediction();
-  const NmpcLayout& L = model_.layout();
-  planned_velocity_x_.noalias() = P.velocity_state * com_x_;
-  planned_velocity_x_.noalias() += P.velocity_jerk * solver_.plan().segment(L.jerkX(), L.horizon);
-  planned_velocity_y_.noalias() = P.velocity_state * com_y_;
-  planned_velocity_y_.noalias() += P.velocity_jerk * solver_.plan().segment(L.jerkY(), L.horizon);
+  const LipmPrediction& P = model_->prediction();
+  const NmpcLayout& L = model_->layout();
+  Eigen::VectorXd& planned_velocity_x = cadences_[active_]->planned_velocity_x;
+  Eigen::VectorXd& planned_velocity_y = cadences_[active_]->planned_velocity_y;
+  planned_velocity_x.noalias() = P.velocity_state * com_x_;
+  planned_velocity_x.noalias() += P.velocity_jerk * solver_->plan().segment(L.jerkX(), L.horizon);
+  planned_velocity_y.noalias() = P.velocity_state * com_y_;
+  planned_velocity_y.noalias() += P.velocity_jerk * solver_->plan().segment(L.jerkY(), L.horizon);
   references_.build(command, gait_.phaseSample(), gait_.feetMeanYaw(),
-                    Eigen::Vector2d(com_x_(1), com_y_(1)), planned_velocity_x_,
-                    planned_velocity_y_, problem_);
-  problem_.com_x = com_x_;
-  problem_.com_y = com_y_;
+                    Eigen::Vector2d(com_x_(1), com_y_(1)), planned_velocity_x,
+                    planned_velocity_y, *problem_);
+  problem_->com_x = com_x_;
+  problem_->com_y = com_y_;
   // Landing bound (landing_bound family): the landing planned at the previous sample is the
   // warm start's step 0 (shiftPlan moved step 1 there when the step before was completed).
-  problem_.landing_bounded = gait_.swinging() && !phase_start.structure_changed;
-  problem_.previous_landing = plannedStep(0);
-  problem_.landing_time_left =
+  problem_->landing_bounded = gait_.swinging() && !phase_start.structure_changed;
+  problem_->previous_landing = plannedStep(0);
+  problem_->landing_time_left =
       (w.stepSamples() - 1 - gait_.phaseSample()) * w.sampling_period;
   boundSwingReach(time, swing);
-  problem_.obstacles = obstacles_.distance();
+  problem_->obstacles = obstacles_.distance();
   if (gait_.standing()) {
-    problem_.obstacle_slot.setConstant(-1);
+    problem_->obstacle_slot.setConstant(-1);
   } else {
-    obstacles_.select(problem_.phase.support_pose.head<2>(), settings_.obstacle_reach,
-                      problem_.obstacle_slot);
+    obstacles_.select(problem_->phase.support_pose.head<2>(), settings_.obstacle_reach,
+                      problem_->obstacle_slot);
   }
-  problem_.obstacle_normal.setZero();
+  problem_->obstacle_normal.setZero();
   if (w.obstacle_linearization == ObstacleLinearization::kCommandTangent && !gait_.standing()) {
     // The circles' half-planes of this sample (wpg/obstacle_tangent.hpp): from the CoM, the
     // command's direction at this sample (J1's world reference) and the passing side, chosen
@@ -130,18 +166,18 @@ const MpcIterationLog& PatternGenerator::update(double time, const Eigen::Vector
     const Eigen::Vector2d feet_middle =
         0.5 * (gait_.footPose(FootSide::kLeft) + gait_.footPose(FootSide::kRight)).head<2>();
     obstacles_.tangentNormals(Eigen::Vector2d(com_x_(0), com_y_(0)), feet_middle,
-                              Eigen::Vector2d(problem_.velocity_x(0), problem_.velocity_y(0)),
+                              Eigen::Vector2d(problem_->velocity_x(0), problem_->velocity_y(0)),
                               w.obstacle_foot_radius, tangentClearance(w),
-                              problem_.obstacle_slot, problem_.obstacle_normal);
+                              problem_->obstacle_slot, problem_->obstacle_normal);
     // The sideways limit is the straight gait's: a turning robot yaws its feet, and with them
     // the feasibility polygon (eq. 14), towards the border, and is not held to it (with the
     // limit, experiment B stopped 6 cm further from its obstacle and the goal walks reached
     // their goals up to 1.6 s later).
     const double sideways_limit = command.z() == 0.0 ? w.gaitSidewaysSpeed() : 0.0;
-    turnReferenceAlongBorders(problem_.obstacle_normal, sideways_limit,
-                              problem_.velocity_x, problem_.velocity_y);
+    turnReferenceAlongBorders(problem_->obstacle_normal, sideways_limit,
+                              problem_->velocity_x, problem_->velocity_y);
   }
-  references_.addSway(problem_);
+  references_.addSway(*problem_);
 
   solve();
   readPlan(time);
@@ -158,7 +194,7 @@ bool PatternGenerator::advance(const Eigen::Vector3d& com_x, const Eigen::Vector
   com_x_ = com_x;
   com_y_ = com_y;
   const GaitScheduler::SampleEnd end =
-      gait_.endSample(plannedStep(0), time_ + model_.parameters().sampling_period);
+      gait_.endSample(plannedStep(0), time_ + model_->parameters().sampling_period);
   shiftPlan(end.step_completed);
   return end.landed;
 }
@@ -167,9 +203,9 @@ bool PatternGenerator::advance(const Eigen::Vector3d& com_x, const Eigen::Vector
 // at this sample within max_swing_speed and max_swing_acceleration. At the first sample of a
 // swing the foot is at rest on the ground: its trajectory starts here.
 void PatternGenerator::boundSwingReach(double time, const SwingFootTrajectory* swing) {
-  const WalkingParameters& w = model_.parameters();
-  problem_.swing_reach_bounded = false;
-  if (SwingReachRows::count(model_) == 0 || !gait_.swinging()) return;
+  const WalkingParameters& w = model_->parameters();
+  problem_->swing_reach_bounded = false;
+  if (SwingReachRows::count(*model_) == 0 || !gait_.swinging()) return;
   const int m = gait_.phaseSample();
   SwingFootTrajectory resting;
   if (!swing) {
@@ -180,22 +216,53 @@ void PatternGenerator::boundSwingReach(double time, const SwingFootTrajectory* s
   }
   const SwingReach reach = swingReach(*swing, time, plannedStep(0).head<2>(), w.max_swing_speed,
                                       w.max_swing_acceleration, w.control_period);
-  problem_.swing_reach_bounded = true;
-  problem_.swing_reach_lower = reach.lower;
-  problem_.swing_reach_upper = reach.upper;
+  problem_->swing_reach_bounded = true;
+  problem_->swing_reach_lower = reach.lower;
+  problem_->swing_reach_upper = reach.upper;
 }
 
 // --- the NMPC's plan and its warm start (owned by the solver) ------------------------------
 
+// At a landing where the step timing changes: the plan of the cadence in force becomes the
+// new cadence's initial guess (the same previewed steps; the jerks of the samples both
+// horizons have, the last one held beyond the shorter), without a warm-start active set (its
+// rows are another model's), and the references take the new timing.
+void PatternGenerator::switchCadence(int cadence) {
+  Cadence& to = *cadences_[cadence];
+  if (cadence != active_) {
+    const NmpcLayout& from_layout = model_->layout();
+    const NmpcLayout& to_layout = to.model.layout();
+    const Eigen::VectorXd& from = solver_->plan();
+    Eigen::VectorXd& U = to.solver.plan();
+    for (int axis = 0; axis < 2; ++axis) {
+      const int of = axis == 0 ? from_layout.jerkX() : from_layout.jerkY();
+      const int ot = axis == 0 ? to_layout.jerkX() : to_layout.jerkY();
+      for (int j = 0; j < to_layout.horizon; ++j)
+        U(ot + j) = from(of + std::min(j, from_layout.horizon - 1));
+    }
+    for (int i = 0; i < to_layout.steps; ++i) {
+      U(to_layout.stepX() + i) = from(from_layout.stepX() + i);
+      U(to_layout.stepY() + i) = from(from_layout.stepY() + i);
+      U(to_layout.stepYaw() + i) = from(from_layout.stepYaw() + i);
+    }
+    active_ = cadence;
+    model_ = &to.model;
+    solver_ = &to.solver;
+    problem_ = &to.problem;
+  }
+  solver_->clearActiveSet();
+  references_.setCadence(model_->parameters());
+}
+
 Eigen::Vector3d PatternGenerator::plannedStep(int step) const {
-  const NmpcLayout& L = model_.layout();
-  const Eigen::VectorXd& U = solver_.plan();
+  const NmpcLayout& L = model_->layout();
+  const Eigen::VectorXd& U = solver_->plan();
   return {U(L.stepX() + step), U(L.stepY() + step), U(L.stepYaw() + step)};
 }
 
 void PatternGenerator::seedStep(int step, const Eigen::Vector3d& pose) {
-  const NmpcLayout& L = model_.layout();
-  Eigen::VectorXd& U = solver_.plan();
+  const NmpcLayout& L = model_->layout();
+  Eigen::VectorXd& U = solver_->plan();
   U(L.stepX() + step) = pose.x();
   U(L.stepY() + step) = pose.y();
   U(L.stepYaw() + step) = pose.z();
@@ -207,33 +274,33 @@ void PatternGenerator::seedPlanFromStanding(const Eigen::Vector3d& command, Foot
   Eigen::Vector3d previous = gait_.footPose(otherSide(first_swing));
   seedStep(0, previous);
   FootSide side = first_swing;
-  for (int i = 1; i < model_.layout().steps; ++i, side = otherSide(side)) {
-    previous = nominalStep(model_.parameters(), previous, side, command);
+  for (int i = 1; i < model_->layout().steps; ++i, side = otherSide(side)) {
+    previous = nominalStep(model_->parameters(), previous, side, command);
     seedStep(i, previous);
   }
 }
 
 // The rows change meaning: no warm start across it.
-void PatternGenerator::dropWarmStart() { solver_.clearActiveSet(); }
+void PatternGenerator::dropWarmStart() { solver_->clearActiveSet(); }
 
 void PatternGenerator::clearPlan() {
-  solver_.plan().setZero();
-  solver_.clearActiveSet();
+  solver_->plan().setZero();
+  solver_->clearActiveSet();
 }
 
 void PatternGenerator::solve() {
   last_solve_ = settings_.algorithm == GeneratorAlgorithm::kLmpc
-                    ? solver_.solveLmpc(problem_, settings_)
-                    : solver_.solve(problem_, settings_);
+                    ? solver_->solveLmpc(*problem_, settings_)
+                    : solver_->solve(*problem_, settings_);
 }
 
 void PatternGenerator::readPlan(double time) {
-  const WalkingParameters& w = model_.parameters();
-  const NmpcLayout& L = model_.layout();
+  const WalkingParameters& w = model_->parameters();
+  const NmpcLayout& L = model_->layout();
   const int S = w.stepSamples();
   const int m = gait_.phaseSample();
-  plan_.jerk_x = solver_.plan()(L.jerkX());
-  plan_.jerk_y = solver_.plan()(L.jerkY());
+  plan_.jerk_x = solver_->plan()(L.jerkX());
+  plan_.jerk_y = solver_->plan()(L.jerkY());
   plan_.swinging = gait_.swinging();
   plan_.support = gait_.supportState();
   plan_.swing_side = otherSide(gait_.supportSide());
@@ -245,8 +312,8 @@ void PatternGenerator::readPlan(double time) {
 // The warm start of the next real-time iteration: the jerks one sample earlier and, when a
 // step was completed, the steps one place up with a nominal step appended.
 void PatternGenerator::shiftPlan(bool step_completed) {
-  const NmpcLayout& L = model_.layout();
-  Eigen::VectorXd& U = solver_.plan();
+  const NmpcLayout& L = model_->layout();
+  Eigen::VectorXd& U = solver_->plan();
   for (int axis = 0; axis < 2; ++axis) {
     const int o = axis == 0 ? L.jerkX() : L.jerkY();
     for (int j = 0; j + 1 < L.horizon; ++j) U(o + j) = U(o + j + 1);
@@ -257,9 +324,9 @@ void PatternGenerator::shiftPlan(bool step_completed) {
     for (int i = 0; i < L.steps; ++i) last_side = otherSide(last_side);
     const Eigen::Vector3d previous =
         L.steps >= 2 ? plannedStep(L.steps - 2) : gait_.footPose(gait_.supportSide());
-    seedStep(L.steps - 1, nominalStep(model_.parameters(), previous, last_side, command_));
+    seedStep(L.steps - 1, nominalStep(model_->parameters(), previous, last_side, command_));
   }
-  solver_.shiftActiveSet(step_completed);
+  solver_->shiftActiveSet(step_completed);
 }
 
 }  // namespace wpg

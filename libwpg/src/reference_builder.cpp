@@ -13,6 +13,13 @@ Eigen::Matrix2d rotation(double angle) {
   return Eigen::Rotation2Dd(angle).toRotationMatrix();
 }
 
+// The same matrix as rotation(angle) from its cosine and sine (Rotation2D's layout).
+Eigen::Matrix2d rotation(double cos_angle, double sin_angle) {
+  Eigen::Matrix2d R;
+  R << cos_angle, -sin_angle, sin_angle, cos_angle;
+  return R;
+}
+
 // Walked samples J1 needs: K - 1 for the window of the first previewed sample and, with the
 // sway, the window and the gait cycle C that end one cycle before it.
 int historyLength(const WalkingParameters& w) {
@@ -27,8 +34,16 @@ ReferenceBuilder::ReferenceBuilder(const WalkingParameters& parameters)
     : parameters_(parameters),
       history_(Eigen::Matrix<double, kHistoryRows, Eigen::Dynamic>::Zero(
           kHistoryRows, historyLength(parameters))),
-      robot_velocity_(Eigen::Matrix2Xd::Zero(2, history_.cols() + parameters.horizon_length)),
+      heading_cos_(Eigen::VectorXd::Zero(parameters.horizon_length)),
+      heading_sin_(Eigen::VectorXd::Zero(parameters.horizon_length)),
+      planned_robot_velocity_y_(Eigen::VectorXd::Zero(parameters.horizon_length)),
       sway_(Eigen::Matrix2Xd::Zero(2, parameters.horizon_length)) {}
+
+void ReferenceBuilder::setCadence(const WalkingParameters& cadence) {
+  assert(historyLength(cadence) <= history_.cols() && cadence.horizon_length <= sway_.cols());
+  parameters_ = cadence;
+  forgetWalkedSamples();
+}
 
 void ReferenceBuilder::reset(double yaw) {
   commanded_heading_ = yaw;
@@ -82,12 +97,22 @@ void ReferenceBuilder::build(const Eigen::Vector3d& command, int phase_sample,
     return heading + command.z() * (j + 1) * w.sampling_period;
   };
   const Eigen::Vector2d v = command.head<2>();
+  // R(h_j) of every previewed sample, from one cosine and sine each: the previous plan's
+  // velocity, the reference and the sway are turned by the same heading.
+  for (int j = 0; j < horizon; ++j) {
+    const double h_j = sample_heading(j);
+    heading_cos_(j) = std::cos(h_j);
+    heading_sin_(j) = std::sin(h_j);
+  }
 
   // The walked samples (newest first): the current sample's CoM velocity, with the command
   // and heading it was planned for at the previous sample, then the ones before.
   const int history = static_cast<int>(history_.cols());
   for (int i = history - 1; i > 0; --i) history_.col(i) = history_.col(i - 1);
-  if (history > 0) history_.col(0) << com_velocity, pending_command_, pending_heading_;
+  if (history > 0) {
+    history_.col(0) << com_velocity, pending_command_, pending_heading_,
+        rotation(pending_heading_).transpose() * com_velocity;
+  }
   walked_samples_ = std::min(walked_samples_ + 1, history);
   pending_command_ = v;
   pending_heading_ = sample_heading(0);
@@ -97,7 +122,7 @@ void ReferenceBuilder::build(const Eigen::Vector3d& command, int phase_sample,
   sway_.setZero();
   if (K == 1 && !sway) {  // the paper's instantaneous velocity, eq. (5)
     for (int j = 0; j < horizon; ++j) {
-      const Eigen::Vector2d reference = rotation(sample_heading(j)) * v;
+      const Eigen::Vector2d reference = rotation(heading_cos_(j), heading_sin_(j)) * v;
       problem.velocity_x(j) = reference.x();
       problem.velocity_y(j) = reference.y();
     }
@@ -106,20 +131,17 @@ void ReferenceBuilder::build(const Eigen::Vector3d& command, int phase_sample,
     return;
   }
 
-  // Robot-frame velocities u_i = R(h_i)^T c'_i, column history - 1 - m for the walked sample
-  // m (oldest first), then the previewed samples of the previous plan.
-  for (int m = 0; m < history; ++m) {
-    robot_velocity_.col(history - 1 - m) =
-        rotation(history_(4, m)).transpose() * history_.block<2, 1>(0, m);
-  }
+  // Robot-frame velocities u_i = R(h_i)^T c'_i: of the walked samples in history_ (rows 5-6),
+  // of the previewed samples of the previous plan here.
   for (int i = 0; i < horizon; ++i) {
     const Eigen::Vector2d planned(planned_velocity_x(i), planned_velocity_y(i));
-    robot_velocity_.col(history + i) = rotation(sample_heading(i)).transpose() * planned;
+    planned_robot_velocity_y_(i) =
+        (rotation(heading_cos_(i), heading_sin_(i)).transpose() * planned).y();
   }
   const auto robot_mean_y = [&](int last, int count) {  // sample index: -1 = newest walked
     double sum = 0.0;  // the samples before the oldest walked one count as 0
     for (int i = std::max(last - count + 1, -history); i <= last; ++i)
-      sum += robot_velocity_(1, history + i);
+      sum += i < 0 ? history_(6, -1 - i) : planned_robot_velocity_y_(i);
     return sum / count;
   };
 
@@ -134,26 +156,31 @@ void ReferenceBuilder::build(const Eigen::Vector3d& command, int phase_sample,
   const double window = K;
   for (int j = 0; j < horizon; ++j) {
     const double h_j = sample_heading(j);
+    const Eigen::Matrix2d turn_j = rotation(heading_cos_(j), heading_sin_(j));  // R(h_j)
     Eigen::Vector2d walked = Eigen::Vector2d::Zero(), commands = Eigen::Vector2d::Zero();
     for (int m = 0; m < K - 1 - j; ++m) {
       walked += rotation(h_j - history_(4, m)) * history_.block<2, 1>(0, m);
       commands += history_.block<2, 1>(2, m);
     }
     for (int i = std::max(0, j + 1 - K); i <= j; ++i) {
-      const Eigen::Vector2d planned(planned_velocity_x(i), planned_velocity_y(i));
-      walked += (rotation(h_j - sample_heading(i)) - Eigen::Matrix2d::Identity()) * planned;
       commands += v;
+      // No turn (i = j, or a straight walk): R - I = 0 adds zeros, the sum stays as it is.
+      const double turn = h_j - sample_heading(i);
+      if (turn == 0.0) continue;
+      const Eigen::Vector2d planned(planned_velocity_x(i), planned_velocity_y(i));
+      walked += (rotation(turn) - Eigen::Matrix2d::Identity()) * planned;
     }
-    const Eigen::Vector2d reference = rotation(h_j) * commands / window;
+    const Eigen::Vector2d reference = turn_j * commands / window;
     Eigen::Vector2d lateral = Eigen::Vector2d::Zero();
     // The sway: the left and right steps carry the CoM to alternate sides, so the window's
     // lateral mean alternates about the cycle's mean; the target takes that alternation as the
     // robot walked it one gait cycle C earlier (a periodic gait repeats it), so that only the
     // cycle's mean and changes of the sway are charged. Not before that cycle was walked
-    // (forgetWalkedSamples: the start's weight shift is no sway to repeat).
-    if (sway && walked_samples_ == history)
+    // (forgetWalkedSamples: the start's weight shift is no sway to repeat; nor is the cycle
+    // before a change of step timing, setCadence).
+    if (sway && walked_samples_ >= historyLength(w))
       lateral.y() = robot_mean_y(j - C, K) - robot_mean_y(j - C, C);
-    sway_.col(j) = rotation(h_j) * lateral;
+    sway_.col(j) = turn_j * lateral;
     problem.velocity_past_x(j) = walked.x() / window;
     problem.velocity_past_y(j) = walked.y() / window;
     problem.velocity_x(j) = reference.x();

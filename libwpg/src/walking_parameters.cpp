@@ -62,6 +62,21 @@ const char* velocityTrackingName(VelocityTracking tracking) {
   return "unknown";
 }
 
+bool parseStepTiming(const std::string& name, StepTiming* out) {
+  if (name == "fixed") {
+    *out = StepTiming::kFixed;
+  } else if (name == "adaptive") {
+    *out = StepTiming::kAdaptive;
+  } else {
+    return false;
+  }
+  return true;
+}
+
+const char* stepTimingName(StepTiming timing) {
+  return timing == StepTiming::kFixed ? "fixed" : "adaptive";
+}
+
 bool parseZeroCommandGait(const std::string& name, ZeroCommandGait* out) {
   if (name == "stop") {
     *out = ZeroCommandGait::kStop;
@@ -148,6 +163,10 @@ void WalkingParameters::validate() const {
           "previewed_steps * (single_support_samples + double_support_samples) = " +
               std::to_string(previewed_steps * stepSamples()),
           horizon_length);
+  require(min_single_support_samples >= 1 &&
+              min_single_support_samples <= single_support_samples,
+          "min_single_support_samples", "an integer in [1, single_support_samples]",
+          min_single_support_samples);
   require(start_double_support_samples >= 1 && start_double_support_samples <= stepSamples(),
           "start_double_support_samples",
           "an integer in [1, single_support_samples + double_support_samples]",
@@ -204,6 +223,18 @@ void WalkingParameters::validate() const {
   requireNonNegative(max_forward_velocity, "max_forward_velocity");
   requireNonNegative(max_lateral_velocity, "max_lateral_velocity");
   requireNonNegative(max_angular_velocity, "max_angular_velocity");
+}
+
+WalkingParameters WalkingParameters::withSingleSupport(int single_support) const {
+  WalkingParameters w = *this;
+  w.single_support_samples = single_support;
+  w.horizon_length = previewed_steps * w.stepSamples();
+  w.start_double_support_samples = std::min(start_double_support_samples, w.stepSamples());
+  w.push_start_double_support_samples =
+      std::min(push_start_double_support_samples, w.stepSamples());
+  w.push_step_swing_samples = std::min(push_step_swing_samples, single_support);
+  w.velocity_window_samples = std::min(velocity_window_samples, w.horizon_length);
+  return w;
 }
 
 std::vector<Eigen::Vector2d> WalkingParameters::feasibilityVertices(FootSide side) const {

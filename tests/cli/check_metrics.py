@@ -85,7 +85,12 @@ def steady_tracking(w, t, run, reference):
         return nan
     command = np.array(reference[-1]["v"], dtype=float)
     t_c = reference[-1]["t"]
-    cycle = 2 * (w["single_support_samples"] + w["double_support_samples"]) * w["sampling_period"]
+    landings = [s[0] for s in run["footsteps"][2:] if s[0] >= t_c + 15.0 - 1e-9]
+    # a gait cycle: two of the steady steps as walked (adaptive step timing), else two steps
+    if len(landings) >= 3:
+        cycle = 2 * (landings[-1] - landings[0]) / (len(landings) - 1)
+    else:
+        cycle = 2 * (w["single_support_samples"] + w["double_support_samples"]) * w["sampling_period"]
     h = int(round(cycle / (2 * w["control_period"])))
     n = len(t)
     if h == 0 or n < 2 * h + 1:
@@ -95,7 +100,6 @@ def steady_tracking(w, t, run, reference):
 
     def heading(i):
         return (sums[i + h] - sums[i - h]) / (2 * h)
-    landings = [s[0] for s in run["footsteps"][2:] if s[0] >= t_c + 15.0 - 1e-9]
 
     def sample(time):
         return int(np.searchsorted(t, time - 1e-9))

@@ -105,7 +105,10 @@ TEST(OnlineWalkingGenerator, CoMAndFeetAreContinuousBetweenControlPeriods) {
       max_foot_acceleration =
           std::max(max_foot_acceleration, (c - 2.0 * b + a).head<3>().norm() / (dt * dt));
       EXPECT_LT((c - b).head<3>().norm(), 1.5 * dt) << "t = " << s[k].time;  // < 1.5 m/s
-      EXPECT_LT(std::abs(c(3) - b(3)), 1.0 * dt) << "t = " << s[k].time;    // < 1 rad/s
+      // < 1.5 rad/s, the authors' code's bound on the landing's yaw rate: the command is
+      // beyond the reach of 0.8 s steps and is walked with shorter ones (walking.step_timing:
+      // adaptive), whose swing turns the foot at up to 1.27 rad/s (at t = 1.6 s).
+      EXPECT_LT(std::abs(c(3) - b(3)), 1.5 * dt) << "t = " << s[k].time;
       // A jump of 1 mm at a landing or a re-plan would be 40 m/s^2 here.
       EXPECT_LT((c - 2.0 * b + a).head<3>().norm(), 12.0 * dt * dt) << "t = " << s[k].time;
       EXPECT_GE(b(2), -1e-12);

@@ -73,6 +73,13 @@ const WalkingChoice kZeroCommandGait{
     },
     [](const WalkingParameters& p) { return zeroCommandGaitName(p.zero_command); }};
 
+const WalkingChoice kStepTiming{
+    "fixed or adaptive",
+    [](const std::string& name, WalkingParameters* p) {
+      return parseStepTiming(name, &p->step_timing);
+    },
+    [](const WalkingParameters& p) { return stepTimingName(p.step_timing); }};
+
 const WalkingChoice kStandingPushResponse{
     "step or stand",
     [](const std::string& name, WalkingParameters* p) {
@@ -98,6 +105,8 @@ const std::vector<WalkingField>& walkingFields() {
       integerField("single_support_samples", &P::single_support_samples),
       integerField("double_support_samples", &P::double_support_samples),
       integerField("previewed_steps", &P::previewed_steps),
+      choiceField("step_timing", &kStepTiming),
+      integerField("min_single_support_samples", &P::min_single_support_samples),
       integerField("start_double_support_samples", &P::start_double_support_samples),
       choiceField("zero_command", &kZeroCommandGait),
       choiceField("standing_push_response", &kStandingPushResponse),

@@ -22,6 +22,10 @@
 //    capture point's side first, with a short first swing (push_step_swing_samples: the
 //    capture point runs away from the CoP as e^(omega0 t), ~11x in a 0.7 s swing); with a zero
 //    command it then stops again as above.
+//  * Step timing (walking.step_timing: adaptive): the number of samples per step may change
+//    at a landing, when the landed foot is fixed and the whole horizon lies in the steps to
+//    come (requestStepSamples; wpg/step_timing.hpp chooses it). A standing robot takes the
+//    parameters' own step (its start is the paper's).
 #include <Eigen/Core>
 
 #include "wpg/nmpc.hpp"
@@ -57,6 +61,9 @@ class GaitScheduler {
     // The phase structure changed meaning (start, cancelled start, stop, reset): the rows
     // of the previous active set do not describe this sample's problem.
     bool structure_changed = false;
+    // The steps from here on have another number of samples (stepSamples()): the NMPC of
+    // this sample is another model's (structure_changed is set too).
+    bool cadence_changed = false;
   };
   // Phase bookkeeping at the start of an NMPC sample for the clamped robot-frame command and
   // the CoM's capture point (x, y) c + c'/omega0 at that instant (world frame).
@@ -76,6 +83,16 @@ class GaitScheduler {
   // Ends the sampling period. `planned_landing` is the first previewed step of the solution
   // (where a landing swing foot is put); `end_time` the time at the end of the period.
   SampleEnd endSample(const Eigen::Vector3d& planned_landing, double end_time);
+
+  // Steps of `samples` samples (single + double support) from the next landing on (at once
+  // when standing: then the parameters' own, as a start expects). Applied by beginSample.
+  void requestStepSamples(int samples) { requested_samples_ = samples; }
+  int stepSamples() const { return samples_per_step_; }  // S of the current step
+  // This sample is a step boundary: the swing foot has landed (or a start's first support foot
+  // stands), the steps to come are all free of the current one.
+  bool atLanding() const {
+    return !standing_ && start_remaining_ == 0 && phase_sample_ == samples_per_step_ - 1;
+  }
 
   bool standing() const { return standing_; }
   bool starting() const { return start_remaining_ > 0; }
@@ -107,7 +124,8 @@ class GaitScheduler {
   void setDoubleSupport(PhaseStructure& phase) const;
 
   WalkingParameters parameters_;
-  int samples_per_step_ = 0;  // S
+  int samples_per_step_ = 0;  // S of the current step
+  int requested_samples_ = 0;  // S of the steps from the next landing on
   Eigen::Vector3d left_ = Eigen::Vector3d::Zero(), right_ = Eigen::Vector3d::Zero();
   Footstep last_landing_;
   bool standing_ = true;

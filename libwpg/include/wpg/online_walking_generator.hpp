@@ -114,7 +114,7 @@ class OnlineWalkingGenerator {
   // Capture point distance to the nearest foot at the last sampling instant [m].
   double captureDistance() const { return capture_distance_; }
   const PatternGenerator& patternGenerator() const { return generator_; }
-  const WalkingParameters& parameters() const { return generator_.model().parameters(); }
+  const WalkingParameters& parameters() const { return generator_.parameters(); }
 
  private:
   void runNmpcSample(double t);

@@ -8,6 +8,12 @@
 // the NMPC (or LMPC) solve, and the shift of the plan to the next sample (warm start).
 // OnlineWalkingGenerator (online_walking_generator.hpp) adds the control-period
 // interpolation of the CoM and the feet on top of it.
+//
+// Step timing (walking.step_timing: adaptive, wpg/step_timing.hpp): the NMPC's horizon is
+// previewed_steps steps, so each cadence (single support) the gait may take has its own model,
+// solver and problem, all built here; at a landing where the cadence changes the plan is handed
+// over (the same steps, the jerks of the common samples) and the new solver starts without a
+// warm-start active set. Nothing is allocated when the cadence changes.
 #include <memory>
 #include <vector>
 
@@ -17,6 +23,7 @@
 #include "wpg/nmpc.hpp"
 #include "wpg/obstacle_selector.hpp"
 #include "wpg/reference_builder.hpp"
+#include "wpg/step_timing.hpp"
 #include "wpg/swing_foot_trajectory.hpp"
 
 namespace wpg {
@@ -89,9 +96,15 @@ class PatternGenerator {
   bool starting() const { return gait_.starting(); }
   int phaseSample() const { return gait_.phaseSample(); }
   const GaitScheduler& gait() const { return gait_; }
-  const NmpcModel& model() const { return model_; }
-  const NmpcProblem& problem() const { return problem_; }
-  const NmpcSolver& solver() const { return solver_; }
+  // The parameters given (the slowest cadence's); model().parameters() are those of the
+  // cadence in force.
+  const WalkingParameters& parameters() const { return cadences_.front()->model.parameters(); }
+  // The NMPC of the cadence in force (the parameters' own unless the adaptive step timing
+  // walks shorter steps: model().parameters().single_support_samples).
+  const NmpcModel& model() const { return *model_; }
+  const NmpcProblem& problem() const { return *problem_; }
+  const NmpcSolver& solver() const { return *solver_; }
+  int cadence() const { return active_; }  // 0: the parameters' single support
   const NmpcSolveResult& lastSolve() const { return last_solve_; }
   Eigen::Vector3d clampCommand(const Eigen::Vector3d& command) const;
 
@@ -106,16 +119,29 @@ class PatternGenerator {
   void readPlan(double time);
   void shiftPlan(bool step_completed);
   void boundSwingReach(double time, const SwingFootTrajectory* swing);
+  void switchCadence(int cadence);
   // ------------------------------------------------------------------------------------------
 
-  NmpcModel model_;
+  // One NMPC per cadence (heap-allocated once: the solver is bound to its model's address).
+  struct Cadence {
+    Cadence(const WalkingParameters& parameters, const GeneratorSettings& settings,
+            const ConstraintFamilies& extra_families);
+    NmpcModel model;
+    NmpcSolver solver;
+    NmpcProblem problem;
+    // CoM velocities at the horizon's samples predicted by the warm start (J1's window)
+    Eigen::VectorXd planned_velocity_x, planned_velocity_y;
+  };
+  std::vector<std::unique_ptr<Cadence>> cadences_;  // [c]: cadenceSingleSupport(c)
+  int active_ = 0;
+  // The cadence in force's.
+  NmpcModel* model_ = nullptr;
+  NmpcSolver* solver_ = nullptr;
+  NmpcProblem* problem_ = nullptr;
   GeneratorSettings settings_;
-  NmpcSolver solver_;
-  NmpcProblem problem_;
   GaitScheduler gait_;
   ReferenceBuilder references_;
-  // CoM velocities at the horizon's samples predicted by the warm start (J1's window)
-  Eigen::VectorXd planned_velocity_x_, planned_velocity_y_;
+  CadenceChoice cadence_choice_;
   double omega0_ = 0.0;  // sqrt(g / h) of the LIPM (eq. 3), for the capture point
   ObstacleSelector obstacles_;
   SamplePlan plan_;
@@ -124,6 +150,7 @@ class PatternGenerator {
 
   Eigen::Vector3d com_x_ = Eigen::Vector3d::Zero(), com_y_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d command_ = Eigen::Vector3d::Zero();  // the clamped command of time_
+  int held_samples_ = 0;  // samples before time_'s with the same command
   double time_ = 0.0;
   bool obstacles_changed_ = false;
 };

@@ -16,6 +16,12 @@ class ReferenceBuilder {
  public:
   explicit ReferenceBuilder(const WalkingParameters& parameters);
 
+  // The steps from here on have the timing of `cadence` (walking.step_timing: adaptive;
+  // WalkingParameters::withSingleSupport of the constructor's, whose horizon is at most
+  // theirs): J2's turn per step and J1's gait cycle follow it. The sway restarts as after
+  // standing: the cycle before a change of cadence is no sway to repeat. Does not allocate.
+  void setCadence(const WalkingParameters& cadence);
+
   // Heading `yaw` [rad], no walked velocities.
   void reset(double yaw);
   // J1's window and sway start afresh: called while the robot stands or starts (a standing
@@ -50,14 +56,18 @@ class ReferenceBuilder {
   // mean yaw when the walk started plus the integral of the commanded omega since.
   double commanded_heading_ = 0.0;
   // The walked samples of J1's window and sway, newest first: rows 0-1 the CoM velocity
-  // (x', y') at that sample, 2-3 the robot-frame command (vx, vy) and 4 the heading its
-  // reference was turned by when it was planned.
-  static constexpr int kHistoryRows = 5;
+  // (x', y') at that sample, 2-3 the robot-frame command (vx, vy), 4 the heading h its
+  // reference was turned by when it was planned, and 5-6 the CoM velocity in that frame,
+  // R(h)^T (x', y'): it never changes once walked, so it is turned once, when the sample
+  // enters the history, not at every build it stays in (31 samples with the sway).
+  static constexpr int kHistoryRows = 7;
   Eigen::Matrix<double, kHistoryRows, Eigen::Dynamic> history_;
   int walked_samples_ = 0;  // columns of history_ walked since forgetWalkedSamples()
-  // Scratch: robot-frame velocities of the walked samples (oldest first) and of the previous
-  // plan's previewed ones.
-  Eigen::Matrix2Xd robot_velocity_;
+  // Scratch of a build: the cosine and sine of each previewed sample's heading h_j (each turns
+  // the previous plan's velocity into the robot's frame, the reference and the sway into the
+  // world's), and the lateral robot-frame velocity of the previous plan's samples.
+  Eigen::VectorXd heading_cos_, heading_sin_;
+  Eigen::VectorXd planned_robot_velocity_y_;
   // J1's world-frame sway per previewed sample (addSway), zero without it.
   Eigen::Matrix2Xd sway_;
   // The command and heading of the first previewed sample at the last build: those the next

@@ -44,6 +44,10 @@ struct Footstep {
   double landing_time = 0.0;  // [s]; 0 for the initial feet
   Eigen::Vector3d pose = Eigen::Vector3d::Zero();  // x, y [m], yaw [rad] of the ankle on the ground
   FootSide side = FootSide::kLeft;
+  // [s] when its swing lifted off: landing_time - lift_off_time is the step's single support
+  // (0.7 s for HRP-2's regular steps, shorter with the adaptive step timing or after a push
+  // start); 0 for the initial feet.
+  double lift_off_time = 0.0;
 };
 
 struct MpcIterationLog {

@@ -116,6 +116,24 @@ enum class ObstacleLinearization {
 bool parseObstacleLinearization(const std::string& name, ObstacleLinearization* out);
 const char* obstacleLinearizationName(ObstacleLinearization linearization);
 
+// How long the steps last (docs/command_tracking.md, "Step timing").
+enum class StepTiming {
+  // The paper's fixed timing (Sec. V-A): every step single_support_samples + 1 samples
+  // (0.7 s single + 0.1 s double support for HRP-2).
+  kFixed,
+  // wpg default: at each landing the gait takes the slowest single support, from
+  // single_support_samples down to min_single_support_samples, whose regular two-step gait
+  // reaches the command inside the step feasibility polygon (wpg/gait_reach.hpp); the
+  // paper's timing for every command it can walk, shorter steps beyond (HRP-2: 0.125 m/s
+  // sideways at 0.8 s steps, 0.2 m/s at 0.5 s).
+  kAdaptive,
+};
+bool parseStepTiming(const std::string& name, StepTiming* out);  // fixed / adaptive
+const char* stepTimingName(StepTiming timing);
+
+// The adaptive step timing builds one NMPC per cadence: at most this many (the slowest).
+constexpr int kMaxCadences = 8;
+
 struct WalkingParameters {
   // --- template model (Sec. II) -------------------------------------------------------------
   double com_height = 0.814;           // h [m], CoM height above the ground, eq. (3)
@@ -126,6 +144,12 @@ struct WalkingParameters {
   int single_support_samples = 7;      // 0.7 s single support per step
   int double_support_samples = 1;      // 0.1 s double support per step
   int previewed_steps = 2;             // nf, free footsteps in the horizon
+  // Step timing (see the enum): adaptive by default, a departure from the paper; `fixed` is
+  // the paper's. With adaptive timing the single support of a step may be any number of
+  // samples from single_support_samples (the paper's, for every command it reaches) down to
+  // min_single_support_samples, and the horizon is previewed_steps such steps.
+  StepTiming step_timing = StepTiming::kAdaptive;
+  int min_single_support_samples = 4;  // 0.4 s: 0.5 s steps (HRP-2's swing peaks 1.9 m/s)
   // Double support before the first lift-off when starting from standing: the CoP may use
   // both feet while the CoM moves over the first support foot (at most one step's samples).
   int start_double_support_samples = 8;
@@ -216,6 +240,18 @@ struct WalkingParameters {
   double max_angular_velocity = 0.2;   // |omega| [rad/s]
 
   int stepSamples() const { return single_support_samples + double_support_samples; }
+  // The parameters of the gait with `single_support` samples of single support (a cadence of
+  // the adaptive step timing): horizon previewed_steps steps, and the start, push-start and
+  // window lengths clamped to the shorter step. Itself for single_support_samples.
+  WalkingParameters withSingleSupport(int single_support) const;
+  // The single supports the gait may take, slowest first: single_support_samples only with
+  // fixed timing, else down to min_single_support_samples (at most kMaxCadences of them).
+  int cadenceCount() const {
+    if (step_timing == StepTiming::kFixed) return 1;
+    const int count = single_support_samples - min_single_support_samples + 1;
+    return count < kMaxCadences ? count : kMaxCadences;
+  }
+  int cadenceSingleSupport(int cadence) const { return single_support_samples - cadence; }
   // Samples of J1's mean: 1 with the paper's instantaneous velocity.
   int trackedVelocityWindow() const {
     return velocity_tracking == VelocityTracking::kInstantaneous ? 1 : velocity_window_samples;
