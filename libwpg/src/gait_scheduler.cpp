@@ -48,6 +48,7 @@ void GaitScheduler::reset(const Eigen::Vector3d& pose) {
   push_start_ = false;
   short_first_swing_ = false;
   lift_off_sample_ = 0;
+  swing_landed_ = false;
   structure_changed_ = true;
 }
 
@@ -134,6 +135,15 @@ bool GaitScheduler::outsideStandingSupport(const Eigen::Vector2d& capture_point)
          std::abs(-s * d.x() + c * d.y()) > rectangle.half_width;
 }
 
+double GaitScheduler::captureOffsetTowardsLiftingFoot(const Eigen::Vector2d& capture_point) const {
+  // At a landing the support side is still the step's: the foot that lifts next. The landed
+  // foot is the other one; its lateral axis (-sin yaw, cos yaw) points to its left.
+  const Eigen::Vector3d& landed = footPose(otherSide(support_side_));
+  const double towards_lifting = support_side_ == FootSide::kLeft ? 1.0 : -1.0;
+  const Eigen::Vector2d d = capture_point - landed.head<2>();
+  return towards_lifting * (-std::sin(landed.z()) * d.x() + std::cos(landed.z()) * d.y());
+}
+
 SupportState GaitScheduler::supportState() const {
   if (!swinging()) return SupportState::kDouble;
   return support_side_ == FootSide::kLeft ? SupportState::kLeft : SupportState::kRight;
@@ -218,6 +228,7 @@ GaitScheduler::SampleEnd GaitScheduler::endSample(const Eigen::Vector3d& planned
           end_time - (S - 1 - lift_off_sample_) * parameters_.sampling_period;
       last_landing_.pose = planned_landing;
       last_landing_.side = side;
+      swing_landed_ = true;
       end.landed = true;
     }
     if (phase_sample_ == S - 1) {
@@ -227,6 +238,7 @@ GaitScheduler::SampleEnd GaitScheduler::endSample(const Eigen::Vector3d& planned
       lift_off_sample_ =
           short_first_swing_ ? S - 1 - std::min(parameters_.push_step_swing_samples, S - 1) : 0;
       short_first_swing_ = false;
+      swing_landed_ = false;
       phase_sample_ = lift_off_sample_;
       end.step_completed = true;
     } else {

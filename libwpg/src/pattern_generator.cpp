@@ -85,6 +85,18 @@ Eigen::Vector3d PatternGenerator::clampCommand(const Eigen::Vector3d& command) c
           std::clamp(command.z(), -w.max_angular_velocity, w.max_angular_velocity)};
 }
 
+// From a landing, the CoP can hold the capture point only up to copHalfWidth() from the landed
+// ankle towards the lifting foot; beyond, it runs away as e^(omega0 t) (eq. 3) until that foot
+// lands, a whole step later. Past push_step_capture_offset the next step is the cadence of
+// push_step_single_support_samples; docs/formulation.md, "Pushes across the gait", has the
+// push table for each choice.
+int PatternGenerator::pushStepCadence(double capture_offset) const {
+  const WalkingParameters& p = parameters();
+  if (!(capture_offset > p.push_step_capture_offset)) return 0;
+  return std::min(p.single_support_samples - p.push_step_single_support_samples,
+                  p.cadenceCount() - 1);
+}
+
 const MpcIterationLog& PatternGenerator::update(double time, const Eigen::Vector3d& raw_command,
                                                 const SwingFootTrajectory* swing) {
   const auto start = std::chrono::steady_clock::now();
@@ -110,6 +122,13 @@ const MpcIterationLog& PatternGenerator::update(double time, const Eigen::Vector
   // robot walking fast needs the shorter steps to slow down (stopping at once from 0.5 s to
   // 0.8 s steps made HRP-2 fall).
   if (!gait_.standing()) wanted = std::max(wanted, active_ - 1);
+  // A push across the gait (towards the foot about to lift) is caught by that foot: at a
+  // landing where the capture point is out that far, the next step is shortened.
+  if (parameters().step_timing == StepTiming::kAdaptive &&
+      parameters().push_step_capture_offset > 0.0 && gait_.atSwingLanding()) {
+    wanted = std::max(
+        wanted, pushStepCadence(gait_.captureOffsetTowardsLiftingFoot(capture_point)));
+  }
   gait_.requestStepSamples(parameters().cadenceSingleSupport(wanted) +
                            parameters().double_support_samples);
   const GaitScheduler::SampleStart phase_start = gait_.beginSample(command, capture_point);

@@ -167,6 +167,12 @@ void WalkingParameters::validate() const {
               min_single_support_samples <= single_support_samples,
           "min_single_support_samples", "an integer in [1, single_support_samples]",
           min_single_support_samples);
+  requireNonNegative(push_step_capture_offset, "push_step_capture_offset");
+  require(push_step_single_support_samples >= min_single_support_samples &&
+              push_step_single_support_samples <= single_support_samples,
+          "push_step_single_support_samples",
+          "an integer in [min_single_support_samples, single_support_samples]",
+          push_step_single_support_samples);
   require(start_double_support_samples >= 1 && start_double_support_samples <= stepSamples(),
           "start_double_support_samples",
           "an integer in [1, single_support_samples + double_support_samples]",
@@ -233,6 +239,7 @@ WalkingParameters WalkingParameters::withSingleSupport(int single_support) const
   w.push_start_double_support_samples =
       std::min(push_start_double_support_samples, w.stepSamples());
   w.push_step_swing_samples = std::min(push_step_swing_samples, single_support);
+  w.push_step_single_support_samples = std::min(push_step_single_support_samples, single_support);
   w.velocity_window_samples = std::min(velocity_window_samples, w.horizon_length);
   return w;
 }

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Core>
+#include <cmath>
 #include <utility>
 
 #include "wpg/gait_scheduler.hpp"
@@ -121,6 +122,48 @@ TEST(GaitScheduler, StartsStepsAndStops) {
   EXPECT_TRUE(fixed_side_by_side);
   EXPECT_TRUE(gait.standing());
   EXPECT_LE(samples_to_stand, 2 * S + 1);
+}
+
+// At a landing, the capture point's offset from the landed ankle is read along the landed
+// foot's own lateral axis (its yaw), positive towards the foot that lifts next, whichever side
+// that is; the component along the foot does not count.
+TEST(GaitScheduler, CaptureOffsetAtALandingPointsTowardsTheLiftingFoot) {
+  const WalkingParameters w;
+  const int S = w.stepSamples();
+  GaitScheduler gait(w);
+  const Vector3d forward(0.2, 0.0, 0.0);
+  for (int k = 0; k + 1 < w.start_double_support_samples; ++k) {  // the start (as above)
+    gait.beginSample(forward, Vector2d::Zero());
+    gait.endSample(Vector3d::Zero(), 0.0);
+  }
+  // The end of a start is a step boundary where no swing foot landed.
+  EXPECT_TRUE(gait.atLanding());
+  EXPECT_FALSE(gait.atSwingLanding());
+  gait.beginSample(forward, Vector2d::Zero());
+  gait.endSample(Vector3d::Zero(), 0.0);
+  const Vector3d landings[2] = {Vector3d(0.15, 0.1, 0.3), Vector3d(0.3, -0.1, -0.2)};
+  for (const Vector3d& landing : landings) {
+    const FootSide swing = wpg::otherSide(gait.supportSide());
+    for (int m = 0; m < S - 1; ++m) {
+      EXPECT_FALSE(gait.atLanding());
+      gait.beginSample(forward, Vector2d::Zero());
+      gait.endSample(landing, 0.0);
+    }
+    ASSERT_TRUE(gait.atSwingLanding());
+    ASSERT_EQ(gait.footPose(swing), landing);
+    EXPECT_EQ(gait.supportSide(), wpg::otherSide(swing));  // the foot that lifts next
+    const Vector2d along(std::cos(landing.z()), std::sin(landing.z()));
+    const Vector2d left(-std::sin(landing.z()), std::cos(landing.z()));
+    // The lifting foot is on the landed foot's right when the left foot landed.
+    const Vector2d towards_lifting = swing == FootSide::kLeft ? Vector2d(-left) : left;
+    const Vector2d ankle = landing.head<2>();
+    EXPECT_NEAR(gait.captureOffsetTowardsLiftingFoot(ankle + 0.05 * towards_lifting + 0.1 * along),
+                0.05, 1e-12);
+    EXPECT_NEAR(gait.captureOffsetTowardsLiftingFoot(ankle - 0.02 * towards_lifting - 0.3 * along),
+                -0.02, 1e-12);
+    gait.beginSample(forward, Vector2d::Zero());
+    gait.endSample(landing, 0.0);  // the step completes: the landed foot becomes the support
+  }
 }
 
 // zero_command: step_in_place: a zero command starts a standing robot (normal starting double

@@ -7,17 +7,12 @@
 #include <vector>
 
 #include "wpg/online_walking_generator.hpp"
+#include "../common/goal_walking.hpp"
 #include "wpg/planning/goal_walk.hpp"
 
 namespace {
 
-wpg::WalkingParameters goalWalking() {
-  wpg::WalkingParameters parameters;
-  parameters.velocity_window_samples = 8;
-  parameters.heading_reference = wpg::HeadingReference::kCommand;
-  parameters.max_step_yaw_change = 0.17;
-  return parameters;
-}
+using wpg_test::goalWalking;
 
 wpg::GoalRequest goalAt(double x, double y) {
   wpg::GoalRequest goal;

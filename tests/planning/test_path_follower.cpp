@@ -7,6 +7,7 @@
 #include <random>
 #include <vector>
 
+#include "../common/goal_walking.hpp"
 #include "wpg/planning/goal_walk.hpp"
 #include "wpg/planning/path_follower.hpp"
 
@@ -111,13 +112,7 @@ TEST(PathFollower, DistanceToTheRouteAndProgressAlongIt) {
 
 // The chain: the follower drives the online generator; the robot stops standing within the
 // tolerance of the goal (and of its yaw), and the same request gives the same walk.
-wpg::WalkingParameters goalWalking() {
-  wpg::WalkingParameters parameters;
-  parameters.velocity_window_samples = 8;
-  parameters.heading_reference = wpg::HeadingReference::kCommand;
-  parameters.max_step_yaw_change = 0.17;
-  return parameters;
-}
+using wpg_test::goalWalking;
 
 TEST(GoalWalk, StopsStandingWithinTheToleranceOfPositionAndYaw) {
   const wpg::WalkingParameters parameters = goalWalking();

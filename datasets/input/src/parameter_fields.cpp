@@ -107,6 +107,8 @@ const std::vector<WalkingField>& walkingFields() {
       integerField("previewed_steps", &P::previewed_steps),
       choiceField("step_timing", &kStepTiming),
       integerField("min_single_support_samples", &P::min_single_support_samples),
+      numberField("push_step_capture_offset", &P::push_step_capture_offset),
+      integerField("push_step_single_support_samples", &P::push_step_single_support_samples),
       integerField("start_double_support_samples", &P::start_double_support_samples),
       choiceField("zero_command", &kZeroCommandGait),
       choiceField("standing_push_response", &kStandingPushResponse),

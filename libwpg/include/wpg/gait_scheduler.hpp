@@ -73,6 +73,12 @@ class GaitScheduler {
   // hull of both margin-reduced soles, as fillPhase gives it to the NMPC).
   bool outsideStandingSupport(const Eigen::Vector2d& capture_point) const;
 
+  // At a landing (atSwingLanding()): the capture point's distance from the landed foot's ankle
+  // along that foot's lateral axis, positive towards the foot that lifts next [m]. The CoP can
+  // hold the capture point only up to copHalfWidth() on that side; beyond, it runs away from
+  // the landed sole as e^(omega0 t) (eq. 3) until the lifting foot lands under it.
+  double captureOffsetTowardsLiftingFoot(const Eigen::Vector2d& capture_point) const;
+
   // The phase structure of the current sample (and its CoP rows' steps, from the model).
   void fillPhase(const NmpcModel& model, PhaseStructure& phase) const;
 
@@ -93,6 +99,9 @@ class GaitScheduler {
   bool atLanding() const {
     return !standing_ && start_remaining_ == 0 && phase_sample_ == samples_per_step_ - 1;
   }
+
+  // atLanding() after the swing foot landed (not the end of a start, where no foot did).
+  bool atSwingLanding() const { return atLanding() && swing_landed_; }
 
   bool standing() const { return standing_; }
   bool starting() const { return start_remaining_ > 0; }
@@ -137,6 +146,7 @@ class GaitScheduler {
   bool push_start_ = false;     // the current start was triggered by a push, not a command
   bool short_first_swing_ = false;  // the next swing is a push start's short one
   int lift_off_sample_ = 0;     // phase time at which the current step's swing lifted off
+  bool swing_landed_ = false;   // the swing foot of the current step has landed
   bool structure_changed_ = false;
 };
 

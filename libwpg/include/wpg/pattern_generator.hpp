@@ -109,6 +109,10 @@ class PatternGenerator {
   Eigen::Vector3d clampCommand(const Eigen::Vector3d& command) const;
 
  private:
+  // At a landing, the cadence of the next step for the capture point's offset towards the
+  // foot about to lift: 0 (no change) unless a push has carried it past
+  // push_step_capture_offset.
+  int pushStepCadence(double capture_offset) const;
   // --- the NMPC's plan and its warm start, owned by the solver: the only code that touches
   //     them ---------------------------------------------------------------------------------
   void seedStep(int step, const Eigen::Vector3d& pose);
