@@ -152,9 +152,9 @@ struct WalkingParameters {
   int min_single_support_samples = 4;  // 0.4 s: 0.5 s steps (HRP-2's swing peaks 1.9 m/s)
   // With adaptive timing, a push across the gait: at a landing where the capture point lies
   // further than push_step_capture_offset from the landed foot's ankle towards the foot about
-  // to lift (the side it must step to; regular walking lands with 40-68 mm), the next step's
-  // single support is push_step_single_support_samples, so that this foot lands before the
-  // capture point runs away (e^(omega0 t), eq. 3). 0 = off.
+  // to lift (the side it must step to; regular walking lands with 40-68 mm, experiment B
+  // once with 78 mm), the next step's single support is push_step_single_support_samples, so
+  // that this foot lands before the capture point runs away (e^(omega0 t), eq. 3). 0 = off.
   double push_step_capture_offset = 0.075;  // [m]
   int push_step_single_support_samples = 5;  // 0.5 s, in [min_single_support_samples, single]
   // Double support before the first lift-off when starting from standing: the CoP may use
