@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <utility>
 
 #include "wpg/obstacle_tangent.hpp"
@@ -66,6 +67,7 @@ void PatternGenerator::reset(const Eigen::Vector3d& pose) {
   problem_ = &cadences_[0]->problem;
   for (auto& cadence : cadences_) cadence->solver.clearActiveSet();
   gait_.reset(pose);
+  previous_capture_offset_ = std::numeric_limits<double>::quiet_NaN();
   references_.setCadence(model_->parameters());
   references_.reset(pose.z());
   obstacles_.forgetSides();
@@ -87,12 +89,14 @@ Eigen::Vector3d PatternGenerator::clampCommand(const Eigen::Vector3d& command) c
 
 // From a landing, the CoP can hold the capture point only up to copHalfWidth() from the landed
 // ankle towards the lifting foot; beyond, it runs away as e^(omega0 t) (eq. 3) until that foot
-// lands, a whole step later. Past push_step_capture_offset the next step is the cadence of
-// push_step_single_support_samples; docs/formulation.md, "Pushes across the gait", has the
-// push table for each choice.
-int PatternGenerator::pushStepCadence(double capture_offset) const {
+// lands, a whole step later. Past push_step_capture_offset, and suddenly (more than
+// push_step_capture_jump above the previous landing's offset, or the first landing of a walk),
+// the next step is the cadence of push_step_single_support_samples; docs/formulation.md,
+// "Pushes across the gait", has the push table for each choice.
+int PatternGenerator::pushStepCadence(double capture_offset, double previous_offset) const {
   const WalkingParameters& p = parameters();
   if (!(capture_offset > p.push_step_capture_offset)) return 0;
+  if (capture_offset - previous_offset <= p.push_step_capture_jump) return 0;  // NaN: a jump
   return std::min(p.single_support_samples - p.push_step_single_support_samples,
                   p.cadenceCount() - 1);
 }
@@ -124,10 +128,12 @@ const MpcIterationLog& PatternGenerator::update(double time, const Eigen::Vector
   if (!gait_.standing()) wanted = std::max(wanted, active_ - 1);
   // A push across the gait (towards the foot about to lift) is caught by that foot: at a
   // landing where the capture point is out that far, the next step is shortened.
+  if (gait_.standing()) previous_capture_offset_ = std::numeric_limits<double>::quiet_NaN();
   if (parameters().step_timing == StepTiming::kAdaptive &&
       parameters().push_step_capture_offset > 0.0 && gait_.atSwingLanding()) {
-    wanted = std::max(
-        wanted, pushStepCadence(gait_.captureOffsetTowardsLiftingFoot(capture_point)));
+    const double offset = gait_.captureOffsetTowardsLiftingFoot(capture_point);
+    wanted = std::max(wanted, pushStepCadence(offset, previous_capture_offset_));
+    previous_capture_offset_ = offset;
   }
   gait_.requestStepSamples(parameters().cadenceSingleSupport(wanted) +
                            parameters().double_support_samples);

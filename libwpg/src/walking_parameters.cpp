@@ -168,6 +168,7 @@ void WalkingParameters::validate() const {
           "min_single_support_samples", "an integer in [1, single_support_samples]",
           min_single_support_samples);
   requireNonNegative(push_step_capture_offset, "push_step_capture_offset");
+  requireNonNegative(push_step_capture_jump, "push_step_capture_jump");
   require(push_step_single_support_samples >= min_single_support_samples &&
               push_step_single_support_samples <= single_support_samples,
           "push_step_single_support_samples",

@@ -108,6 +108,7 @@ const std::vector<WalkingField>& walkingFields() {
       choiceField("step_timing", &kStepTiming),
       integerField("min_single_support_samples", &P::min_single_support_samples),
       numberField("push_step_capture_offset", &P::push_step_capture_offset),
+      numberField("push_step_capture_jump", &P::push_step_capture_jump),
       integerField("push_step_single_support_samples", &P::push_step_single_support_samples),
       integerField("start_double_support_samples", &P::start_double_support_samples),
       choiceField("zero_command", &kZeroCommandGait),

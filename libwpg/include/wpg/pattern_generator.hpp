@@ -110,9 +110,9 @@ class PatternGenerator {
 
  private:
   // At a landing, the cadence of the next step for the capture point's offset towards the
-  // foot about to lift: 0 (no change) unless a push has carried it past
-  // push_step_capture_offset.
-  int pushStepCadence(double capture_offset) const;
+  // foot about to lift and that of the previous landing (NaN: none): 0 (no change) unless a
+  // push has carried it past push_step_capture_offset, by a jump.
+  int pushStepCadence(double capture_offset, double previous_offset) const;
   // --- the NMPC's plan and its warm start, owned by the solver: the only code that touches
   //     them ---------------------------------------------------------------------------------
   void seedStep(int step, const Eigen::Vector3d& pose);
@@ -147,6 +147,9 @@ class PatternGenerator {
   ReferenceBuilder references_;
   CadenceChoice cadence_choice_;
   double omega0_ = 0.0;  // sqrt(g / h) of the LIPM (eq. 3), for the capture point
+  // The capture point's offset towards the lifting foot at the previous swing landing (NaN
+  // before the first of a walk), for the push step's jump.
+  double previous_capture_offset_ = 0.0;
   ObstacleSelector obstacles_;
   SamplePlan plan_;
   MpcIterationLog log_;

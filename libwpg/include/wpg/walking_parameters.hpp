@@ -152,12 +152,13 @@ struct WalkingParameters {
   int min_single_support_samples = 4;  // 0.4 s: 0.5 s steps (HRP-2's swing peaks 1.9 m/s)
   // With adaptive timing, a push across the gait: at a landing where the capture point lies
   // further than push_step_capture_offset from the landed foot's ankle towards the foot about
-  // to lift (the side it must step to; regular walking lands with 40-68 mm, experiment B
-  // once with 78 mm), the next step's single support is push_step_single_support_samples, so
-  // that this foot lands before the capture point runs away (e^(omega0 t), eq. 3). 0 = off,
-  // the default: with the closed filter loop a walk to a goal can drift to such offsets
-  // without a push (docs/formulation.md, "Pushes across the gait"); 0.075 m is measured.
-  double push_step_capture_offset = 0.0;  // [m]
+  // to lift (the side it must step to; regular walking lands with 40-68 mm) and has jumped by
+  // more than push_step_capture_jump since the previous landing (a push is sudden; a closed
+  // filter loop drifts there by at most 7.3 mm a landing), the next step's single support is
+  // push_step_single_support_samples, so that this foot lands before the capture point runs
+  // away (e^(omega0 t), eq. 3). push_step_capture_offset 0 = off.
+  double push_step_capture_offset = 0.075;  // [m]
+  double push_step_capture_jump = 0.02;     // [m]
   int push_step_single_support_samples = 5;  // 0.5 s, in [min_single_support_samples, single]
   // Double support before the first lift-off when starting from standing: the CoP may use
   // both feet while the CoM moves over the first support foot (at most one step's samples).
