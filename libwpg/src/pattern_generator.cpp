@@ -233,13 +233,20 @@ void PatternGenerator::boundSwingReach(double time, const SwingFootTrajectory* s
   if (SwingReachRows::count(*model_) == 0 || !gait_.swinging()) return;
   const int m = gait_.phaseSample();
   SwingFootTrajectory resting;
+  // The landing the foot heads for now stays inside the reach (the rows never make the QP
+  // infeasible on their own). Before this swing's first plan the foot heads nowhere: the
+  // warm start's landing was planned for the step before, under no reach of this swing (and,
+  // after a cadence switch, for a longer one), so the reach is the resting foot's own, which
+  // holds its lift-off pose.
+  Eigen::Vector2d heading_for = plannedStep(0).head<2>();
   if (!swing) {
-    resting.start(gait_.footPose(otherSide(gait_.supportSide())),
-                  time - (m - gait_.liftOffSample()) * w.sampling_period,
+    const Eigen::Vector3d& lift_off = gait_.footPose(otherSide(gait_.supportSide()));
+    resting.start(lift_off, time - (m - gait_.liftOffSample()) * w.sampling_period,
                   time + (w.stepSamples() - 1 - m) * w.sampling_period, w.step_height);
     swing = &resting;
+    heading_for = lift_off.head<2>();
   }
-  const SwingReach reach = swingReach(*swing, time, plannedStep(0).head<2>(), w.max_swing_speed,
+  const SwingReach reach = swingReach(*swing, time, heading_for, w.max_swing_speed,
                                       w.max_swing_acceleration, w.control_period);
   problem_->swing_reach_bounded = true;
   problem_->swing_reach_lower = reach.lower;

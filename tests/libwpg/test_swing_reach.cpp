@@ -192,22 +192,19 @@ TEST(SwingFootPeaks, MatchTheAnalyticDerivativesOfAKnownMotion) {
 // A push late in a swing of the walk of datasets/scenarios/push.yaml (0.2 m/s), backwards at
 // lift-off + 0.5 s (phase 0.625), 150 N: recovered without the limits by a swing foot beyond
 // 2 m/s; with them the foot stays within 2 m/s and 50 m/s^2 (central differences at 5 ms).
+// With the limits the robot falls at 5.3 s; before that, the push step's 0.5 s swing from its
+// 4.9 s landing, whose warm-start landing was planned for the step before, must keep the limits
+// from its first plan on (it reached 2.2 m/s when the reach always held that landing).
 TEST(SwingReach, KeepsALatePushsSwingFootPhysical) {
   wpg::WalkRequest request;
   request.duration = 6.0;
   request.reference = {{0.0, Vector3d::Zero()}, {1.0, Vector3d(0.2, 0.0, 0.0)}};
   request.pushes.push_back({3.9, Eigen::Vector2d(-150.0, 0.0), 0.1});
   request.generator.sqp_iterations = 1;
-  // The paper's steps: this push is not recovered (the robot falls at 5.3 s either way) and
-  // the push step (push_step_capture_offset) would start a shorter swing at the 4.9 s landing
-  // of the fall, whose foot reaches 2.2 m/s in its last 0.05 s: the reach of a regular swing
-  // is what this test is about.
-  wpg::WalkingParameters unlimited;
-  unlimited.push_step_capture_offset = 0.0;
-  wpg::WalkingParameters limited = unlimited;
+  wpg::WalkingParameters limited;
   limited.max_swing_speed = kSpeed;
   limited.max_swing_acceleration = kAcceleration;
-  const wpg::WalkResult off = wpg::generateWalk(unlimited, request);
+  const wpg::WalkResult off = wpg::generateWalk(wpg::WalkingParameters(), request);
   const wpg::WalkResult on = wpg::generateWalk(limited, request);
   wpg::WalkCheckReport peaks_off, peaks_on;
   wpg::swingFootPeaks(off.trajectory, peaks_off);

@@ -17,8 +17,9 @@
 // the intersection over
 // the ticks, i.e. lower_k <= d_k . F <= upper_k. The landing of the previous sample (the plan
 // the foot follows now) continues the same polynomial, which met the limits when it was
-// planned: it is always inside (added when rounding or a first plan leaves it out), so the
-// rows never make the QP infeasible on their own.
+// planned: it is always inside (added when rounding leaves it out), so the rows never make the
+// QP infeasible on their own. Before a swing's first plan the foot heads for no landing yet:
+// the caller gives its lift-off pose, which a resting foot always reaches.
 #include <Eigen/Core>
 
 #include "wpg/swing_foot_trajectory.hpp"
