@@ -127,7 +127,8 @@ const MpcIterationLog& PatternGenerator::update(double time, const Eigen::Vector
   // 0.8 s steps made HRP-2 fall).
   if (!gait_.standing()) wanted = std::max(wanted, active_ - 1);
   // A push across the gait (towards the foot about to lift) is caught by that foot: at a
-  // landing where the capture point is out that far, the next step is shortened.
+  // landing where the capture point is out that far, and got there by a jump, the next step
+  // is shortened (pushStepCadence).
   if (gait_.standing()) previous_capture_offset_ = std::numeric_limits<double>::quiet_NaN();
   if (parameters().step_timing == StepTiming::kAdaptive &&
       parameters().push_step_capture_offset > 0.0 && gait_.atSwingLanding()) {

@@ -14,6 +14,7 @@
 // solver and problem, all built here; at a landing where the cadence changes the plan is handed
 // over (the same steps, the jerks of the common samples) and the new solver starts without a
 // warm-start active set. Nothing is allocated when the cadence changes.
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -149,7 +150,7 @@ class PatternGenerator {
   double omega0_ = 0.0;  // sqrt(g / h) of the LIPM (eq. 3), for the capture point
   // The capture point's offset towards the lifting foot at the previous swing landing (NaN
   // before the first of a walk), for the push step's jump.
-  double previous_capture_offset_ = 0.0;
+  double previous_capture_offset_ = std::numeric_limits<double>::quiet_NaN();
   ObstacleSelector obstacles_;
   SamplePlan plan_;
   MpcIterationLog log_;
