@@ -228,11 +228,16 @@ inline KktError kktError(const Qp& qp, const VectorXd& x, const VectorXd& mu, co
   return err;
 }
 
-inline QpStatus solveQp(DenseQpSolver& solver, const Qp& qp, VectorXd& x) {
-  HessianFactor factor;
+// Factors qp.H into `factor` (the caller keeps it for the solver's objective()) and solves.
+inline QpStatus solveQp(DenseQpSolver& solver, const Qp& qp, VectorXd& x, HessianFactor& factor) {
   EXPECT_TRUE(factor.compute(qp.H));
   x.setZero(qp.g.size());
   return solver.solve(factor, qp.g, qp.E, qp.e, qp.C, qp.d, x);
+}
+
+inline QpStatus solveQp(DenseQpSolver& solver, const Qp& qp, VectorXd& x) {
+  HessianFactor factor;
+  return solveQp(solver, qp, x, factor);
 }
 
 }  // namespace qp_test

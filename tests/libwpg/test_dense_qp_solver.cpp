@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <limits>
 #include <random>
+#include <stdexcept>
 #include <vector>
 
 #include "qp_test_problems.hpp"
@@ -108,7 +109,10 @@ TEST(DenseQpSolver, UnconstrainedAndSimple) {
   EXPECT_NEAR(x(0), 0.5, 1e-14);
   EXPECT_NEAR(x(1), 0.5, 1e-14);
   EXPECT_NEAR(solver.inequalityMultipliers()(0), 0.5, 1e-14);
-  EXPECT_NEAR(solver.objective(), 0.5 * 0.5 - 1.0, 1e-14);
+  EXPECT_NEAR(solver.objective(f), 0.5 * 0.5 - 1.0, 1e-14);
+  HessianFactor other;  // the objective is evaluated with the last solve's factor only
+  ASSERT_TRUE(other.compute(Eigen::Matrix3d::Identity()));
+  EXPECT_THROW(solver.objective(other), std::invalid_argument);
   ASSERT_EQ(solver.activeInequalityCount(), 1);
   EXPECT_EQ(solver.activeInequalities()[0], 0);
   // No constraints at all.
@@ -135,7 +139,8 @@ TEST(DenseQpSolver, RandomFeasibleProblemsSatisfyKkt) {
     degenerate_count += degenerate;
     const Qp qp = trial % 5 == 4 ? vertexQp(rng, n, mi) : randomFeasibleQp(rng, n, me, mi, degenerate);
     VectorXd x;
-    const QpStatus status = solveQp(solver, qp, x);
+    HessianFactor factor;
+    const QpStatus status = solveQp(solver, qp, x, factor);
     ASSERT_EQ(status, QpStatus::kOptimal) << "trial " << trial << " n=" << n << " me=" << qp.E.rows()
                                           << " mi=" << qp.C.rows();
     ASSERT_EQ(solver.inequalityMultipliers().size(), qp.C.rows());
@@ -147,7 +152,7 @@ TEST(DenseQpSolver, RandomFeasibleProblemsSatisfyKkt) {
     EXPECT_LE(err.complementarity, 1e-9) << "trial " << trial;
     // objective and active set consistent with x and lambda
     const double f = 0.5 * x.dot(qp.H * x) + qp.g.dot(x);
-    EXPECT_NEAR(solver.objective(), f, 1e-9 * (1.0 + std::abs(f)));
+    EXPECT_NEAR(solver.objective(factor), f, 1e-9 * (1.0 + std::abs(f)));
     for (int k = 0; k < solver.activeInequalityCount(); ++k) {
       const int i = solver.activeInequalities()[k];
       EXPECT_LE(std::abs(qp.C.row(i).dot(x) - qp.d(i)), 1e-9);
@@ -258,7 +263,8 @@ TEST(DenseQpSolver, MatchesBruteForceOnTinyProblems) {
     }
     const BruteForce reference = bruteForce(qp);
     VectorXd x;
-    const QpStatus status = solveQp(solver, qp, x);
+    HessianFactor factor;
+    const QpStatus status = solveQp(solver, qp, x, factor);
     if (!reference.feasible) {
       ++infeasible;
       EXPECT_EQ(status, QpStatus::kInfeasible) << "trial " << trial;
@@ -266,7 +272,7 @@ TEST(DenseQpSolver, MatchesBruteForceOnTinyProblems) {
     }
     ++feasible;
     ASSERT_EQ(status, QpStatus::kOptimal) << "trial " << trial;
-    EXPECT_NEAR(solver.objective(), reference.value, 1e-9 * (1.0 + std::abs(reference.value)))
+    EXPECT_NEAR(solver.objective(factor), reference.value, 1e-9 * (1.0 + std::abs(reference.value)))
         << "trial " << trial;
     EXPECT_LE((x - reference.x).cwiseAbs().maxCoeff(), 1e-7 * (1.0 + reference.x.cwiseAbs().maxCoeff()))
         << "trial " << trial;

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "qp_internal.hpp"
+
 namespace wpg::qp {
 namespace {
 
@@ -14,18 +16,56 @@ Eigen::VectorXi toVector(const std::vector<int>& values) {
 }
 
 // out = C x - d on the Rows rows from `top`, over the given spans of columns: the sums stay in
-// registers (Rows / 2 SSE registers) while the columns go by, as in Eigen's kernel.
+// registers while the columns go by, as in Eigen's kernel. Each row's sum is its products added
+// in column order from zero, whatever the vector width of the clone (WPG_QP_KERNEL_CLONES).
 template <int Rows>
-void blockProduct(const double* c, Eigen::Index ld, const double* x, const double* d, double* out,
-                  Eigen::Index top, const int* spans, int span_count) {
-  using Block = Eigen::Array<double, Rows, 1>;
-  Block sum = Block::Zero();
+inline void blockProduct(const double* c, Eigen::Index ld, const double* x, const double* d,
+                         double* out, Eigen::Index top, const int* spans, int span_count) {
+  static_assert(Rows % kLaneCount == 0, "whole lanes");
+  constexpr int kLanes = Rows / kLaneCount;
+  Lanes sum[kLanes] = {};
   for (int s = 0; s < span_count; ++s) {
     const int end = spans[2 * s + 1];
     const double* column = c + spans[2 * s] * ld + top;
-    for (int k = spans[2 * s]; k < end; ++k, column += ld) sum += Eigen::Map<const Block>(column) * x[k];
+    for (int k = spans[2 * s]; k < end; ++k, column += ld) {
+      const double xk = x[k];
+      for (int l = 0; l < kLanes; ++l) {
+        Lanes entries;
+        loadLanes(entries, column + l * kLaneCount);
+        sum[l] += entries * xk;
+      }
+    }
   }
-  Eigen::Map<Block>(out + top) = sum - Eigen::Map<const Block>(d + top);
+  for (int l = 0; l < kLanes; ++l) {
+    Lanes bound;
+    loadLanes(bound, d + top + l * kLaneCount);
+    const Lanes difference = sum[l] - bound;
+    storeLanes(out + top + l * kLaneCount, difference);
+  }
+}
+
+// The same for one row (the rows left after the blocks).
+void rowProduct(const double* c, Eigen::Index ld, const double* x, const double* d, double* out,
+                Eigen::Index top, const int* spans, int span_count) {
+  double sum = 0.0;
+  for (int s = 0; s < span_count; ++s) {
+    const int end = spans[2 * s + 1];
+    const double* entry = c + spans[2 * s] * ld + top;
+    for (int k = spans[2 * s]; k < end; ++k, entry += ld) sum += *entry * x[k];
+  }
+  out[top] = sum - d[top];
+}
+
+WPG_QP_KERNEL_CLONES
+void blockProduct16(const double* c, Eigen::Index ld, const double* x, const double* d,
+                    double* out, Eigen::Index top, const int* spans, int span_count) {
+  blockProduct<16>(c, ld, x, d, out, top, spans, span_count);
+}
+
+WPG_QP_KERNEL_CLONES
+void blockProduct8(const double* c, Eigen::Index ld, const double* x, const double* d,
+                   double* out, Eigen::Index top, const int* spans, int span_count) {
+  blockProduct<8>(c, ld, x, d, out, top, spans, span_count);
 }
 
 }  // namespace
@@ -85,11 +125,12 @@ void ColumnProfile::multiplySubtract(const Eigen::Ref<const Eigen::MatrixXd>& C,
     const int* spans = spans_.data() + 2 * block_span_(b);
     const int span_count = block_span_(b + 1) - block_span_(b);
     if (size == kBlockRows) {
-      blockProduct<kBlockRows>(c, ld, x.data(), d.data(), out.data(), top, spans, span_count);
+      static_assert(kBlockRows == 16, "blockProduct16 is the kernel of a full block");
+      blockProduct16(c, ld, x.data(), d.data(), out.data(), top, spans, span_count);
     } else if (size == 8) {
-      blockProduct<8>(c, ld, x.data(), d.data(), out.data(), top, spans, span_count);
+      blockProduct8(c, ld, x.data(), d.data(), out.data(), top, spans, span_count);
     } else {
-      blockProduct<1>(c, ld, x.data(), d.data(), out.data(), top, spans, span_count);
+      rowProduct(c, ld, x.data(), d.data(), out.data(), top, spans, span_count);
     }
   }
 }

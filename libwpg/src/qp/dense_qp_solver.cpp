@@ -77,6 +77,9 @@ DenseQpSolver::DenseQpSolver(int max_variables, int max_equalities, int max_ineq
   u_.setZero(max_n_);
   normal_.setZero(max_n_);
   work_.setZero(max_n_);
+  objective_gradient_.setZero(max_n_);
+  objective_iterate_.setZero(max_n_);
+  objective_work_.setZero(max_n_);
   slack_.setZero(max_mi_);
   row_scale_.setZero(max_mi_);
   cosines_.setZero(max_n_);
@@ -95,8 +98,7 @@ void DenseQpSolver::setActiveSetGuess(const int* inequality_indices, int count) 
 
 void DenseQpSolver::clearActiveSetGuess() { guess_count_ = 0; }
 
-void DenseQpSolver::storeResults(const HessianFactor& factor,
-                                 const Eigen::Ref<const Eigen::VectorXd>& g,
+void DenseQpSolver::storeResults(const Eigen::Ref<const Eigen::VectorXd>& g,
                                  const Eigen::Ref<const Eigen::VectorXd>& x, int me, int mi,
                                  int pending, double pending_multiplier) {
   lambda_.head(mi).setZero();
@@ -115,12 +117,28 @@ void DenseQpSolver::storeResults(const HessianFactor& factor,
   // reporting it keeps H x + g + E'mu + C'lambda = 0 true for the returned iterate.
   if (pending >= 0) lambda_(pending) = std::max(pending_multiplier, 0.0);
   std::sort(active_inequalities_.data(), active_inequalities_.data() + active_inequality_count_);
-  // f = 1/2 |L'x|^2 + g'x with L' = J0^{-1}.
   const int n = static_cast<int>(x.size());
-  work_.head(n) = x;
-  factor.inverse_factor_transposed.topLeftCorner(n, n).triangularView<Eigen::Upper>().solveInPlace(
-      work_.head(n));
-  objective_ = 0.5 * work_.head(n).squaredNorm() + g.dot(x);
+  has_objective_ = true;
+  objective_gradient_.head(n) = g;
+  objective_iterate_.head(n) = x;
+  objective_size_ = n;
+}
+
+double DenseQpSolver::objective(const HessianFactor& factor) const {
+  if (!has_objective_) return 0.0;
+  const int n = objective_size_;
+  if (factor.size != n) {
+    throw std::invalid_argument("DenseQpSolver::objective: expected the factor of the last solve (" +
+                                std::to_string(n) + " variables), got one of " +
+                                std::to_string(factor.size));
+  }
+  // f = 1/2 |L'x|^2 + g'x with L' = J0^{-1}.
+  const auto x = objective_iterate_.head(n);
+  objective_work_.head(n) = x;
+  factor.inverse_factor_transposed.topLeftCorner(n, n)
+      .triangularView<Eigen::Upper>()
+      .solveInPlace(objective_work_.head(n));
+  return 0.5 * objective_work_.head(n).squaredNorm() + objective_gradient_.head(n).dot(x);
 }
 
 QpStatus DenseQpSolver::solve(const HessianFactor& factor,
@@ -132,7 +150,7 @@ QpStatus DenseQpSolver::solve(const HessianFactor& factor,
                               Eigen::Ref<Eigen::VectorXd> x) {
   iterations_ = 0;
   warm_start_updates_ = 0;
-  objective_ = 0.0;
+  has_objective_ = false;
   warm_start_kept_ = 0;
   active_inequality_count_ = 0;
   active_count_ = 0;
@@ -161,7 +179,7 @@ QpStatus DenseQpSolver::solve(const HessianFactor& factor,
 
   startFromUnconstrainedMinimum(factor, g);
   if (!addEqualities(factor, g, E, e, x)) {
-    storeResults(factor, g, x, me, mi, -1, 0.0);
+    storeResults(g, x, me, mi, -1, 0.0);
     return QpStatus::kInfeasible;  // inconsistent equalities
   }
   active_equality_count_ = active_count_;
@@ -187,10 +205,10 @@ QpStatus DenseQpSolver::solve(const HessianFactor& factor,
       return QpStatus::kInvalidInput;
     }
     if (p < 0) break;
-    const QpStatus status = addViolatedRow(p, factor, g, C, x, me);
+    const QpStatus status = addViolatedRow(p, g, C, x, me);
     if (status != QpStatus::kOptimal) return status;
   }
-  storeResults(factor, g, x, me, mi, -1, 0.0);
+  storeResults(g, x, me, mi, -1, 0.0);
   return QpStatus::kOptimal;
 }
 
@@ -450,8 +468,7 @@ void DenseQpSolver::releaseSetAside(int mi) {
   any_set_aside_ = false;
 }
 
-QpStatus DenseQpSolver::addViolatedRow(int p, const HessianFactor& factor,
-                                       const Eigen::Ref<const Eigen::VectorXd>& g,
+QpStatus DenseQpSolver::addViolatedRow(int p, const Eigen::Ref<const Eigen::VectorXd>& g,
                                        const Eigen::Ref<const Eigen::MatrixXd>& C,
                                        Eigen::Ref<Eigen::VectorXd> x, int me) {
   const int n = static_cast<int>(x.size()), mi = static_cast<int>(C.rows());
@@ -460,7 +477,7 @@ QpStatus DenseQpSolver::addViolatedRow(int p, const HessianFactor& factor,
   double u_plus = 0.0;            // multiplier of the constraint being added
   for (;;) {
     if (iterations_ >= settings_.max_iterations) {
-      storeResults(factor, g, x, me, mi, p, u_plus);
+      storeResults(g, x, me, mi, p, u_plus);
       return QpStatus::kIterationLimit;
     }
     // (a) directions: z = h J_q (after reduceNormal), r = R^{-1} d1
@@ -485,7 +502,7 @@ QpStatus DenseQpSolver::addViolatedRow(int p, const HessianFactor& factor,
         const double explainable =
             settings_.feasibility_tolerance * (1.0 + r_.head(q).cwiseAbs().sum());
         if (-violation > explainable) {
-          storeResults(factor, g, x, me, mi, p, u_plus);
+          storeResults(g, x, me, mi, p, u_plus);
           return QpStatus::kInfeasible;
         }
         // H x + g = N u + u+ n+ = N (u + u+ r): fold the multiplier of p into the working set

@@ -22,40 +22,64 @@ namespace {
 // The Givens rotations of one update form a chain over neighbouring column pairs; applying
 // them row block by row block keeps the running column in registers, so each entry of J is
 // loaded and stored once per update instead of twice (the update is the cost that dominates
-// the method). Rotation G = (c, s) maps columns (a, b) to (c a + s b, -s a + c b).
-using RowBlock = Eigen::Array<double, kRowBlock, 1>;
-using RowBlockMap = Eigen::Map<RowBlock>;
-using ConstRowBlockMap = Eigen::Map<const RowBlock>;
+// the method). Rotation G = (c, s) maps columns (a, b) to (c a + s b, -s a + c b). Per row,
+// c * carry - s * a is a product, a product and a difference, as Eigen's array expression
+// evaluated it; the lanes only change how many rows go at once (WPG_QP_KERNEL_CLONES).
+
+constexpr int kLanesPerBlock = kRowBlock / kLaneCount;
+static_assert(kRowBlock % kLaneCount == 0, "a row block is a whole number of lanes");
 
 // Rotations i = last, last-1, ..., first+1 on the column pairs (i-1, i), in that order, on
 // `rows` rows: a whole number of row blocks (J's padded rows).
+WPG_QP_KERNEL_CLONES
 void applyRotationChainDescending(double* matrix, Eigen::Index ld, int rows, int first, int last,
                                   const double* c, const double* s) {
   eigen_assert(rows % kRowBlock == 0);
   for (int r0 = 0; r0 < rows; r0 += kRowBlock) {
-    RowBlock carry = ConstRowBlockMap(matrix + last * ld + r0);
+    Lanes carry[kLanesPerBlock];
+    for (int l = 0; l < kLanesPerBlock; ++l)
+      loadLanes(carry[l], matrix + last * ld + r0 + l * kLaneCount);
     for (int i = last; i > first; --i) {
-      const RowBlock a = ConstRowBlockMap(matrix + (i - 1) * ld + r0);
-      RowBlockMap(matrix + i * ld + r0) = c[i] * carry - s[i] * a;
-      carry = c[i] * a + s[i] * carry;
+      const double* a = matrix + (i - 1) * ld + r0;
+      double* out = matrix + i * ld + r0;
+      const double ci = c[i], si = s[i];
+      for (int l = 0; l < kLanesPerBlock; ++l) {
+        Lanes al;
+        loadLanes(al, a + l * kLaneCount);
+        const Lanes rotated = ci * carry[l] - si * al;
+        storeLanes(out + l * kLaneCount, rotated);
+        carry[l] = ci * al + si * carry[l];
+      }
     }
-    RowBlockMap(matrix + first * ld + r0) = carry;
+    for (int l = 0; l < kLanesPerBlock; ++l)
+      storeLanes(matrix + first * ld + r0 + l * kLaneCount, carry[l]);
   }
 }
 
 // Rotations j = first, first+1, ..., last-1 on the column pairs (j, j+1), in that order, on
 // `rows` rows: a whole number of row blocks.
+WPG_QP_KERNEL_CLONES
 void applyRotationChainAscending(double* matrix, Eigen::Index ld, int rows, int first, int last,
                                  const double* c, const double* s) {
   eigen_assert(rows % kRowBlock == 0);
   for (int r0 = 0; r0 < rows; r0 += kRowBlock) {
-    RowBlock carry = ConstRowBlockMap(matrix + first * ld + r0);
+    Lanes carry[kLanesPerBlock];
+    for (int l = 0; l < kLanesPerBlock; ++l)
+      loadLanes(carry[l], matrix + first * ld + r0 + l * kLaneCount);
     for (int j = first; j < last; ++j) {
-      const RowBlock b = ConstRowBlockMap(matrix + (j + 1) * ld + r0);
-      RowBlockMap(matrix + j * ld + r0) = c[j] * carry + s[j] * b;
-      carry = c[j] * b - s[j] * carry;
+      const double* b = matrix + (j + 1) * ld + r0;
+      double* out = matrix + j * ld + r0;
+      const double cj = c[j], sj = s[j];
+      for (int l = 0; l < kLanesPerBlock; ++l) {
+        Lanes bl;
+        loadLanes(bl, b + l * kLaneCount);
+        const Lanes rotated = cj * carry[l] + sj * bl;
+        storeLanes(out + l * kLaneCount, rotated);
+        carry[l] = cj * bl - sj * carry[l];
+      }
     }
-    RowBlockMap(matrix + last * ld + r0) = carry;
+    for (int l = 0; l < kLanesPerBlock; ++l)
+      storeLanes(matrix + last * ld + r0 + l * kLaneCount, carry[l]);
   }
 }
 
