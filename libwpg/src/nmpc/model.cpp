@@ -10,6 +10,7 @@
 
 #include "nmpc_internal.hpp"
 #include "wpg/nmpc/builtin_families.hpp"
+#include "wpg/qp/shared_hessian_factor.hpp"
 
 namespace wpg {
 
@@ -99,7 +100,8 @@ NmpcModel::NmpcModel(const WalkingParameters& parameters, int obstacle_slots)
     Q.block(layout_.stepYaw(), layout_.stepYaw(), nf, nf) =
         parameters_.weight_yaw * Eigen::MatrixXd::Identity(nf, nf);  // Q^theta of eq. (8)
     hessians_[pattern] = Q;
-    if (!factors_[pattern].compute(Q))
+    factors_[pattern] = qp::sharedHessianFactor(Q);
+    if (!factors_[pattern])
       throw std::invalid_argument("NMPC Hessian is not positive definite (check the weights)");
   }
 }
