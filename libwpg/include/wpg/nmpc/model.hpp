@@ -96,6 +96,9 @@ class NmpcModel {
   std::vector<std::shared_ptr<const ConstraintFamily>> families_;
   std::vector<int> family_first_row_;  // familyCount() + 1 entries
   qp::ColumnProfile jacobian_profile_;  // of the families registered so far
+  // addConstraintFamily without the profile, which the constructor computes once for the
+  // paper's families (each update goes over every row of every family).
+  void appendFamily(std::shared_ptr<const ConstraintFamily> family);
   void updateJacobianProfile();
 };
 
