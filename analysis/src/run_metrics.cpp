@@ -91,12 +91,13 @@ void copMargin(const WalkingParameters& w, const WalkTrajectory& tr, RunMetrics*
   std::vector<double> margins;
   margins.reserve(tr.size());
   double sum = 0.0;
+  SupportPolygonCache polygon;  // built once per support phase
   for (std::size_t i = 0; i < tr.size(); ++i) {
     // violation() is minus the distance to the nearest edge inside a convex polygon
     // The support polygon without security margins: the sole in single support, the hull of
     // both soles in double support (the polygon of checkWalk's cop_control_violation).
-    const double margin = -supportPolygonViolation(tr.cop[i], tr.support[i], tr.left_foot[i],
-                                                   tr.right_foot[i], w.foot_length, w.foot_width);
+    const double margin = -polygon.violation(tr.cop[i], tr.support[i], tr.left_foot[i],
+                                             tr.right_foot[i], w.foot_length, w.foot_width);
     margins.push_back(margin);
     sum += margin;
   }

@@ -1,13 +1,15 @@
 // The support polygon's violation without allocation (support_polygon.hpp). Every expression
 // is the one of convex_polygon.cpp (rectangleCorners, setVertices, violation; convexHull's
 // monotone chain is shared: convex_hull_chain.hpp), on arrays of at most 8 corners: the
-// numbers are the same to the last bit (tested).
+// numbers are the same to the last bit (tested). The cached route keeps the normals and
+// offsets that violation() would compute again: the same doubles, used the same way.
 #include "wpg/support_polygon.hpp"
 
 #include "convex_hull_chain.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 namespace wpg {
@@ -52,47 +54,91 @@ int hullOf(Eigen::Vector2d* points, int n, Eigen::Vector2d* hull) {
   return detail::monotoneChain(points, n, hull);
 }
 
-// setVertices(vertices[0..n)) then violation(p); +infinity where setVertices fails.
-double violationOf(Eigen::Vector2d* vertices, int n, const Eigen::Vector2d& p) {
-  constexpr double kRefused = std::numeric_limits<double>::infinity();  // an empty polygon
-  if (n < 3) return kRefused;
+// setVertices(vertices[0..n)) then the normals and offsets violation() uses, into normal and
+// offset; returns the edge count, 0 where setVertices fails.
+int edgesOf(Eigen::Vector2d* vertices, int n, Eigen::Vector2d* normal, double* offset) {
+  eigen_assert(n <= kMaxCorners && "a hull has at most as many vertices as points");
+  if (n < 3) return 0;
   for (int i = 0; i < n; ++i)
-    if (!vertices[i].allFinite()) return kRefused;
+    if (!vertices[i].allFinite()) return 0;
   double area2 = 0.0;
   for (int i = 0; i < n; ++i) {
     const Eigen::Vector2d& a = vertices[i];
     const Eigen::Vector2d& b = vertices[(i + 1) % n];
-    if ((b - a).norm() < 1e-12) return kRefused;
+    if ((b - a).norm() < 1e-12) return 0;
     area2 += a.x() * b.y() - b.x() * a.y();
   }
-  if (std::abs(area2) < 1e-12) return kRefused;
+  if (std::abs(area2) < 1e-12) return 0;
   if (area2 < 0.0) std::reverse(vertices, vertices + n);
   for (int i = 0; i < n; ++i)
     if (cross(vertices[i], vertices[(i + 1) % n], vertices[(i + 2) % n]) <= kCollinear)
-      return kRefused;
-  double largest = -std::numeric_limits<double>::infinity();
+      return 0;
   for (int i = 0; i < n; ++i) {
     const Eigen::Vector2d edge = vertices[(i + 1) % n] - vertices[i];
-    const Eigen::Vector2d normal = Eigen::Vector2d(edge.y(), -edge.x()).normalized();
-    const double offset = normal.dot(vertices[i]);
-    largest = std::max(largest, normal.dot(p) - offset);
+    normal[i] = Eigen::Vector2d(edge.y(), -edge.x()).normalized();
+    offset[i] = normal[i].dot(vertices[i]);
   }
-  return largest;
+  return n;
+}
+
+// Bit for bit: == would take -0.0 for 0.0 (whose corners may differ in a zero's sign) and
+// never match a NaN.
+bool sameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+bool sameBits(const Eigen::Vector4d& a, const Eigen::Vector4d& b) {
+  return std::memcmp(a.data(), b.data(), sizeof(double) * 4) == 0;
 }
 
 }  // namespace
 
-double supportPolygonViolation(const Eigen::Vector2d& p, SupportState support,
-                               const Eigen::Vector4d& left, const Eigen::Vector4d& right,
-                               double length, double width) {
+SupportPolygon::SupportPolygon(SupportState support, const Eigen::Vector4d& left,
+                               const Eigen::Vector4d& right, double length, double width) {
+  static_assert(kMaxEdges == kMaxCorners, "edgesOf writes at most kMaxCorners edges");
   Eigen::Vector2d corners[kMaxCorners];
   int count = 0;
   if (support != SupportState::kRight) appendCorners(left, length, width, corners, count);
   if (support != SupportState::kLeft) appendCorners(right, length, width, corners, count);
-  if (support != SupportState::kDouble) return violationOf(corners, count, p);
+  if (support != SupportState::kDouble) {
+    edge_count_ = edgesOf(corners, count, normal_, offset_);
+    return;
+  }
   Eigen::Vector2d hull[2 * kMaxCorners];
   const int n = hullOf(corners, count, hull);
-  return violationOf(hull, n, p);
+  edge_count_ = edgesOf(hull, n, normal_, offset_);
+}
+
+double SupportPolygon::violation(const Eigen::Vector2d& p) const {
+  if (edge_count_ == 0) return std::numeric_limits<double>::infinity();  // an empty polygon
+  double largest = -std::numeric_limits<double>::infinity();
+  for (int i = 0; i < edge_count_; ++i) largest = std::max(largest, normal_[i].dot(p) - offset_[i]);
+  return largest;
+}
+
+double supportPolygonViolation(const Eigen::Vector2d& p, SupportState support,
+                               const Eigen::Vector4d& left, const Eigen::Vector4d& right,
+                               double length, double width) {
+  return SupportPolygon(support, left, right, length, width).violation(p);
+}
+
+bool SupportPolygonCache::holds(SupportState support, const Eigen::Vector4d& left,
+                                const Eigen::Vector4d& right, double length, double width) const {
+  return built_ && support == support_ && sameBits(length, length_) && sameBits(width, width_) &&
+         (support == SupportState::kRight || sameBits(left, left_)) &&
+         (support == SupportState::kLeft || sameBits(right, right_));
+}
+
+double SupportPolygonCache::violation(const Eigen::Vector2d& p, SupportState support,
+                                      const Eigen::Vector4d& left, const Eigen::Vector4d& right,
+                                      double length, double width) {
+  if (!holds(support, left, right, length, width)) {
+    polygon_ = SupportPolygon(support, left, right, length, width);
+    built_ = true;
+    support_ = support;
+    left_ = left;
+    right_ = right;
+    length_ = length;
+    width_ = width;
+  }
+  return polygon_.violation(p);
 }
 
 }  // namespace wpg

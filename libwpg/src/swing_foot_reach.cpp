@@ -38,14 +38,17 @@ double SwingReach::polygonFactor() { return directionTable().polygon_factor; }
 namespace {
 
 // The horizontal share of a limit on the foot's 3-D vector once its vertical part is known,
-// shrunk so that the polygon of the directions lies inside the circle (header).
-double horizontalLimit(double limit, double vertical) {
-  return SwingReach::polygonFactor() * std::sqrt(std::max(limit * limit - vertical * vertical, 0.0));
+// shrunk (polygon_factor) so that the polygon of the directions lies inside the circle
+// (header).
+double horizontalLimit(double polygon_factor, double limit, double vertical) {
+  return polygon_factor * std::sqrt(std::max(limit * limit - vertical * vertical, 0.0));
 }
 
-// lo <= gain h + offset <= hi as an interval of h, intersected into [low, high].
+// Whether a tick's gain makes it depend on the landing (else intersect() would learn nothing).
+bool bounds(double gain) { return !(std::abs(gain) < 1e-12); }
+
+// lo <= gain h + offset <= hi as an interval of h, intersected into [low, high]; bounds(gain).
 void intersect(double gain, double offset, double limit, double& low, double& high) {
-  if (std::abs(gain) < 1e-12) return;  // the tick does not depend on the landing
   double a = (-limit - offset) / gain, b = (limit - offset) / gain;
   if (gain < 0.0) std::swap(a, b);
   low = std::max(low, a);
@@ -57,11 +60,15 @@ void intersect(double gain, double offset, double limit, double& low, double& hi
 SwingReach swingReach(const SwingFootTrajectory& swing, double t,
                       const Eigen::Vector2d& current_target, double max_speed,
                       double max_acceleration, double tick) {
+  // The table itself, not direction(k): this loop asks for it 16 times per tick of the rest
+  // of the swing at every NMPC iteration, and each call checked the static's guard.
+  const DirectionTable& table = directionTable();
+  const auto& directions = table.d;
   SwingReach reach;
   const Eigen::Vector2d p0(swing.axisState(0, t)(0), swing.axisState(1, t)(0));
   const double T = swing.landingTime() - t;
   for (int k = 0; k < SwingReach::kDirections; ++k)
-    reach.lower(k) = reach.upper(k) = SwingReach::direction(k).dot(current_target);
+    reach.lower(k) = reach.upper(k) = directions[static_cast<std::size_t>(k)].dot(current_target);
   if (!(T > 0.0) || !(tick > 0.0)) return reach;
 
   // The quintics with h = 0 (the foot brought to rest where it is): V0, A0.
@@ -81,19 +88,22 @@ SwingReach swingReach(const SwingFootTrajectory& swing, double t,
     const double acceleration_gain = s * (60.0 + s * (-180.0 + 120.0 * s)) / (T * T);
     const Eigen::Vector3d x = base[0].evaluate(tau), y = base[1].evaluate(tau);
     const Eigen::Vector3d z = swing.heightState(t + tau);
-    const double speed_limit = horizontalLimit(max_speed, z(1));
-    const double acceleration_limit = horizontalLimit(max_acceleration, z(2));
+    const double speed_limit = horizontalLimit(table.polygon_factor, max_speed, z(1));
+    const double acceleration_limit =
+        horizontalLimit(table.polygon_factor, max_acceleration, z(2));
+    const bool speed_bounds = max_speed > 0.0 && bounds(speed_gain);
+    const bool acceleration_bounds = max_acceleration > 0.0 && bounds(acceleration_gain);
     for (int k = 0; k < SwingReach::kDirections; ++k) {
-      const Eigen::Vector2d d = SwingReach::direction(k);
-      if (max_speed > 0.0)
+      const Eigen::Vector2d& d = directions[static_cast<std::size_t>(k)];
+      if (speed_bounds)
         intersect(speed_gain, d.x() * x(1) + d.y() * y(1), speed_limit, low[k], high[k]);
-      if (max_acceleration > 0.0)
+      if (acceleration_bounds)
         intersect(acceleration_gain, d.x() * x(2) + d.y() * y(2), acceleration_limit, low[k],
                   high[k]);
     }
   }
   for (int k = 0; k < SwingReach::kDirections; ++k) {
-    const double offset = SwingReach::direction(k).dot(p0);
+    const double offset = directions[static_cast<std::size_t>(k)].dot(p0);
     const double current = reach.lower(k) - offset;  // d_k . (current target - p0)
     if (low[k] > high[k]) low[k] = high[k] = current;
     // A direction no tick bounds (a limit off, no tick before the landing): far, but finite,

@@ -7,16 +7,6 @@
 #include "wpg/support_polygon.hpp"
 
 namespace wpg {
-namespace {
-
-// Distance outside the support polygon (<= 0 inside), soles of 2 half_length x 2 half_width.
-double supportViolation(const Eigen::Vector2d& p, SupportState support, const Eigen::Vector4d& left,
-                        const Eigen::Vector4d& right, double half_length, double half_width) {
-  return supportPolygonViolation(p, support, left, right, 2.0 * half_length, 2.0 * half_width);
-}
-
-}  // namespace
-
 void swingFootPeaks(const WalkTrajectory& tr, WalkCheckReport& report) {
   report.swing_foot_speed_max = report.swing_foot_acceleration_max = 0.0;
   report.swing_foot_speed_max_time = report.swing_foot_acceleration_max_time = 0.0;
@@ -49,17 +39,23 @@ WalkCheckReport checkWalk(const WalkingParameters& w, const WalkTrajectory& tr) 
   report.cop_margin_excursion = -1.0;
   const std::size_t n = tr.size();
   const int per_sample = static_cast<int>(std::lround(w.sampling_period / w.control_period));
+  // One polygon each (the sole, the CoP bounds of the sample's support, those of the NMPC
+  // sample's support), so that each is built once per support phase, not once per sample. The
+  // sizes are twice the half sizes, the doubles these checks have always used.
+  SupportPolygonCache sole_polygon, margin_polygon, sample_polygon;
+  const double sole_length = 2.0 * (0.5 * w.foot_length), sole_width = 2.0 * (0.5 * w.foot_width);
+  const double cop_length = 2.0 * w.copHalfLength(), cop_width = 2.0 * w.copHalfWidth();
   for (std::size_t i = 0; i < n; ++i) {
-    const double sole = supportViolation(tr.cop[i], tr.support[i], tr.left_foot[i],
-                                         tr.right_foot[i], 0.5 * w.foot_length, 0.5 * w.foot_width);
+    const double sole = sole_polygon.violation(tr.cop[i], tr.support[i], tr.left_foot[i],
+                                               tr.right_foot[i], sole_length, sole_width);
     if (sole > report.cop_control_violation) {
       report.cop_control_violation = sole;
       report.cop_control_violation_time = tr.time[i];
     }
     report.cop_margin_excursion = std::max(
         report.cop_margin_excursion,
-        supportViolation(tr.cop[i], tr.support[i], tr.left_foot[i], tr.right_foot[i],
-                         w.copHalfLength(), w.copHalfWidth()));
+        margin_polygon.violation(tr.cop[i], tr.support[i], tr.left_foot[i], tr.right_foot[i],
+                                 cop_length, cop_width));
     if (i % per_sample != 0) continue;
     // At an NMPC sample the CoP belongs to the single support that ends there, else to the
     // one that starts there, else (standing, starting) to the double support.
@@ -69,8 +65,8 @@ WalkCheckReport checkWalk(const WalkingParameters& w, const WalkTrajectory& tr) 
     } else if (i + 1 < n && tr.support[i] != SupportState::kDouble) {
       support = tr.support[i];
     }
-    const double margin = supportViolation(tr.cop[i], support, tr.left_foot[i], tr.right_foot[i],
-                                           w.copHalfLength(), w.copHalfWidth());
+    const double margin = sample_polygon.violation(tr.cop[i], support, tr.left_foot[i],
+                                                   tr.right_foot[i], cop_length, cop_width);
     if (margin > report.cop_sample_violation) {
       report.cop_sample_violation = margin;
       report.cop_sample_violation_time = tr.time[i];

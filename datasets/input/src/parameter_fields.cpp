@@ -91,7 +91,7 @@ const WalkingChoice kStandingPushResponse{
 
 void emitNumbers(YAML::Emitter& out, const double* values, int count) {
   out << YAML::Flow << YAML::BeginSeq;
-  for (int i = 0; i < count; ++i) out << formatNumber(values[i]);
+  for (int i = 0; i < count; ++i) emitScalar(out, formatNumber(values[i]));
   out << YAML::EndSeq;
 }
 
@@ -202,13 +202,13 @@ void readWalkingFields(const Entries& entries, const std::string& prefix, bool r
 
 void emitWalkingFields(YAML::Emitter& out, const WalkingParameters& parameters) {
   for (const WalkingField& field : walkingFields()) {
-    out << YAML::Key << field.name << YAML::Value;
+    emitKey(out, field.name);
     if (field.number) {
-      out << formatNumber(parameters.*field.number);
+      emitScalar(out, formatNumber(parameters.*field.number));
     } else if (field.integer) {
       out << parameters.*field.integer;
     } else if (field.choice) {
-      out << field.choice->name(parameters);
+      emitScalar(out, field.choice->name(parameters));
     } else {
       emitNumbers(out, (parameters.*field.polygon).data(), 5);
     }

@@ -14,6 +14,7 @@
 #include "wpg/walk_request.hpp"
 #include "wpg/walking_parameters.hpp"
 #include "wpg/datasets/input/yaml_input.hpp"
+#include "plain_scalar.hpp"
 
 namespace wpg::datasets::detail {
 
@@ -115,9 +116,9 @@ template <typename Settings>
 void emitSettingFields(YAML::Emitter& out, const std::vector<SettingField<Settings>>& fields,
                        const Settings& settings) {
   for (const SettingField<Settings>& field : fields) {
-    out << YAML::Key << field.name << YAML::Value;
+    emitKey(out, field.name);
     if (field.positive) {
-      out << formatNumber(settings.*field.positive);
+      emitScalar(out, formatNumber(settings.*field.positive));
     } else {
       out << settings.*field.integer;
     }

@@ -1,6 +1,7 @@
 // The resolved scenario, emitted with yaml-cpp (resolved_scenario.hpp). Keys in the order of
 // SCENARIOS.md; the parameter tables (parameter_fields.hpp) give the generator, filter and
-// walking keys, the same tables the readers use.
+// walking keys, the same tables the readers use. Keys, numbers and names go through
+// emitKey and emitScalar (plain_scalar.hpp): the same bytes without yaml-cpp's character test.
 #include "resolved_scenario.hpp"
 
 #include <stdexcept>
@@ -9,6 +10,7 @@
 
 #include "goal_sections.hpp"
 #include "parameter_fields.hpp"
+#include "plain_scalar.hpp"
 #include "wpg/datasets/input/yaml_input.hpp"
 
 namespace wpg::datasets::detail {
@@ -19,7 +21,7 @@ namespace {
 template <typename Item, typename EmitItem>
 void emitList(YAML::Emitter& out, const char* key, const std::vector<Item>& items,
               EmitItem emit_item) {
-  out << YAML::Key << key << YAML::Value;
+  emitKey(out, key);
   if (items.empty()) out << YAML::Flow;
   out << YAML::BeginSeq;
   for (const Item& item : items) {
@@ -37,13 +39,19 @@ std::string emitResolved(const Scenario& scenario) {
   const GeneratorSettings& generator = request.generator;
   YAML::Emitter out;
   out << YAML::BeginMap;
-  out << YAML::Key << "name" << YAML::Value << scenario.name;
-  out << YAML::Key << "robot" << YAML::Value << scenario.robot;
-  out << YAML::Key << "duration" << YAML::Value << formatNumber(request.duration);
-  out << YAML::Key << "robot_mass" << YAML::Value << formatNumber(request.robot_mass);
+  emitKey(out, "name");
+  emitScalar(out, scenario.name);
+  emitKey(out, "robot");
+  emitScalar(out, scenario.robot);
+  emitKey(out, "duration");
+  emitScalar(out, formatNumber(request.duration));
+  emitKey(out, "robot_mass");
+  emitScalar(out, formatNumber(request.robot_mass));
 
-  out << YAML::Key << "generator" << YAML::Value << YAML::BeginMap;
-  out << YAML::Key << "algorithm" << YAML::Value << generatorAlgorithmName(generator.algorithm);
+  emitKey(out, "generator");
+  out << YAML::BeginMap;
+  emitKey(out, "algorithm");
+  emitScalar(out, generatorAlgorithmName(generator.algorithm));
   emitSettingFields(out, generatorSettingFields(), generator);
   out << YAML::EndMap;
 
@@ -51,54 +59,69 @@ std::string emitResolved(const Scenario& scenario) {
     emitGoalRequest(out, scenario.goal);  // instead of the velocity command
   } else {
     emitList(out, "reference", request.reference, [&out](const VelocityCommand& command) {
-      out << YAML::Key << "t" << YAML::Value << formatNumber(command.t);
-      out << YAML::Key << "v" << YAML::Value;
+      emitKey(out, "t");
+      emitScalar(out, formatNumber(command.t));
+      emitKey(out, "v");
       emitNumbers(out, command.velocity.data(), 3);
     });
   }
   emitList(out, "pushes", request.pushes, [&out](const Push& push) {
-    out << YAML::Key << "t" << YAML::Value << formatNumber(push.t);
-    out << YAML::Key << "force" << YAML::Value;
+    emitKey(out, "t");
+    emitScalar(out, formatNumber(push.t));
+    emitKey(out, "force");
     emitNumbers(out, push.force.data(), 2);
-    out << YAML::Key << "duration" << YAML::Value << formatNumber(push.duration);
+    emitKey(out, "duration");
+    emitScalar(out, formatNumber(push.duration));
   });
   std::size_t obstacle_index = 0;
   emitList(out, "obstacles", request.obstacles, [&](const Obstacle& obstacle) {
-    out << YAML::Key << "type" << YAML::Value << obstacleTypeName(obstacle.type);
+    emitKey(out, "type");
+    emitScalar(out, obstacleTypeName(obstacle.type));
     if (obstacle.type == ObstacleType::kPolygon) {
-      out << YAML::Key << "vertices" << YAML::Value << YAML::Flow << YAML::BeginSeq;
+      emitKey(out, "vertices");
+      out << YAML::Flow << YAML::BeginSeq;
       for (const Eigen::Vector2d& vertex : obstacle.vertices) emitNumbers(out, vertex.data(), 2);
       out << YAML::EndSeq;
     } else {
-      out << YAML::Key << "center" << YAML::Value;
+      emitKey(out, "center");
       emitNumbers(out, obstacle.center.data(), 2);
     }
     if (obstacle.type == ObstacleType::kCircle) {
-      out << YAML::Key << "radius" << YAML::Value << formatNumber(obstacle.radius);
+      emitKey(out, "radius");
+      emitScalar(out, formatNumber(obstacle.radius));
     }
     if (obstacle.type == ObstacleType::kBox) {
-      out << YAML::Key << "size" << YAML::Value;
+      emitKey(out, "size");
       emitNumbers(out, obstacle.size.data(), 2);
-      out << YAML::Key << "yaw" << YAML::Value << formatNumber(obstacle.yaw);
+      emitKey(out, "yaw");
+      emitScalar(out, formatNumber(obstacle.yaw));
     }
-    out << YAML::Key << "margin" << YAML::Value << formatNumber(obstacle.margin);
+    emitKey(out, "margin");
+    emitScalar(out, formatNumber(obstacle.margin));
     // Written only where false, so that scenarios without goals read as before.
     if (!scenario.goal.knownToPlanner(obstacle_index++)) {
-      out << YAML::Key << "known_to_planner" << YAML::Value << false;
+      emitKey(out, "known_to_planner");
+      out << false;
     }
   });
 
-  out << YAML::Key << "replay" << YAML::Value << scenario.replay;
-  out << YAML::Key << "filter" << YAML::Value << scenario.filter;
-  out << YAML::Key << "filter_settings" << YAML::Value << YAML::Flow << YAML::BeginMap;
+  emitKey(out, "replay");
+  out << scenario.replay;
+  emitKey(out, "filter");
+  out << scenario.filter;
+  emitKey(out, "filter_settings");
+  out << YAML::Flow << YAML::BeginMap;
   emitSettingFields(out, filterSettingFields(), scenario.filter_settings);
-  out << YAML::Key << "mode" << YAML::Value << dynamicFilterModeName(scenario.filter_loop.mode);
-  out << YAML::Key << "reinitialize_wpg" << YAML::Value << scenario.filter_loop.reinitialize_wpg;
-  out << YAML::Key << "online_input_weight" << YAML::Value
-      << scenario.filter_loop.online_input_weight;
+  emitKey(out, "mode");
+  emitScalar(out, dynamicFilterModeName(scenario.filter_loop.mode));
+  emitKey(out, "reinitialize_wpg");
+  out << scenario.filter_loop.reinitialize_wpg;
+  emitKey(out, "online_input_weight");
+  out << scenario.filter_loop.online_input_weight;
   out << YAML::EndMap;
 
-  out << YAML::Key << "walking" << YAML::Value << YAML::BeginMap;
+  emitKey(out, "walking");
+  out << YAML::BeginMap;
   emitWalkingFields(out, scenario.walking);
   out << YAML::EndMap;
   out << YAML::EndMap;

@@ -8,6 +8,9 @@
 #include <stdexcept>
 
 #include <libdeflate.h>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 namespace wpg::datasets::detail {
 namespace {
@@ -50,6 +53,49 @@ libdeflate_compressor* threadCompressor() {
   return compressor.get();
 }
 
+// HDF5's shuffle of 8-byte elements (doubles, nearly all of a run's bytes), 8 elements at a
+// time: byte b of elements i..i+7 to out[b * elements + i ..], an 8 x 8 transpose of bytes in
+// three rounds of interleaving (SSE2, in every x86-64 processor) instead of 64 loads and
+// stores of one byte (the byte loop was 3 % of a batch). The same bytes in the same places.
+// Returns how many of the `count` elements it shuffled (a multiple of 8; the caller does the
+// rest).
+std::size_t shuffleDoubles(const unsigned char* in, std::size_t count, std::size_t elements,
+                           unsigned char* out) {
+#if defined(__SSE2__)
+  std::size_t i = 0;
+  for (; i + 8 <= count; i += 8) {
+    const unsigned char* e = in + 8 * i;
+    // x_k: elements 2k and 2k + 1
+    const __m128i x0 = _mm_loadu_si128(reinterpret_cast<const __m128i*>(e));
+    const __m128i x1 = _mm_loadu_si128(reinterpret_cast<const __m128i*>(e + 16));
+    const __m128i x2 = _mm_loadu_si128(reinterpret_cast<const __m128i*>(e + 32));
+    const __m128i x3 = _mm_loadu_si128(reinterpret_cast<const __m128i*>(e + 48));
+    // y0: bytes 0-7 of elements 0 and 2 interleaved; y1: of 1 and 3; y2: 4 and 6; y3: 5 and 7
+    const __m128i y0 = _mm_unpacklo_epi8(x0, x1), y1 = _mm_unpackhi_epi8(x0, x1);
+    const __m128i y2 = _mm_unpacklo_epi8(x2, x3), y3 = _mm_unpackhi_epi8(x2, x3);
+    // z0: bytes 0-3 of elements 0-3, byte by byte (4 bytes per byte index); z1: bytes 4-7;
+    // z2, z3: the same for elements 4-7
+    const __m128i z0 = _mm_unpacklo_epi8(y0, y1), z1 = _mm_unpackhi_epi8(y0, y1);
+    const __m128i z2 = _mm_unpacklo_epi8(y2, y3), z3 = _mm_unpackhi_epi8(y2, y3);
+    // w_k: bytes 2k and 2k + 1 of elements 0-7, 8 bytes each
+    const __m128i w[4] = {_mm_unpacklo_epi32(z0, z2), _mm_unpackhi_epi32(z0, z2),
+                          _mm_unpacklo_epi32(z1, z3), _mm_unpackhi_epi32(z1, z3)};
+    for (std::size_t k = 0; k < 4; ++k) {
+      _mm_storel_epi64(reinterpret_cast<__m128i*>(out + (2 * k) * elements + i), w[k]);
+      _mm_storel_epi64(reinterpret_cast<__m128i*>(out + (2 * k + 1) * elements + i),
+                       _mm_unpackhi_epi64(w[k], w[k]));
+    }
+  }
+  return i;
+#else
+  (void)in;
+  (void)count;
+  (void)elements;
+  (void)out;
+  return 0;
+#endif
+}
+
 // The stored form of one chunk of `size` bytes whose first `valid` bytes are `bytes` (the rest
 // of an edge chunk is zero): HDF5's shuffle filter (the bytes of the same significance
 // together), then its deflate filter's format, a zlib stream (libdeflate writes it faster than
@@ -70,10 +116,12 @@ std::vector<unsigned char> compressChunk(const unsigned char* bytes, std::size_t
     compressed_capacity = bound;
   }
   const std::size_t elements = size / element_size, valid_elements = valid / element_size;
+  std::size_t done = 0;  // elements already shuffled
+  if (element_size == 8) done = shuffleDoubles(bytes, valid_elements, elements, shuffled.get());
   for (std::size_t b = 0; b < element_size; ++b) {
     unsigned char* out = shuffled.get() + b * elements;
     const unsigned char* in = bytes + b;
-    for (std::size_t i = 0; i < valid_elements; ++i) out[i] = in[i * element_size];
+    for (std::size_t i = done; i < valid_elements; ++i) out[i] = in[i * element_size];
     std::fill(out + valid_elements, out + elements, static_cast<unsigned char>(0));
   }
   const std::size_t compressed_size =

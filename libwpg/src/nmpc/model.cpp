@@ -10,6 +10,7 @@
 
 #include "nmpc_internal.hpp"
 #include "wpg/nmpc/builtin_families.hpp"
+#include "wpg/qp/shared_hessian_factor.hpp"
 
 namespace wpg {
 
@@ -42,16 +43,17 @@ NmpcModel::NmpcModel(const WalkingParameters& parameters, int obstacle_slots)
   // method's ties between equally violated rows: another order walks differently in the last
   // bits.
   family_first_row_.push_back(0);
-  addConstraintFamily(makeCopConstraint());
-  addConstraintFamily(makeStepFeasibilityConstraint());
-  addConstraintFamily(makeYawBoundConstraint());
-  addConstraintFamily(makeObstacleConstraint());
-  addConstraintFamily(makeLandingBoundConstraint());
-  addConstraintFamily(makeLandingYawBoundConstraint());
+  appendFamily(makeCopConstraint());
+  appendFamily(makeStepFeasibilityConstraint());
+  appendFamily(makeYawBoundConstraint());
+  appendFamily(makeObstacleConstraint());
+  appendFamily(makeLandingBoundConstraint());
+  appendFamily(makeLandingYawBoundConstraint());
   // wpg's swing reach only when on: a model holds at most kMaxConstraintFamilies (the 8 bits
   // of each iteration's relaxed-family mask), and the paper's formulation (both limits 0)
   // keeps its six families and room for two of the caller's.
-  if (SwingReachRows::count(*this) > 0) addConstraintFamily(makeSwingReachConstraint());
+  if (SwingReachRows::count(*this) > 0) appendFamily(makeSwingReachConstraint());
+  updateJacobianProfile();
 
   // J1's velocity: the mean over a window of K samples of the predicted velocities (K = 1:
   // the paper's instantaneous C'_{k+1}); the window of sample j reaches back to j - K + 1.
@@ -99,12 +101,18 @@ NmpcModel::NmpcModel(const WalkingParameters& parameters, int obstacle_slots)
     Q.block(layout_.stepYaw(), layout_.stepYaw(), nf, nf) =
         parameters_.weight_yaw * Eigen::MatrixXd::Identity(nf, nf);  // Q^theta of eq. (8)
     hessians_[pattern] = Q;
-    if (!factors_[pattern].compute(Q))
+    factors_[pattern] = qp::sharedHessianFactor(Q);
+    if (!factors_[pattern])
       throw std::invalid_argument("NMPC Hessian is not positive definite (check the weights)");
   }
 }
 
 void NmpcModel::addConstraintFamily(std::shared_ptr<const ConstraintFamily> family) {
+  appendFamily(std::move(family));
+  updateJacobianProfile();
+}
+
+void NmpcModel::appendFamily(std::shared_ptr<const ConstraintFamily> family) {
   if (!family) throw std::invalid_argument("constraint family: expected a family, got null");
   if (familyCount() >= kMaxConstraintFamilies) {
     throw std::invalid_argument("constraint family '" + std::string(family->name()) +
@@ -115,7 +123,6 @@ void NmpcModel::addConstraintFamily(std::shared_ptr<const ConstraintFamily> fami
   if (rows < 0) throw std::invalid_argument("constraint family: negative row count");
   families_.push_back(std::move(family));
   family_first_row_.push_back(family_first_row_.back() + rows);
-  updateJacobianProfile();
 }
 
 int ConstraintFamily::jerkSamplesOfRow(const NmpcModel& model, int) const {

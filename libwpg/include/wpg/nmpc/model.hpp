@@ -69,7 +69,7 @@ class NmpcModel {
   int standingPattern() const { return patternCount() - 1; }
   void rowStepsOf(int pattern, Eigen::Ref<Eigen::VectorXi> row_step) const;
   const Eigen::MatrixXd& hessian(int pattern) const { return hessians_[pattern]; }
-  const qp::HessianFactor& hessianFactor(int pattern) const { return factors_[pattern]; }
+  const qp::HessianFactor& hessianFactor(int pattern) const { return *factors_[pattern]; }
 
   // Allocates a problem with the right sizes (not for the hot loop).
   NmpcProblem makeProblem() const;
@@ -89,11 +89,16 @@ class NmpcModel {
   Eigen::MatrixXd tracked_velocity_jerk_;
   ConvexPolygon feasibility_left_, feasibility_right_;
   std::vector<Eigen::MatrixXd> hessians_;
-  std::vector<qp::HessianFactor> factors_;
+  // Shared with the other models of the process that have the same Hessian
+  // (qp/shared_hessian_factor.hpp): the runs of a study build the same ones again.
+  std::vector<std::shared_ptr<const qp::HessianFactor>> factors_;
   // Families are stateless (const): models share them when copied.
   std::vector<std::shared_ptr<const ConstraintFamily>> families_;
   std::vector<int> family_first_row_;  // familyCount() + 1 entries
   qp::ColumnProfile jacobian_profile_;  // of the families registered so far
+  // addConstraintFamily without the profile, which the constructor computes once for the
+  // paper's families (each update goes over every row of every family).
+  void appendFamily(std::shared_ptr<const ConstraintFamily> family);
   void updateJacobianProfile();
 };
 
