@@ -29,9 +29,7 @@ Eigen::Vector3d QuinticToRest::evaluate(double t) const {
   if (t >= duration_) return {target_, 0.0, 0.0};
   t = std::max(t, 0.0);
   const double p = c_[0] + t * (c_[1] + t * (c_[2] + t * (c_[3] + t * (c_[4] + t * c_[5]))));
-  const double v = c_[1] + t * (2 * c_[2] + t * (3 * c_[3] + t * (4 * c_[4] + t * 5 * c_[5])));
-  const double a = 2 * c_[2] + t * (6 * c_[3] + t * (12 * c_[4] + t * 20 * c_[5]));
-  return {p, v, a};
+  return {p, velocity(t), acceleration(t)};
 }
 
 void SwingFootTrajectory::start(const Eigen::Vector3d& pose, double lift_off_time,

@@ -19,6 +19,18 @@ class QuinticToRest {
   void plan(double position, double velocity, double acceleration, double target, double duration);
   // Value, first and second derivative at time t in [0, duration] (clamped).
   Eigen::Vector3d evaluate(double t) const;
+  // evaluate()'s first and second derivative at t in [0, duration), without its branches,
+  // for one time or for an Eigen array of times (the swing reach asks for them at every
+  // control tick of the rest of a swing: a block of ticks is a few packets), the same
+  // operations either way.
+  template <class Time>
+  Time velocity(const Time& t) const {
+    return c_[1] + t * (2 * c_[2] + t * (3 * c_[3] + t * (4 * c_[4] + t * 5 * c_[5])));
+  }
+  template <class Time>
+  Time acceleration(const Time& t) const {
+    return 2 * c_[2] + t * (6 * c_[3] + t * (12 * c_[4] + t * 20 * c_[5]));
+  }
 
  private:
   double c_[6] = {0, 0, 0, 0, 0, 0};
@@ -38,7 +50,8 @@ class SwingFootTrajectory {
   // Position, velocity and acceleration of axis 0 = x, 1 = y, 2 = yaw at time t (the plan in
   // force, which replan(t, same target) would continue unchanged).
   Eigen::Vector3d axisState(int axis, double t) const { return axes_[axis].evaluate(t - plan_time_); }
-  // Height z, z', z'' at time t (the rise-and-fall profile above).
+  // Height z, z', z'' at time t (the rise-and-fall profile above). swingReach repeats its
+  // operations for z'^2 and z''^2 by packets (swing_foot_reach.cpp): change both together.
   Eigen::Vector3d heightState(double t) const;
   double liftOffTime() const { return lift_off_time_; }
   double landingTime() const { return landing_time_; }
