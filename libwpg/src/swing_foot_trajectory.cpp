@@ -1,7 +1,5 @@
 #include "wpg/swing_foot_trajectory.hpp"
 
-#include <algorithm>
-
 namespace wpg {
 
 void QuinticToRest::plan(double p0, double v0, double a0, double p1, double T) {
@@ -23,17 +21,6 @@ void QuinticToRest::plan(double p0, double v0, double a0, double p1, double T) {
   c_[5] = (12.0 * h - (6.0 * v0 * T) - (a0 * T2)) / (2.0 * T5);
 }
 
-Eigen::Vector3d QuinticToRest::evaluate(double t) const {
-  // At the end (and after): the target itself, at rest, so that the foot lands exactly where
-  // the landing is reported (the Horner sum at T differs from p1 by rounding).
-  if (t >= duration_) return {target_, 0.0, 0.0};
-  t = std::max(t, 0.0);
-  const double p = c_[0] + t * (c_[1] + t * (c_[2] + t * (c_[3] + t * (c_[4] + t * c_[5]))));
-  const double v = c_[1] + t * (2 * c_[2] + t * (3 * c_[3] + t * (4 * c_[4] + t * 5 * c_[5])));
-  const double a = 2 * c_[2] + t * (6 * c_[3] + t * (12 * c_[4] + t * 20 * c_[5]));
-  return {p, v, a};
-}
-
 void SwingFootTrajectory::start(const Eigen::Vector3d& pose, double lift_off_time,
                                 double landing_time, double step_height) {
   lift_off_time_ = lift_off_time;
@@ -49,22 +36,6 @@ void SwingFootTrajectory::replan(double t, const Eigen::Vector3d& target) {
     axes_[k].plan(state(0), state(1), state(2), target(k), landing_time_ - t);
   }
   plan_time_ = t;
-}
-
-Eigen::Vector3d SwingFootTrajectory::heightState(double t) const {
-  const double duration = landing_time_ - lift_off_time_;
-  if (!(duration > 0.0)) return Eigen::Vector3d::Zero();
-  const double s = std::clamp((t - lift_off_time_) / duration, 0.0, 1.0);
-  // eq. of the header: the quintic rest-to-rest profile f(x) on each half of the swing,
-  // x = 2 min(s, 1 - s), so dx/dt = +-2 / duration
-  const bool rising = s <= 0.5;
-  const double x = 2.0 * std::min(s, 1.0 - s);
-  const double df = x * x * (30.0 + x * (-60.0 + 30.0 * x));
-  const double ddf = x * (60.0 + x * (-180.0 + 120.0 * x));
-  const double dxdt = (rising ? 2.0 : -2.0) / duration;
-  // z: the order of the products the regression references were written with
-  const double z = step_height_ * x * x * x * (10.0 + x * (-15.0 + 6.0 * x));
-  return {z, step_height_ * df * dxdt, step_height_ * ddf * dxdt * dxdt};
 }
 
 Eigen::Vector4d SwingFootTrajectory::poseAt(double t) const {
