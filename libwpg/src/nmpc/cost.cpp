@@ -84,27 +84,23 @@ double nmpc_internal::cost(const NmpcModel& model, const NmpcProblem& problem,
   const WalkingParameters& w = model.parameters();
   const int N = L.horizon, nf = L.steps;
   double j1 = 0.0, j2 = 0.0, j3 = 0.0, j4 = 0.0, fixed = 0.0;
-  nmpc_internal::HorizonVector velocity(N), cop(N);
   for (int axis = 0; axis < 2; ++axis) {
     const Eigen::Vector3d& c_hat = axis == 0 ? problem.com_x : problem.com_y;
     const Eigen::VectorXd& v_ref = axis == 0 ? problem.velocity_x : problem.velocity_y;
-    const Eigen::VectorXd& past = axis == 0 ? problem.velocity_past_x : problem.velocity_past_y;
     const int oj = axis == 0 ? L.jerkX() : L.jerkY();
     const int of = axis == 0 ? L.stepX() : L.stepY();
     const auto jerk = U.segment(oj, N);
-    // The tracked velocity and the CoP over the horizon, eq. (3): the jerk matrices are lower
-    // triangular (sample j depends on the jerks up to j), so whole triangular products, not a
-    // strided dot product per sample (the cost is evaluated at every iteration's plan).
-    velocity.noalias() = model.trackedVelocityState() * c_hat;
-    velocity.noalias() += model.trackedVelocityJerk().triangularView<Eigen::Lower>() * jerk;
-    velocity += past;
-    cop.noalias() = P.cop_state * c_hat;
-    cop.noalias() += P.cop_jerk.triangularView<Eigen::Lower>() * jerk;
     for (int j = 0; j < N; ++j) {
+      const Eigen::VectorXd& past = axis == 0 ? problem.velocity_past_x : problem.velocity_past_y;
+      const double velocity =
+          model.trackedVelocityState().row(j).dot(c_hat) +
+          model.trackedVelocityJerk().row(j).head(j + 1).dot(jerk.head(j + 1)) + past(j);
+      const double cop = P.cop_state.row(j).dot(c_hat) +
+                         P.cop_jerk.row(j).head(j + 1).dot(jerk.head(j + 1));
       const int step = problem.phase.row_step(j) - 1;
       const double foot = step < 0 ? problem.phase.support_pose(axis) : U(of + step);
-      j1 += (velocity(j) - v_ref(j)) * (velocity(j) - v_ref(j));
-      j3 += (cop(j) - foot) * (cop(j) - foot);
+      j1 += (velocity - v_ref(j)) * (velocity - v_ref(j));
+      j3 += (cop - foot) * (cop - foot);
     }
     j4 += jerk.squaredNorm();
     for (int i = 0; i < nf; ++i)
