@@ -84,12 +84,17 @@ TEST(SupportPolygon, IsTheConvexPolygonsViolationToTheLastBit) {
                                               foot, 0.2, 0.0)));
 }
 
-TEST(SupportPolygon, AgreesOnEverySampleOfAWalk) {
-  wpg::WalkingParameters parameters;
+// A 6 s walk forward, sideways and turning at once: single and double supports, yawed feet.
+wpg::WalkTrajectory curvedWalk(const wpg::WalkingParameters& parameters) {
   wpg::WalkRequest request;
   request.duration = 6.0;
   request.reference = {{0.0, Eigen::Vector3d::Zero()}, {1.0, Eigen::Vector3d(0.2, 0.05, 0.1)}};
-  const wpg::WalkTrajectory walk = wpg::generateWalk(parameters, request).trajectory;
+  return wpg::generateWalk(parameters, request).trajectory;
+}
+
+TEST(SupportPolygon, AgreesOnEverySampleOfAWalk) {
+  const wpg::WalkingParameters parameters;
+  const wpg::WalkTrajectory walk = curvedWalk(parameters);
   for (std::size_t i = 0; i < walk.size(); ++i) {
     for (double shrink : {0.0, 0.02}) {
       const double length = parameters.foot_length - shrink, width = parameters.foot_width - shrink;
@@ -105,11 +110,8 @@ TEST(SupportPolygon, AgreesOnEverySampleOfAWalk) {
 // On every sample of a walk, with the sizes of the walk checks' three polygons and the run
 // metrics' one, each in its own cache as they use them.
 TEST(SupportPolygonCache, IsTheUncachedViolationOnEverySampleOfAWalk) {
-  wpg::WalkingParameters parameters;
-  wpg::WalkRequest request;
-  request.duration = 6.0;
-  request.reference = {{0.0, Eigen::Vector3d::Zero()}, {1.0, Eigen::Vector3d(0.2, 0.05, 0.1)}};
-  const wpg::WalkTrajectory walk = wpg::generateWalk(parameters, request).trajectory;
+  const wpg::WalkingParameters parameters;
+  const wpg::WalkTrajectory walk = curvedWalk(parameters);
   const double sizes[3][2] = {{parameters.foot_length, parameters.foot_width},
                               {2.0 * parameters.copHalfLength(), 2.0 * parameters.copHalfWidth()},
                               {parameters.foot_length - 0.02, parameters.foot_width - 0.02}};
