@@ -1,7 +1,6 @@
 #include "wpg/swing_foot_reach.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <limits>
 
@@ -13,20 +12,19 @@ constexpr int kDirections = SwingReach::kDirections;
 
 // The directions' cosines and sines, computed once: swingReach asks for them for every tick
 // of the rest of the swing at every NMPC iteration (a batch spent 11 % of its time in sincos).
-// Also as two rows of plain numbers, which the loops over the directions read as packets.
+// Two rows of plain numbers, which the loops over the directions read as packets.
 struct DirectionTable {
-  std::array<Eigen::Vector2d, kDirections> d;
   alignas(16) double cos[kDirections];
   alignas(16) double sin[kDirections];
   double polygon_factor;
   DirectionTable() : polygon_factor(std::cos(M_PI / (2.0 * kDirections))) {
     for (int k = 0; k < kDirections; ++k) {
       const double angle = k * (M_PI / kDirections);
-      d[static_cast<std::size_t>(k)] = Eigen::Vector2d(std::cos(angle), std::sin(angle));
-      cos[k] = d[static_cast<std::size_t>(k)].x();
-      sin[k] = d[static_cast<std::size_t>(k)].y();
+      cos[k] = std::cos(angle);
+      sin[k] = std::sin(angle);
     }
   }
+  Eigen::Vector2d direction(int k) const { return {cos[k], sin[k]}; }
 };
 
 const DirectionTable& directionTable() {
@@ -37,7 +35,7 @@ const DirectionTable& directionTable() {
 }  // namespace
 
 Eigen::Vector2d SwingReach::direction(int k) {
-  return directionTable().d[static_cast<std::size_t>(k)];
+  return directionTable().direction(k);
 }
 
 double SwingReach::polygonFactor() { return directionTable().polygon_factor; }
@@ -120,7 +118,7 @@ SwingReach swingReach(const SwingFootTrajectory& swing, double t,
   const Eigen::Vector2d p0(swing.axisState(0, t)(0), swing.axisState(1, t)(0));
   const double T = swing.landingTime() - t;
   for (int k = 0; k < kDirections; ++k)
-    reach.lower(k) = reach.upper(k) = table.d[static_cast<std::size_t>(k)].dot(current_target);
+    reach.lower(k) = reach.upper(k) = table.direction(k).dot(current_target);
   if (!(T > 0.0) || !(tick > 0.0)) return reach;
 
   // The quintics with h = 0 (the foot brought to rest where it is): V0, A0.
@@ -170,7 +168,7 @@ SwingReach swingReach(const SwingFootTrajectory& swing, double t,
   for (int k = 0; k < kDirections; ++k) {
     double& low = intervals.low[k];
     double& high = intervals.high[k];
-    const double offset = table.d[static_cast<std::size_t>(k)].dot(p0);
+    const double offset = table.direction(k).dot(p0);
     const double current = reach.lower(k) - offset;  // d_k . (current target - p0)
     if (low > high) low = high = current;
     // A direction no tick bounds (a limit off, no tick before the landing): far, but finite,
