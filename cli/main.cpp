@@ -1,6 +1,7 @@
 // The `wpg` executable: one registration per subcommand (commands/registration.cpp holds their
 // options), then the chosen subcommand runs and its errors become the exit codes.
 #include <csignal>
+#include <cstdio>
 #include <cstdlib>
 #include <exception>
 #include <iostream>
@@ -28,6 +29,26 @@ namespace {
   std::cout.flush();
   std::cerr.flush();
   std::_Exit(wpg::cli::kExitIncomplete);
+}
+
+// The command's status, once its outputs are closed and written, without the libraries'
+// exit-time teardown: HDF5's termination (emptying its free lists) and the destructors of what
+// the process keeps for its lifetime (the Hessian factors' memo) only hand memory back that
+// the kernel takes back anyway, and were ~7 ms at the end of a 0.6 s batch, on one thread.
+// Under a sanitizer the normal exit, so that the leak check still runs.
+int leave(int status) {
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+  return status;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer) || \
+    __has_feature(memory_sanitizer)
+  return status;
+#endif
+#endif
+  std::cout.flush();
+  std::cerr.flush();
+  std::fflush(nullptr);  // C streams too: _Exit flushes nothing
+  std::_Exit(status);
 }
 
 }  // namespace
@@ -79,7 +100,7 @@ int main(int argc, char** argv) {
   }
 
   try {
-    return command();
+    return leave(command());
   } catch (const UsageError& e) {
     printError(e.what());
     return kExitBadInput;

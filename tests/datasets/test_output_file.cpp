@@ -148,3 +148,21 @@ TEST_F(OutputFile, TemporaryRemovedOnTermination) {
 }
 
 }  // namespace
+
+// forgoWriteOutOnClose opens and closes the file once more: the claim (an open-file-description
+// lock) must survive that close, as a classic fcntl lock would not.
+TEST_F(OutputFile, ForgoingTheWriteOutOnCloseKeepsTheClaim) {
+  const std::string path = (fs::path(folder_) / "batch.h5").string();
+  wpg::datasets::OutputClaim claim(path);
+  ASSERT_TRUE(claim.created());
+  wpg::datasets::forgoWriteOutOnClose(path);
+  try {
+    wpg::datasets::OutputClaim second(path);
+    ADD_FAILURE() << "a second claim was granted after forgoWriteOutOnClose";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("in use by another wpg"), std::string::npos)
+        << error.what();
+  }
+  wpg::datasets::forgoWriteOutOnClose((fs::path(folder_) / "missing.h5").string());  // no-op
+  EXPECT_FALSE(fs::exists(fs::path(folder_) / "missing.h5"));
+}

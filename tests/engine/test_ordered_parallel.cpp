@@ -4,6 +4,8 @@
 // the caller.
 #include <atomic>
 #include <chrono>
+#include <condition_variable>
+#include <mutex>
 #include <set>
 #include <stdexcept>
 #include <thread>
@@ -118,5 +120,66 @@ TEST(OrderedParallel, ADeliverysExceptionStopsEverythingAndReachesTheCaller) {
     EXPECT_STREQ(error.what(), "the writer failed at 3");
   }
   EXPECT_EQ(delivered, (std::vector<std::size_t>{0, 1, 2}));
+  EXPECT_LT(started.load(), kJobs / 2);
+}
+
+// `all_started` (the batch file's creation) runs while the other workers start their jobs, and
+// nothing is delivered before it has returned: it waits here until a job has finished, which
+// only a worker running beside it can do.
+TEST(OrderedParallel, AllStartedRunsBesideTheWorkersAndPrecedesEveryDelivery) {
+  constexpr std::size_t kJobs = 20;
+  std::mutex mutex;
+  std::condition_variable finished_signal;
+  std::size_t finished = 0;
+  bool prepared = false, saw_a_finished_job = false;
+  std::vector<std::size_t> delivered;
+  runOrdered<int>(
+      kJobs, 2,
+      [&](std::size_t job, int) {
+        std::lock_guard<std::mutex> lock(mutex);
+        ++finished;
+        finished_signal.notify_all();
+        return static_cast<int>(job);
+      },
+      [&](std::size_t job, int&& outcome) {
+        EXPECT_TRUE(prepared) << "job " << job << " delivered before all_started returned";
+        EXPECT_EQ(outcome, static_cast<int>(job));
+        delivered.push_back(job);
+      },
+      [&] {
+        std::unique_lock<std::mutex> lock(mutex);
+        saw_a_finished_job = finished_signal.wait_for(lock, std::chrono::seconds(10),
+                                                      [&] { return finished > 0; });
+        prepared = true;
+      });
+  EXPECT_TRUE(saw_a_finished_job) << "no job ran while all_started did";
+  ASSERT_EQ(delivered.size(), kJobs);
+  for (std::size_t job = 0; job < kJobs; ++job) EXPECT_EQ(delivered[job], job);
+}
+
+// A failing `all_started` (the file cannot be created): no outcome delivered, its exception
+// reaches the caller, and the hand-out stops.
+TEST(OrderedParallel, AFailingAllStartedDeliversNothing) {
+  constexpr std::size_t kJobs = 200;
+  std::atomic<std::size_t> started{0};
+  std::size_t delivered = 0;
+  try {
+    runOrdered<int>(
+        kJobs, 2,
+        [&](std::size_t, int) {
+          ++started;
+          std::this_thread::sleep_for(std::chrono::microseconds(100));
+          return 0;
+        },
+        [&](std::size_t, int&&) { ++delivered; },
+        [] {
+          std::this_thread::sleep_for(std::chrono::milliseconds(2));
+          throw std::runtime_error("cannot create the file");
+        });
+    ADD_FAILURE() << "no exception";
+  } catch (const std::runtime_error& error) {
+    EXPECT_STREQ(error.what(), "cannot create the file");
+  }
+  EXPECT_EQ(delivered, 0u);
   EXPECT_LT(started.load(), kJobs / 2);
 }

@@ -18,6 +18,7 @@
 #include "hdf5_writing.hpp"
 #include "provenance_attributes.hpp"
 #include "run_group_writing.hpp"
+#include "wpg/datasets/storage/output_file.hpp"
 #include "wpg/datasets/storage/read_limits.hpp"
 #include "wpg/datasets/input/yaml_input.hpp"
 
@@ -171,6 +172,7 @@ std::unique_ptr<BatchDatasetWriter> BatchDatasetWriter::create(
   try {
     Handles& h = *writer->handles_;
     h.file = H5::H5File(path, H5F_ACC_TRUNC, H5::FileCreatPropList::DEFAULT, smallMetadataCache());
+    forgoWriteOutOnClose(path);
     writeIntAttribute(h.file, "schema_version", kRunDatasetSchemaVersion);
     writeIntAttribute(h.file, "batch_schema_version", kBatchDatasetSchemaVersion);
     writeStringAttribute(h.file, "wpg_version", WPG_VERSION_STRING);

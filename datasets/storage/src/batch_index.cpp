@@ -295,6 +295,7 @@ IndexReport writeBatchIndex(const std::string& output, const std::vector<std::st
     H5::Exception::dontPrint();
     try {
       H5::H5File index(temporary.path(), H5F_ACC_TRUNC);
+      forgoWriteOutOnClose(temporary.path());
       std::vector<std::string> names;
       {
         const H5::H5File source(first.path, H5F_ACC_RDONLY);

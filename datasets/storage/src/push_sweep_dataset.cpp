@@ -54,6 +54,7 @@ void writeFile(const std::string& path, const PushSweepFile& sweep) {
   access.setFcloseDegree(H5F_CLOSE_STRONG);
   auto owned = std::make_unique<H5::H5File>(path, H5F_ACC_TRUNC, H5::FileCreatPropList::DEFAULT,
                                             access);
+  forgoWriteOutOnClose(path);
   H5::H5File& file = *owned;
   detail::writeStringAttribute(file, "created_by", "wpg push-sweep");
   detail::writeStringAttribute(file, "wpg_version", WPG_VERSION_STRING);

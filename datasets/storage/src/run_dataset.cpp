@@ -457,6 +457,7 @@ void writeFile(const std::string& file_path, const Scenario& scenario, const Wal
   access.setFcloseDegree(H5F_CLOSE_STRONG);
   auto owned = std::make_unique<H5::H5File>(file_path, H5F_ACC_TRUNC,
                                             H5::FileCreatPropList::DEFAULT, access);
+  forgoWriteOutOnClose(file_path);
   H5::H5File& file = *owned;
   writeIntAttribute(file, "schema_version", kRunDatasetSchemaVersion);
   writeStringAttribute(file, "wpg_version", WPG_VERSION_STRING);

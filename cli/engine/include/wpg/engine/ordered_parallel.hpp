@@ -13,6 +13,9 @@
 // handed out and before `all_started` (may be empty; e.g. creating the output file) is called: a
 // thread the system refuses (a thread or memory limit) is a std::runtime_error ("cannot start
 // worker thread k of n") with no job run and `all_started` not called, never std::terminate.
+// `all_started` runs on the calling thread while the other workers start their first jobs (the
+// batch file's creation no longer holds the second core idle); nothing is delivered before it
+// returns, and if it throws, no job is delivered and no new one is handed out.
 #include <condition_variable>
 #include <cstddef>
 #include <exception>
@@ -42,6 +45,28 @@ void runOrdered(std::size_t count, int threads,
   bool delivering = false;
   std::exception_ptr error;
 
+  // With the lock held and `delivering` set by the caller: every outcome whose turn has come,
+  // delivered without the lock; then `delivering` cleared.
+  const auto deliverReady = [&](std::unique_lock<std::mutex>& lock) {
+    while (!error) {
+      const auto next = ready.find(next_delivery);
+      if (next == ready.end()) break;
+      Outcome item = std::move(next->second);
+      ready.erase(next);
+      const std::size_t index = next_delivery++;
+      lock.unlock();
+      try {
+        deliver(index, std::move(item));
+      } catch (...) {
+        lock.lock();
+        if (!error) error = std::current_exception();
+        break;
+      }
+      lock.lock();
+    }
+    delivering = false;
+  };
+
   const auto worker = [&](int worker_index) {
     {
       std::unique_lock<std::mutex> lock(mutex);
@@ -66,23 +91,7 @@ void runOrdered(std::size_t count, int threads,
       ready.emplace(job, std::move(outcome));
       if (delivering) continue;  // the thread delivering will take it in turn
       delivering = true;
-      while (!error) {
-        const auto next = ready.find(next_delivery);
-        if (next == ready.end()) break;
-        Outcome item = std::move(next->second);
-        ready.erase(next);
-        const std::size_t index = next_delivery++;
-        lock.unlock();
-        try {
-          deliver(index, std::move(item));
-        } catch (...) {
-          lock.lock();
-          if (!error) error = std::current_exception();
-          break;
-        }
-        lock.lock();
-      }
-      delivering = false;
+      deliverReady(lock);
     }
   };
 
@@ -99,18 +108,24 @@ void runOrdered(std::size_t count, int threads,
           std::to_string(count_threads) + " (-j): " + e.what()));
     }
   }
-  if (!error && all_started) {
-    try {
-      all_started();
-    } catch (...) {
-      error = std::current_exception();
-    }
-  }
+  const bool prepare = !error && all_started;
   {
     std::lock_guard<std::mutex> lock(mutex);
     go = true;  // with an error, the workers stop before their first job
+    delivering = prepare;  // outcomes wait in `ready` until all_started has returned
   }
   go_signal.notify_all();
+  if (prepare) {
+    std::exception_ptr failed;
+    try {
+      all_started();
+    } catch (...) {
+      failed = std::current_exception();
+    }
+    std::unique_lock<std::mutex> lock(mutex);
+    if (failed && !error) error = failed;
+    deliverReady(lock);  // what finished meanwhile (nothing, after an error)
+  }
   worker(0);  // the calling thread is worker 0
   for (std::thread& thread : pool) thread.join();
   if (error) std::rethrow_exception(error);
