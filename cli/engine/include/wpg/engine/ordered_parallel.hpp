@@ -16,6 +16,14 @@
 // `all_started` runs on the calling thread while the other workers start their first jobs (the
 // batch file's creation no longer holds the second core idle); nothing is delivered before it
 // returns, and if it throws, no job is delivered and no new one is handed out.
+//
+// Who delivers, and who frees: the calling thread delivers (between its own jobs, then until
+// the last outcome); another worker delivers only when kDeliveryBacklog outcomes wait in turn
+// (the caller busy with a long job), so that what waits stays bounded. An outcome is destroyed
+// by the worker that made it, at its next hand-out. Both keep a writer's memory on one thread:
+// glibc gives each thread its own heap (arena), and a block freed by a thread other than the
+// one that allocated it takes the owner's arena lock; at -j 2 a batch's HDF5 cache entries and
+// run records, written and freed by whichever worker delivered, made ~120 lock waits.
 #include <condition_variable>
 #include <cstddef>
 #include <exception>
@@ -30,41 +38,97 @@
 
 namespace wpg::engine {
 
+// Outcomes in turn past which a worker other than the caller delivers them itself.
+inline constexpr std::size_t kDeliveryBacklog = 4;
+
 // `work(job, worker)`: worker in [0, threads), for per-thread state (a robot model, ...).
-// `started(job)` (may be empty) is called when a job is handed to a worker.
 template <typename Outcome>
 void runOrdered(std::size_t count, int threads,
                 const std::function<Outcome(std::size_t job, int worker)>& work,
                 const std::function<void(std::size_t job, Outcome&& outcome)>& deliver,
                 const std::function<void()>& all_started = {}) {
+  struct Finished {
+    int worker = 0;  // who made it, and destroys it
+    Outcome outcome;
+  };
   std::mutex mutex;
-  std::condition_variable go_signal;
+  std::condition_variable go_signal, progress_signal;
   bool go = false;
-  std::map<std::size_t, Outcome> ready;  // finished, waiting for an earlier job
+  std::map<std::size_t, Finished> ready;       // finished, waiting for their turn
+  std::vector<std::vector<Outcome>> spent;     // delivered, by the worker that made them
   std::size_t next_job = 0, next_delivery = 0;
   bool delivering = false;
+  int running = 0;  // worker threads other than the caller still in their loop
   std::exception_ptr error;
 
+  // Outcomes whose turn has come (consecutive from next_delivery), counted up to `enough`.
+  const auto inTurn = [&](std::size_t enough) {
+    std::size_t n = 0;
+    for (auto it = ready.find(next_delivery); it != ready.end() && it->first == next_delivery + n &&
+                                              n < enough;
+         ++it)
+      ++n;
+    return n;
+  };
   // With the lock held and `delivering` set by the caller: every outcome whose turn has come,
   // delivered without the lock; then `delivering` cleared.
-  const auto deliverReady = [&](std::unique_lock<std::mutex>& lock) {
+  const auto deliverReady = [&](std::unique_lock<std::mutex>& lock, int self) {
     while (!error) {
       const auto next = ready.find(next_delivery);
       if (next == ready.end()) break;
-      Outcome item = std::move(next->second);
+      Finished item = std::move(next->second);
       ready.erase(next);
       const std::size_t index = next_delivery++;
       lock.unlock();
       try {
-        deliver(index, std::move(item));
+        deliver(index, std::move(item.outcome));
       } catch (...) {
         lock.lock();
         if (!error) error = std::current_exception();
         break;
       }
-      lock.lock();
+      if (item.worker == self) {
+        item = Finished{};  // made here: freed here, without the lock
+        lock.lock();
+      } else {
+        lock.lock();
+        spent[static_cast<std::size_t>(item.worker)].push_back(std::move(item.outcome));
+      }
     }
     delivering = false;
+    progress_signal.notify_all();
+  };
+
+  // Runs jobs until none is left (or an error); false when the hand-out has ended.
+  const auto runJobs = [&](int worker_index) {
+    while (true) {
+      std::vector<Outcome> garbage;
+      std::size_t job = 0;
+      {
+        std::unique_lock<std::mutex> lock(mutex);
+        garbage.swap(spent[static_cast<std::size_t>(worker_index)]);
+        const bool caller = worker_index == 0;
+        if (!delivering && !error && (caller || inTurn(kDeliveryBacklog) >= kDeliveryBacklog)) {
+          delivering = true;
+          deliverReady(lock, worker_index);
+        }
+        if (error || next_job >= count) return;
+        job = next_job++;
+      }
+      garbage.clear();  // freed by the thread that allocated it
+      Outcome outcome;
+      try {
+        outcome = work(job, worker_index);
+      } catch (...) {
+        std::lock_guard<std::mutex> lock(mutex);
+        if (!error) error = std::current_exception();
+        progress_signal.notify_all();
+        return;
+      }
+      std::lock_guard<std::mutex> lock(mutex);
+      ready.emplace(job, Finished{worker_index, std::move(outcome)});
+      progress_signal.notify_all();
+    }
   };
 
   const auto worker = [&](int worker_index) {
@@ -72,37 +136,27 @@ void runOrdered(std::size_t count, int threads,
       std::unique_lock<std::mutex> lock(mutex);
       go_signal.wait(lock, [&] { return go; });
     }
-    while (true) {
-      std::size_t job = 0;
-      {
-        std::lock_guard<std::mutex> lock(mutex);
-        if (error || next_job >= count) return;
-        job = next_job++;
-      }
-      Outcome outcome;
-      try {
-        outcome = work(job, worker_index);
-      } catch (...) {
-        std::lock_guard<std::mutex> lock(mutex);
-        if (!error) error = std::current_exception();
-        return;
-      }
-      std::unique_lock<std::mutex> lock(mutex);
-      ready.emplace(job, std::move(outcome));
-      if (delivering) continue;  // the thread delivering will take it in turn
-      delivering = true;
-      deliverReady(lock);
-    }
+    runJobs(worker_index);
+    std::lock_guard<std::mutex> lock(mutex);
+    --running;
+    progress_signal.notify_all();
   };
 
   const std::size_t wanted = threads < 1 ? 1 : static_cast<std::size_t>(threads);
   const int count_threads = static_cast<int>(count < wanted ? (count < 1 ? 1 : count) : wanted);
+  spent.resize(static_cast<std::size_t>(count_threads));
   std::vector<std::thread> pool;
   pool.reserve(static_cast<std::size_t>(count_threads));
   for (int t = 1; t < count_threads && !error; ++t) {
     try {
+      {
+        std::lock_guard<std::mutex> lock(mutex);
+        ++running;
+      }
       pool.emplace_back(worker, t);
     } catch (const std::system_error& e) {
+      std::lock_guard<std::mutex> lock(mutex);
+      --running;
       error = std::make_exception_ptr(std::runtime_error(
           "cannot start worker thread " + std::to_string(t + 1) + " of " +
           std::to_string(count_threads) + " (-j): " + e.what()));
@@ -122,11 +176,23 @@ void runOrdered(std::size_t count, int threads,
     } catch (...) {
       failed = std::current_exception();
     }
-    std::unique_lock<std::mutex> lock(mutex);
+    std::lock_guard<std::mutex> lock(mutex);
     if (failed && !error) error = failed;
-    deliverReady(lock);  // what finished meanwhile (nothing, after an error)
+    delivering = false;
   }
-  worker(0);  // the calling thread is worker 0
+  runJobs(0);  // the calling thread is worker 0
+  {
+    // The others' last outcomes, delivered here as they come.
+    std::unique_lock<std::mutex> lock(mutex);
+    while (true) {
+      if (!delivering && !error) {
+        delivering = true;
+        deliverReady(lock, 0);
+      }
+      if (error || (running == 0 && !delivering && next_delivery == next_job)) break;
+      progress_signal.wait(lock);
+    }
+  }
   for (std::thread& thread : pool) thread.join();
   if (error) std::rethrow_exception(error);
 }
