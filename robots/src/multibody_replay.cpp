@@ -2,6 +2,7 @@
 // are finite_differences.cpp, the Simbody part, construction and one sample of inverse
 // dynamics, simbody_dynamics.cpp).
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <exception>
 #include <limits>
@@ -48,6 +49,18 @@ const MultibodyReplayResult& MultibodyReplay::run(const Eigen::Ref<const Eigen::
   return runImpl(q, dt, &com_force);
 }
 
+Eigen::Index MultibodyReplay::threadsFor(Eigen::Index n) const {
+  // Short runs stay on this thread: starting one costs about what 10 samples do.
+  return std::min<Eigen::Index>(std::max(1, settings_.threads), std::max<Eigen::Index>(1, n / 100));
+}
+
+void MultibodyReplay::prepare(const Eigen::Ref<const Eigen::MatrixXd>& q) {
+  if (q.rows() < 1 || q.cols() != model_.nq()) return;  // run() reports what is wrong
+  Simbody& simbody = simbodyFor(q);
+  for (Eigen::Index t = 1; t < threadsFor(q.rows()); ++t)
+    (void)helperSystem(static_cast<std::size_t>(t - 1), simbody);
+}
+
 const MultibodyReplayResult& MultibodyReplay::runImpl(
     const Eigen::Ref<const Eigen::MatrixXd>& q, double dt,
     const Eigen::Ref<const Eigen::MatrixXd>* com_force) {
@@ -81,14 +94,20 @@ const MultibodyReplayResult& MultibodyReplay::runImpl(
       result_.com.row(k) = sample.com.transpose();
     }
   };
-  // Short runs stay on this thread: starting one costs about what 10 samples do.
-  const Eigen::Index threads =
-      std::min<Eigen::Index>(std::max(1, settings_.threads), std::max<Eigen::Index>(1, n / 100));
+  const Eigen::Index threads = threadsFor(n);
   // Every helper's system and buffer first: helperSystem() may grow the vectors that hold
   // them, which must not move while a thread uses one.
   std::vector<Simbody*> systems;
   for (Eigen::Index t = 1; t < threads; ++t)
     systems.push_back(&helperSystem(static_cast<std::size_t>(t - 1), simbody));
+  // Blocks of samples handed out in turn rather than one share per thread: the threads end
+  // together even when one of them is slowed (a busy core, a cold cache).
+  constexpr Eigen::Index kBlock = 50;
+  std::atomic<Eigen::Index> next_block{0};
+  const auto replayBlocks = [&](Simbody& system, Eigen::VectorXd& tau) {
+    for (Eigen::Index first = kBlock * next_block++; first < n; first = kBlock * next_block++)
+      replaySamples(system, tau, first, std::min(n, first + kBlock));
+  };
   std::vector<std::thread> pool;
   std::vector<std::exception_ptr> errors(static_cast<std::size_t>(threads));
   for (Eigen::Index t = 1; t < threads; ++t) {
@@ -96,16 +115,18 @@ const MultibodyReplayResult& MultibodyReplay::runImpl(
     Eigen::VectorXd& tau = helper_tau_[static_cast<std::size_t>(t - 1)];
     pool.emplace_back([&, t] {
       try {
-        replaySamples(system, tau, n * t / threads, n * (t + 1) / threads);
+        replayBlocks(system, tau);
       } catch (...) {
         errors[static_cast<std::size_t>(t)] = std::current_exception();
+        next_block = n;  // the others stop at their next block
       }
     });
   }
   try {
-    replaySamples(simbody, tau_, 0, n / threads);
+    replayBlocks(simbody, tau_);
   } catch (...) {
     errors[0] = std::current_exception();
+    next_block = n;
   }
   for (std::thread& thread : pool) thread.join();
   for (const std::exception_ptr& error : errors)
@@ -123,7 +144,7 @@ InverseDynamicsSample MultibodyReplay::inverseDynamics(const Eigen::Ref<const Ei
                                 std::to_string(model_.nv()) + " finite entries");
   }
   InverseDynamicsSample out;
-  sampleDynamics(*simbody_, q, v, a, out, tau_);
+  sampleDynamics(fullSystem(), q, v, a, out, tau_);
   if (joint_torques != nullptr) *joint_torques = tau_;
   return out;
 }

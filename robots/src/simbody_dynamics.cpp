@@ -192,14 +192,20 @@ MultibodyReplay::MultibodyReplay(const RobotModel& model, MultibodyReplaySetting
     throw std::invalid_argument("multibody replay: gravity must be finite and >= 0");
   }
   if (settings_.threads < 1) throw std::invalid_argument("multibody replay: threads must be >= 1");
-  simbody_ = std::make_unique<Simbody>(model_, settings_.gravity,
-                                       std::vector<bool>(model_.jointCount(), false),
-                                       Eigen::VectorXd::Zero(model_.jointCount()));
   tau_.resize(model_.jointCount());
 }
 
+MultibodyReplay::Simbody& MultibodyReplay::fullSystem() {
+  if (!simbody_) {
+    simbody_ = std::make_unique<Simbody>(model_, settings_.gravity,
+                                         std::vector<bool>(model_.jointCount(), false),
+                                         Eigen::VectorXd::Zero(model_.jointCount()));
+  }
+  return *simbody_;
+}
+
 MultibodyReplay::Simbody& MultibodyReplay::simbodyFor(const Eigen::Ref<const Eigen::MatrixXd>& q) {
-  if (settings_.joint_torques) return *simbody_;
+  if (settings_.joint_torques) return fullSystem();
   const int nj = model_.jointCount();
   std::vector<bool> constant(nj, false);
   Eigen::VectorXd values(nj);
@@ -210,7 +216,7 @@ MultibodyReplay::Simbody& MultibodyReplay::simbodyFor(const Eigen::Ref<const Eig
     constant[k] = (column.array() == values(k)).all();
     any = any || constant[k];
   }
-  if (!any) return *simbody_;
+  if (!any) return fullSystem();
   bool same = welded_ != nullptr && welded_->welded == constant;
   for (int k = 0; same && k < nj; ++k) {
     if (constant[k] && welded_->weld_values(k) != values(k)) same = false;

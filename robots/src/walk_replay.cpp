@@ -5,6 +5,8 @@
 #include <cstdint>
 #include <cmath>
 #include <stdexcept>
+#include <system_error>
+#include <thread>
 
 #include "wpg/dynamic_filter.hpp"
 #include "wpg/robots/momentum_zmp.hpp"
@@ -101,6 +103,27 @@ MultibodyValidation replayWalk(const RobotModel& model, const WalkingParameters&
   // the kinematics (Simbody's within 1e-9 m, tested on the shipped walks, at a twentieth of
   // the cost); without the filter, Simbody's.
   Eigen::MatrixXd q = solveIk(ik, model, walk, com, per_iteration, out, !settings.filter);
+  // With the filter, Simbody's systems for the validation are built on another thread while
+  // this one computes the corrected motion (its constant joints are the unfiltered motion's:
+  // the IK holds the same ones in the reference posture; run() checks and rebuilds if not).
+  std::thread building;
+  if (settings.filter && settings.threads > 1) {
+    try {
+      building = std::thread([&] {
+        try {
+          replay.prepare(q);
+        } catch (...) {  // run() builds what is missing, and reports its own errors
+        }
+      });
+    } catch (const std::system_error&) {  // no thread to spare: run() builds them
+    }
+  }
+  struct JoinOnExit {
+    std::thread& thread;
+    ~JoinOnExit() {
+      if (thread.joinable()) thread.join();
+    }
+  } join_building{building};
   auto start = Clock::now();
   if (settings.filter) {
     MomentumZmp momentum(model, w.gravity);
@@ -128,6 +151,7 @@ MultibodyValidation replayWalk(const RobotModel& model, const WalkingParameters&
     out.com_filtered.leftCols<2>() += correction;
     const double filter_time = seconds(start);
     out.q = solveIk(ik, model, walk, out.com_filtered, per_iteration, out, true);
+    if (building.joinable()) building.join();
     out.zmp_multibody_filtered = replay.run(out.q, dt, com_force).zmp;
     out.after = detail::zmpErrorStatistics(walk, out.zmp_multibody_filtered);
     // The whole-walk stages are spread evenly over the iterations (per-sample costs). The

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <random>
 #include <string>
+#include <thread>
 
 #include <gtest/gtest.h>
 
@@ -441,6 +442,50 @@ TEST(MultibodyReplay, ThreadsGiveTheSameRows) {
   }
   settings.threads = 0;
   EXPECT_THROW(MultibodyReplay(model, settings), std::invalid_argument);
+}
+
+}  // namespace
+
+namespace {
+
+// prepare() builds on another thread the systems run() will use: the rows are those of a
+// replay that built its own, to the last bit, whether the prepared motion's constant joints
+// are the replayed one's (the systems reused) or not (run() builds the right ones).
+TEST(MultibodyReplay, PreparedSystemsGiveTheSameRows) {
+  const RobotModel& model = hrp2();
+  const int n = 300;
+  const auto motion = [&](double arm) {
+    Eigen::MatrixXd q(n, model.nq());
+    const Eigen::VectorXd q0 = model.halfSitting();
+    for (int k = 0; k < n; ++k) {
+      const double t = kDt * k;
+      Eigen::VectorXd qk = q0;
+      RobotModel::setFreeFlyer(qk, q0.head<3>() + Eigen::Vector3d(0.2 * t, 0.0, 0.0),
+                               Eigen::Quaterniond::Identity());
+      for (int i = 0; i < 12; ++i) qk(7 + i) += 0.2 * std::sin(3.0 * t + i);
+      qk(7 + model.jointIndex("LARM_JOINT1")) += arm;  // constant over the run
+      q.row(k) = qk.transpose();
+    }
+    return q;
+  };
+  const Eigen::MatrixXd q = motion(0.0), other_arm = motion(0.4);
+  wpg::robots::MultibodyReplaySettings settings;
+  settings.joint_torques = false;
+  settings.threads = 2;
+  MultibodyReplay own(model, settings);
+  const auto expected = own.run(q, kDt);
+  for (const Eigen::MatrixXd* prepared : {&q, &other_arm}) {
+    MultibodyReplay replay(model, settings);
+    std::thread building([&] { replay.prepare(*prepared); });
+    building.join();
+    const auto& result = replay.run(q, kDt);
+    EXPECT_EQ(result.zmp, expected.zmp);
+    EXPECT_EQ(result.base_wrench, expected.base_wrench);
+    EXPECT_EQ(result.com, expected.com);
+  }
+  MultibodyReplay replay(model, settings);
+  replay.prepare(Eigen::MatrixXd(2, 3));  // wrong size: nothing built, nothing thrown
+  EXPECT_THROW(replay.run(Eigen::MatrixXd(2, 3), kDt), std::invalid_argument);
 }
 
 }  // namespace

@@ -60,7 +60,8 @@ struct InverseDynamicsSample {
 
 class MultibodyReplay {
  public:
-  // Builds the Simbody system (free-flyer root, a pin or slider per joint, gravity).
+  // The Simbody systems (free-flyer root, a pin or slider per joint, gravity) are built when
+  // first needed: a run without joint torques never needs the one with every joint a mobility.
   explicit MultibodyReplay(const RobotModel& model, MultibodyReplaySettings settings = {});
   ~MultibodyReplay();
   MultibodyReplay(const MultibodyReplay&) = delete;
@@ -78,6 +79,12 @@ class MultibodyReplay {
   const MultibodyReplayResult& run(const Eigen::Ref<const Eigen::MatrixXd>& q, double dt,
                                    const Eigen::Ref<const Eigen::MatrixXd>& com_force);
   const MultibodyReplayResult& result() const { return result_; }
+  // Builds now the Simbody systems that run() on q would build (without joint torques, the
+  // system with q's constant joints welded, and one copy per helper thread), so that a caller
+  // may build them on another thread while it computes the motion to replay: run() on a
+  // motion with the same number of samples and the same constant joints then reuses them
+  // (any other motion gets its own, as before). Checks nothing; results are unchanged.
+  void prepare(const Eigen::Ref<const Eigen::MatrixXd>& q);
 
   // Finite differences alone (the scheme above): velocity and acceleration, n x nv.
   void differentiate(const Eigen::Ref<const Eigen::MatrixXd>& q, double dt,
@@ -100,6 +107,10 @@ class MultibodyReplay {
   // The system for a run of q: the full one, or (without joint torques) the one with the
   // joints constant over q welded, rebuilt only when that set or their values change.
   Simbody& simbodyFor(const Eigen::Ref<const Eigen::MatrixXd>& q);
+  // The system with every joint a mobility, built at its first use.
+  Simbody& fullSystem();
+  // The threads run() uses for n samples.
+  Eigen::Index threadsFor(Eigen::Index n) const;
   // A copy of `like` (the same welded joints and values) for helper thread `index` of run().
   Simbody& helperSystem(std::size_t index, const Simbody& like);
   void sampleDynamics(Simbody& simbody, const Eigen::Ref<const Eigen::VectorXd>& q,
