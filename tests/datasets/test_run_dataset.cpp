@@ -5,7 +5,9 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <H5Cpp.h>
@@ -334,6 +336,73 @@ TEST_F(RunDatasetFiles, ExistingFileIsReplacedWhole) {
   std::vector<hsize_t> dims;
   readDoubles(file.openGroup("/runs/hand_made"), "time", &dims);
   EXPECT_EQ(dims, std::vector<hsize_t>({40}));
+}
+
+}  // namespace
+
+namespace {
+
+// Every chunked dataset of a file: its path and its stored (shuffled, deflated) chunks.
+std::map<std::string, std::vector<std::vector<unsigned char>>> storedChunks(const std::string& path) {
+  std::map<std::string, std::vector<std::vector<unsigned char>>> out;
+  const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  EXPECT_GE(file, 0);
+  const auto visit = [](hid_t root, const char* name, const H5O_info_t* info, void* data) -> herr_t {
+    if (info->type != H5O_TYPE_DATASET) return 0;
+    auto& chunks = (*static_cast<std::map<std::string, std::vector<std::vector<unsigned char>>>*>(
+        data))[name];
+    const hid_t dataset = H5Dopen2(root, name, H5P_DEFAULT);
+    const hid_t space = H5Dget_space(dataset);
+    hsize_t count = 0;
+    if (H5Dget_num_chunks(dataset, space, &count) >= 0) {
+      for (hsize_t i = 0; i < count; ++i) {
+        hsize_t offset[2] = {0, 0};
+        unsigned filter_mask = 0;
+        haddr_t address = 0;
+        hsize_t size = 0;
+        H5Dget_chunk_info(dataset, space, i, offset, &filter_mask, &address, &size);
+        std::vector<unsigned char> bytes(size);
+        uint32_t filters = 0;
+        H5Dread_chunk(dataset, H5P_DEFAULT, offset, &filters, bytes.data());
+        chunks.push_back(std::move(bytes));
+      }
+    }
+    H5Sclose(space);
+    H5Dclose(dataset);
+    return 0;
+  };
+  H5Ovisit(file, H5_INDEX_NAME, H5_ITER_NATIVE, visit, &out);
+  H5Fclose(file);
+  return out;
+}
+
+// The walk's datasets compressed ahead, on another thread (prepareWalkDatasets, what `wpg run`
+// does while the replay runs), are written as the very chunks the writer would have made; a
+// preparation of another walk is refused, and leaves no file.
+TEST_F(RunDatasetFiles, APreparedWalkWritesTheSameChunks) {
+  const std::string direct = (directory_ / "direct.h5").string();
+  const std::string prepared = (directory_ / "prepared.h5").string();
+  for (const std::size_t samples : {std::size_t{1}, std::size_t{250}, std::size_t{20000}}) {
+    SCOPED_TRACE(samples);
+    const Scenario scenario = handMadeScenario();
+    const wpg::WalkResult result = handMadeResult(samples, 3, 4);
+    writeRunDataset(direct, scenario, result);
+    wpg::datasets::PreparedRun walk;
+    std::thread preparing([&] { walk = wpg::datasets::prepareWalkDatasets(scenario, result); });
+    preparing.join();
+    writeRunDataset(prepared, scenario, result, nullptr, nullptr, nullptr, &walk);
+    const auto expected = storedChunks(direct);
+    EXPECT_GT(expected.size(), 10u);
+    EXPECT_EQ(storedChunks(prepared), expected);
+  }
+  const Scenario scenario = handMadeScenario();
+  const wpg::datasets::PreparedRun other =
+      wpg::datasets::prepareWalkDatasets(scenario, handMadeResult(250, 3, 4));
+  const std::string refused = (directory_ / "refused.h5").string();
+  EXPECT_THROW(writeRunDataset(refused, scenario, handMadeResult(251, 3, 4), nullptr, nullptr,
+                               nullptr, &other),
+               std::logic_error);
+  EXPECT_FALSE(fs::exists(refused));
 }
 
 }  // namespace

@@ -40,6 +40,7 @@ RunResult runScenario(const datasets::Scenario& scenario, const RunSettings& set
   RunResult result;
   result.walk = std::move(run.walk);
   result.replay = std::move(run.replay);
+  result.prepared_walk = std::move(run.prepared_walk);
   evaluateRun(scenario, result);
   if (result.outcome == RunOutcome::kWalkFailed && !run.replay_failure.empty() &&
       run.walk_succeeded) {
@@ -74,7 +75,8 @@ void writeRunDataset(const std::string& path, const datasets::Scenario& scenario
   datasets::writeRunDataset(path, scenario, result.walk.result,
                             result.footsteps ? &result.footsteps->clearances : nullptr,
                             multibody ? &*multibody : nullptr,
-                            result.walk.goal ? &*result.walk.goal : nullptr);
+                            result.walk.goal ? &*result.walk.goal : nullptr,
+                            result.prepared_walk ? &*result.prepared_walk : nullptr);
 }
 
 }  // namespace wpg::engine

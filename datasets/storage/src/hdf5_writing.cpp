@@ -134,7 +134,7 @@ std::vector<unsigned char> compressChunk(const unsigned char* bytes, std::size_t
 // compressed (an edge chunk is stored full size: the rows past the end are zero).
 RecordedDataset compressDataset(const void* data, hsize_t rows, hsize_t columns,
                                 hsize_t chunk_rows, std::size_t element_size) {
-  RecordedDataset recorded{rows, columns, chunk_rows, element_size, {}};
+  RecordedDataset recorded{{}, rows, columns, chunk_rows, element_size, {}};
   const hsize_t row_bytes = std::max<hsize_t>(1, columns) * element_size;
   const auto* bytes = static_cast<const unsigned char*>(data);
   for (hsize_t first = 0; first < rows; first += chunk_rows) {
@@ -269,18 +269,20 @@ H5::DataSet writeDataset(H5::Group& group, const std::string& name, const void* 
   const hsize_t chunk_rows = std::min(rows, std::max<hsize_t>(1, kChunkBytes / row_bytes));
   if (ChunkRecording* recording = activeRecording()) {
     recording->datasets.push_back(compressDataset(data, rows, columns, chunk_rows, element_size));
+    recording->datasets.back().name = name;
     return H5::DataSet();
   }
   // Written directly too, the chunks are compressed here and written as they are: the same
   // bytes as a batch's, and libdeflate rather than HDF5's zlib.
   RecordedDataset direct;
   const RecordedDataset* recorded = nullptr;
-  if (ChunkRecording* replay = activeReplay()) {
+  if (ChunkRecording* replay = activeReplay();
+      replay && (replay->replayed < replay->datasets.size() || !replay->partial)) {
     if (replay->replayed >= replay->datasets.size()) {
       throw std::logic_error("writeDataset: replaying more datasets than were recorded");
     }
     recorded = &replay->datasets[replay->replayed++];
-    if (recorded->rows != rows || recorded->columns != columns ||
+    if (recorded->name != name || recorded->rows != rows || recorded->columns != columns ||
         recorded->element_size != element_size) {
       throw std::logic_error("writeDataset: the replayed dataset " + name +
                              " is not the one recorded");

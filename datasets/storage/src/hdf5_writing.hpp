@@ -25,6 +25,7 @@ namespace wpg::datasets::detail {
 // is the same as one written directly.
 
 struct RecordedDataset {
+  std::string name;
   hsize_t rows = 0, columns = 0, chunk_rows = 0;
   std::size_t element_size = 0;
   std::vector<std::vector<unsigned char>> chunks;  // shuffled + deflated, in row order
@@ -35,6 +36,9 @@ class ChunkRecording {
   std::vector<RecordedDataset> datasets;  // in the order of the writer's writeDataset calls
   std::size_t replayed = 0;               // datasets taken back by the replay so far
   std::shared_ptr<const void> cache;      // what the writer computed while recording (checks)
+  // The first datasets only (prepareWalkDatasets): past them the replaying writer compresses
+  // the rest itself.
+  bool partial = false;
 };
 
 enum class RecordingMode { kRecord, kReplay };

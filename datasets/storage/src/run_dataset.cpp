@@ -449,7 +449,7 @@ void writeMultibody(H5::Group& run, const Scenario& scenario, const MultibodyRec
 
 void writeFile(const std::string& file_path, const Scenario& scenario, const WalkResult& result,
                const FootstepClearances* clearances, const MultibodyRecord* multibody,
-               const GoalOutcome* goal) {
+               const GoalOutcome* goal, const PreparedRun* prepared) {
   // Closing the file closes every object still open and flushes them (a strong close): a write
   // that fails there (disk full) is an error of file.close(), not a message of a destructor
   // that the commit would never hear of.
@@ -467,6 +467,11 @@ void writeFile(const std::string& file_path, const Scenario& scenario, const Wal
 
   {
     H5::Group runs = file.createGroup("runs");
+    auto* recording = prepared && prepared->recording
+                          ? static_cast<ChunkRecording*>(prepared->recording.get())
+                          : nullptr;
+    if (recording) recording->replayed = 0;
+    const RecordingScope scope(recording, RecordingMode::kReplay);
     writeRunGroup(runs, scenario.name, scenario, result, clearances, multibody, goal);
   }
   try {
@@ -528,9 +533,25 @@ H5::Group writeRunGroup(H5::Group& runs, const std::string& group_name, const Sc
 
 }  // namespace detail
 
+PreparedRun prepareWalkDatasets(const Scenario& scenario, const wpg::WalkResult& result) {
+  checkRunInputs(scenario, result, nullptr, nullptr);
+  auto recording = std::make_shared<ChunkRecording>();
+  recording->partial = true;
+  {
+    const RecordingScope scope(recording.get(), RecordingMode::kRecord);
+    H5::Group placeholder;  // never used by HDF5 while recording
+    // The first datasets writeRunGroup writes, in its order.
+    writeTrajectory(placeholder, result.trajectory);
+    writeMpcLog(placeholder, result.trajectory);
+    writeObstacles(placeholder, scenario.request.obstacles);
+  }
+  return PreparedRun{recording};
+}
+
 void writeRunDataset(const std::string& path, const Scenario& scenario,
                      const wpg::WalkResult& result, const FootstepClearances* clearances,
-                     const MultibodyRecord* multibody, const GoalOutcome* goal) {
+                     const MultibodyRecord* multibody, const GoalOutcome* goal,
+                     const PreparedRun* prepared) {
   checkRunInputs(scenario, result, clearances, multibody);
   if (goal && !scenario.goal.enabled) {
     throw std::invalid_argument("writeRunDataset: a goal outcome for a scenario without a goal");
@@ -545,7 +566,7 @@ void writeRunDataset(const std::string& path, const Scenario& scenario,
     std::lock_guard<std::mutex> lock(hdf5Mutex());
     H5::Exception::dontPrint();  // errors become exceptions with messages, not stderr dumps
     try {
-      writeFile(temporary.path(), scenario, result, clearances, multibody, goal);
+      writeFile(temporary.path(), scenario, result, clearances, multibody, goal, prepared);
     } catch (const H5::Exception& error) {
       throw std::runtime_error(path + ": cannot write the HDF5 file (" + error.getFuncName() +
                                ": " + error.getDetailMsg() + ")");

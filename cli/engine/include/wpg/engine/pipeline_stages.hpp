@@ -60,6 +60,8 @@ struct WalkAndReplay {
   std::optional<ReplayOutcome> replay;
   std::string replay_failure;  // why the replay failed (one line); empty when it did not
   bool walk_succeeded = true;  // the walk's own success, before a failed replay was recorded
+  // The walk's datasets compressed while the replay ran (replay_threads > 1), for the writer.
+  std::optional<datasets::PreparedRun> prepared_walk;
 };
 WalkAndReplay runWalkAndReplay(const robots::RobotModel* model, const datasets::Scenario& scenario,
                                int replay_threads = 1);

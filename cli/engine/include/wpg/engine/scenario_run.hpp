@@ -47,6 +47,8 @@ struct RunResult {
   analysis::RunMetrics metrics;            // datasets/METRICS.md
   RunOutcome outcome = RunOutcome::kSucceeded;
   std::string failure;  // why it failed (one line), empty on success
+  // The walk's datasets compressed while the replay ran (WalkAndReplay), for writeRunDataset.
+  std::optional<datasets::PreparedRun> prepared_walk;
 
   // 0 when it succeeded, else 1: `wpg run`'s exit status and /batch/summary's exit_status.
   int exitStatus() const { return outcome == RunOutcome::kSucceeded ? 0 : 1; }

@@ -44,12 +44,6 @@ struct BatchRunRecord {
   std::vector<double> values;          // one per SummaryColumn, in the writer's order
 };
 
-// A run's datasets compressed ahead of writing (BatchDatasetWriter::prepare): the compression
-// (most of the writing time) then runs on the worker threads in parallel instead of inside the
-// writer, which HDF5 serializes.
-struct PreparedRun {
-  std::shared_ptr<void> recording;  // the chunks, in the writer's order (detail::ChunkRecording)
-};
 
 class BatchDatasetWriter {
  public:

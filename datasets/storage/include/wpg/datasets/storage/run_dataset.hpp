@@ -1,5 +1,6 @@
 #pragma once
 // One run, written to HDF5 (layout: datasets/SCHEMA.md, a contract with every reader).
+#include <memory>
 #include <mutex>
 #include <string>
 #include <vector>
@@ -81,6 +82,13 @@ struct MultibodyRecord {
   ChainTimeSummary chain_time;
 };
 
+// A run's datasets compressed ahead of writing (BatchDatasetWriter::prepare, or the walk's
+// part by prepareWalkDatasets): the compression (most of the writing time) then runs where
+// there is a core to spare instead of inside the writer, which HDF5 serializes.
+struct PreparedRun {
+  std::shared_ptr<void> recording;  // the chunks, in the writer's order (detail::ChunkRecording)
+};
+
 // Writes `result` of `scenario` to `path` (group /runs/<scenario.name>), atomically: the file
 // is written as a temporary file created exclusively under an unpredictable name in the same
 // folder (TemporaryOutput, output_file.hpp), then renamed over `path`; on any error, SIGINT or
@@ -105,10 +113,19 @@ struct MultibodyRecord {
 // `goal` (may be null: not a goal walk, or a goal walk replayed from its dataset, whose plans
 // are not read back) adds the goal's attributes and the /runs/<name>/plans group; only for a
 // scenario with a goal.
+//
+// `prepared` (may be null): the walk's datasets compressed ahead (prepareWalkDatasets, of
+// this scenario and result); written as they are, the rest compressed here.
 void writeRunDataset(const std::string& path, const Scenario& scenario,
                      const wpg::WalkResult& result, const FootstepClearances* clearances = nullptr,
                      const MultibodyRecord* multibody = nullptr,
-                     const GoalOutcome* goal = nullptr);
+                     const GoalOutcome* goal = nullptr, const PreparedRun* prepared = nullptr);
+
+// The walk's datasets of a run file (the trajectory, the NMPC log, the obstacles: the first
+// the writer writes), compressed without the file and without an HDF5 call, so that any
+// thread may compute them at any time: `wpg run` does it on a second core while the replay
+// runs, and writeRunDataset then only writes them. The same bytes as compressed there.
+PreparedRun prepareWalkDatasets(const Scenario& scenario, const wpg::WalkResult& result);
 
 // Debian's HDF5 is built without thread safety: every use of the HDF5 library in this process
 // (writeRunDataset takes it itself) must hold this lock, e.g. when batch workers write files.
