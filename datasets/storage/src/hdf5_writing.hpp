@@ -4,6 +4,7 @@
 // `frame`, `description` and `columns` attributes, chunked and compressed.
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -39,6 +40,10 @@ class ChunkRecording {
   // The first datasets only (prepareWalkDatasets): past them the replaying writer compresses
   // the rest itself.
   bool partial = false;
+  // The multibody fields' own recording, made on another thread while this one is replayed
+  // (a single run's file: writeRunDataset); returns it once made, or null (then compressed
+  // here). Called where the writer reaches them.
+  std::function<ChunkRecording*()> multibody_part;
 };
 
 enum class RecordingMode { kRecord, kReplay };

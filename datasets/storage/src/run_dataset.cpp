@@ -17,6 +17,8 @@
 #include <set>
 #include <stdexcept>
 #include <string>
+#include <system_error>
+#include <thread>
 #include <vector>
 
 #include <H5Cpp.h>
@@ -525,7 +527,17 @@ H5::Group writeRunGroup(H5::Group& runs, const std::string& group_name, const Sc
     }
   }
   writeChecks(run, given_checks ? *given_checks : *computed, clearances);
-  if (multibody) writeMultibody(run, scenario, *multibody);
+  if (multibody) {
+    ChunkRecording* replay = activeReplay();
+    ChunkRecording* part = replay && replay->multibody_part ? replay->multibody_part() : nullptr;
+    if (part) {
+      part->replayed = 0;
+      const RecordingScope scope(part, RecordingMode::kReplay);
+      writeMultibody(run, scenario, *multibody);
+    } else {
+      writeMultibody(run, scenario, *multibody);
+    }
+  }
   if (goal) writeGoal(run, scenario, *goal);  // and below, the follower's commands (replay too)
   if (scenario.goal.enabled) writeGoalCommands(run, result.trajectory);
   return run;
@@ -559,6 +571,46 @@ void writeRunDataset(const std::string& path, const Scenario& scenario,
   if (path.empty() || !fs::path(path).has_filename()) {
     throw std::invalid_argument("writeRunDataset: '" + path + "' is not a file path");
   }
+  // The multibody fields (a replayed run: most of the file's bytes) are compressed on another
+  // thread while this one writes everything before them; the same chunks as compressed here.
+  std::shared_ptr<ChunkRecording> walk;
+  if (prepared && prepared->recording) {
+    walk = std::static_pointer_cast<ChunkRecording>(prepared->recording);
+  } else {
+    walk = std::make_shared<ChunkRecording>();
+    walk->partial = true;  // nothing recorded: every dataset compressed here
+  }
+  ChunkRecording multibody_part;
+  std::thread compressing;
+  bool compressed = false;
+  if (multibody) {
+    try {
+      compressing = std::thread([&] {
+        try {
+          const RecordingScope scope(&multibody_part, RecordingMode::kRecord);
+          H5::Group placeholder;  // never used by HDF5 while recording
+          writeMultibody(placeholder, scenario, *multibody);
+          compressed = true;
+        } catch (...) {  // compressed by the writer instead, which reports its own errors
+        }
+      });
+    } catch (const std::system_error&) {  // no thread to spare
+    }
+  }
+  struct Joined {
+    std::thread& thread;
+    ChunkRecording& walk;
+    ~Joined() {
+      if (thread.joinable()) thread.join();
+      walk.multibody_part = nullptr;
+    }
+  } joined{compressing, *walk};
+  walk->multibody_part = [&]() -> ChunkRecording* {
+    if (compressing.joinable()) compressing.join();
+    return compressed ? &multibody_part : nullptr;
+  };
+  const PreparedRun with_multibody{walk};
+  prepared = &with_multibody;
   // Written beside the target under an unpredictable name, then renamed over it (atomic on one
   // file system); removed on failure and on SIGINT / SIGTERM (output_file.hpp).
   TemporaryOutput temporary(path);
