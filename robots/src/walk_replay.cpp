@@ -4,9 +4,9 @@
 #include <chrono>
 #include <cstdint>
 #include <cmath>
+#include <future>
 #include <stdexcept>
 #include <system_error>
-#include <thread>
 
 #include "wpg/dynamic_filter.hpp"
 #include "wpg/robots/momentum_zmp.hpp"
@@ -106,24 +106,13 @@ MultibodyValidation replayWalk(const RobotModel& model, const WalkingParameters&
   // With the filter, Simbody's systems for the validation are built on another thread while
   // this one computes the corrected motion (its constant joints are the unfiltered motion's:
   // the IK holds the same ones in the reference posture; run() checks and rebuilds if not).
-  std::thread building;
+  std::future<void> building;
   if (settings.filter && settings.threads > 1) {
     try {
-      building = std::thread([&] {
-        try {
-          replay.prepare(q);
-        } catch (...) {  // run() builds what is missing, and reports its own errors
-        }
-      });
+      building = std::async(std::launch::async, [&] { replay.prepare(q); });
     } catch (const std::system_error&) {  // no thread to spare: run() builds them
     }
   }
-  struct JoinOnExit {
-    std::thread& thread;
-    ~JoinOnExit() {
-      if (thread.joinable()) thread.join();
-    }
-  } join_building{building};
   auto start = Clock::now();
   if (settings.filter) {
     MomentumZmp momentum(model, w.gravity);
@@ -151,7 +140,12 @@ MultibodyValidation replayWalk(const RobotModel& model, const WalkingParameters&
     out.com_filtered.leftCols<2>() += correction;
     const double filter_time = seconds(start);
     out.q = solveIk(ik, model, walk, out.com_filtered, per_iteration, out, true);
-    if (building.joinable()) building.join();
+    if (building.valid()) {
+      try {
+        building.get();
+      } catch (...) {  // run() builds what is missing, and reports its own errors
+      }
+    }
     out.zmp_multibody_filtered = replay.run(out.q, dt, com_force).zmp;
     out.after = detail::zmpErrorStatistics(walk, out.zmp_multibody_filtered);
     // The whole-walk stages are spread evenly over the iterations (per-sample costs). The

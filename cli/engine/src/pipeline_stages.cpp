@@ -2,9 +2,10 @@
 #include "wpg/engine/pipeline_stages.hpp"
 
 #include <chrono>
+#include <future>
+#include <optional>
 #include <stdexcept>
 #include <system_error>
-#include <thread>
 
 #include "wpg/analysis/chain_timing.hpp"
 #include "wpg/analysis/run_summary.hpp"
@@ -145,33 +146,29 @@ WalkAndReplay runWalkAndReplay(const robots::RobotModel* model,
     // A single run with cores to spare: the walk's datasets are compressed on one of them
     // while the replay runs (the validation's Simbody part uses every core only at its end), so
     // that writing the file is shorter. The same bytes either way.
-    std::thread preparing;
+    std::future<datasets::PreparedRun> preparing;
     if (replay_threads > 1) {
       try {
-        preparing = std::thread([&] {
-          try {
-            run.prepared_walk = datasets::prepareWalkDatasets(scenario, result);
-          } catch (...) {  // the writer compresses them itself, and reports its own errors
-          }
-        });
+        preparing = std::async(std::launch::async,
+                               [&] { return datasets::prepareWalkDatasets(scenario, result); });
       } catch (const std::system_error&) {  // no thread to spare
       }
     }
-    struct JoinOnExit {
-      std::thread& thread;
-      void join() {
-        if (thread.joinable()) thread.join();
-      }
-      ~JoinOnExit() { join(); }
-    } join_preparing{preparing};
+    std::optional<std::string> replay_failure;
     try {
       run.replay = replayScenarioWalk(*model, scenario, result.trajectory, scenario.filter,
                                       replay_threads);
     } catch (const std::runtime_error& e) {
-      join_preparing.join();  // before the result's message changes
-      recordReplayFailure(run, e.what());
+      replay_failure = e.what();
     }
-    join_preparing.join();
+    if (preparing.valid()) {
+      try {
+        run.prepared_walk = preparing.get();
+      } catch (...) {  // the writer compresses them itself, and reports its own errors
+      }
+    }
+    // After the preparation has read the result: a failed replay changes its message.
+    if (replay_failure) recordReplayFailure(run, *replay_failure);
     return run;
   }
   robots::OnlineFilterLoopSettings settings;

@@ -18,7 +18,6 @@
 #include "hdf5_writing.hpp"
 #include "provenance_attributes.hpp"
 #include "run_group_writing.hpp"
-#include "wpg/datasets/storage/output_file.hpp"
 #include "wpg/datasets/storage/read_limits.hpp"
 #include "wpg/datasets/input/yaml_input.hpp"
 
@@ -171,8 +170,7 @@ std::unique_ptr<BatchDatasetWriter> BatchDatasetWriter::create(
   H5::Exception::dontPrint();
   try {
     Handles& h = *writer->handles_;
-    h.file = H5::H5File(path, H5F_ACC_TRUNC, H5::FileCreatPropList::DEFAULT, smallMetadataCache());
-    forgoWriteOutOnClose(path);
+    h.file = createHdf5File(path, smallMetadataCache());
     writeIntAttribute(h.file, "schema_version", kRunDatasetSchemaVersion);
     writeIntAttribute(h.file, "batch_schema_version", kBatchDatasetSchemaVersion);
     writeStringAttribute(h.file, "wpg_version", WPG_VERSION_STRING);

@@ -19,6 +19,7 @@
 #include <sys/resource.h>
 
 #include "hdf5_bounded_reading.hpp"
+#include "hdf5_writing.hpp"
 #include "wpg/datasets/input/input_error.hpp"
 #include "wpg/datasets/input/input_limits.hpp"
 #include "wpg/datasets/storage/output_file.hpp"
@@ -294,8 +295,7 @@ IndexReport writeBatchIndex(const std::string& output, const std::vector<std::st
     std::lock_guard<std::mutex> lock(hdf5Mutex());
     H5::Exception::dontPrint();
     try {
-      H5::H5File index(temporary.path(), H5F_ACC_TRUNC);
-      forgoWriteOutOnClose(temporary.path());
+      H5::H5File index = detail::createHdf5File(temporary.path());
       std::vector<std::string> names;
       {
         const H5::H5File source(first.path, H5F_ACC_RDONLY);

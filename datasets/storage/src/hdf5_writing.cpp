@@ -8,6 +8,8 @@
 #include <stdexcept>
 
 #include <libdeflate.h>
+
+#include "wpg/datasets/storage/output_file.hpp"
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
@@ -163,6 +165,12 @@ ChunkRecording* activeRecording() {
 }
 
 ChunkRecording* activeReplay() { return t_mode == RecordingMode::kReplay ? t_recording : nullptr; }
+
+H5::H5File createHdf5File(const std::string& path, const H5::FileAccPropList& access) {
+  H5::H5File file(path, H5F_ACC_TRUNC, H5::FileCreatPropList::DEFAULT, access);
+  forgoWriteOutOnClose(path);
+  return file;
+}
 
 H5::Group createGroup(H5::Group& parent, const std::string& name) {
   if (activeRecording()) return H5::Group();

@@ -4,7 +4,6 @@
 // `frame`, `description` and `columns` attributes, chunked and compressed.
 #include <cstddef>
 #include <cstdint>
-#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -40,10 +39,6 @@ class ChunkRecording {
   // The first datasets only (prepareWalkDatasets): past them the replaying writer compresses
   // the rest itself.
   bool partial = false;
-  // The multibody fields' own recording, made on another thread while this one is replayed
-  // (a single run's file: writeRunDataset); returns it once made, or null (then compressed
-  // here). Called where the writer reaches them.
-  std::function<ChunkRecording*()> multibody_part;
 };
 
 enum class RecordingMode { kRecord, kReplay };
@@ -66,6 +61,12 @@ class RecordingScope {
 ChunkRecording* activeRecording();
 // The recording of this thread when it is replaying (nullptr otherwise).
 ChunkRecording* activeReplay();
+
+// A new HDF5 file at `path` (H5F_ACC_TRUNC, replacing what is there), without ext4's forced
+// write-out at its close (forgoWriteOutOnClose, output_file.hpp): every file wpg writes is
+// created here. The caller holds hdf5Mutex().
+H5::H5File createHdf5File(const std::string& path,
+                          const H5::FileAccPropList& access = H5::FileAccPropList::DEFAULT);
 
 // parent.createGroup(name); a placeholder while recording.
 H5::Group createGroup(H5::Group& parent, const std::string& name);

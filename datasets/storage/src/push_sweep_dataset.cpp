@@ -52,9 +52,7 @@ void writeFile(const std::string& path, const PushSweepFile& sweep) {
   // the commit would never hear of (the partial file was renamed into place).
   H5::FileAccPropList access;
   access.setFcloseDegree(H5F_CLOSE_STRONG);
-  auto owned = std::make_unique<H5::H5File>(path, H5F_ACC_TRUNC, H5::FileCreatPropList::DEFAULT,
-                                            access);
-  forgoWriteOutOnClose(path);
+  auto owned = std::make_unique<H5::H5File>(detail::createHdf5File(path, access));
   H5::H5File& file = *owned;
   detail::writeStringAttribute(file, "created_by", "wpg push-sweep");
   detail::writeStringAttribute(file, "wpg_version", WPG_VERSION_STRING);

@@ -13,12 +13,12 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <future>
 #include <memory>
 #include <set>
 #include <stdexcept>
 #include <string>
 #include <system_error>
-#include <thread>
 #include <vector>
 
 #include <H5Cpp.h>
@@ -451,15 +451,14 @@ void writeMultibody(H5::Group& run, const Scenario& scenario, const MultibodyRec
 
 void writeFile(const std::string& file_path, const Scenario& scenario, const WalkResult& result,
                const FootstepClearances* clearances, const MultibodyRecord* multibody,
-               const GoalOutcome* goal, const PreparedRun* prepared) {
+               const GoalOutcome* goal, const PreparedRun* prepared,
+               PendingRecording* multibody_chunks) {
   // Closing the file closes every object still open and flushes them (a strong close): a write
   // that fails there (disk full) is an error of file.close(), not a message of a destructor
   // that the commit would never hear of.
   H5::FileAccPropList access;
   access.setFcloseDegree(H5F_CLOSE_STRONG);
-  auto owned = std::make_unique<H5::H5File>(file_path, H5F_ACC_TRUNC,
-                                            H5::FileCreatPropList::DEFAULT, access);
-  forgoWriteOutOnClose(file_path);
+  auto owned = std::make_unique<H5::H5File>(createHdf5File(file_path, access));
   H5::H5File& file = *owned;
   writeIntAttribute(file, "schema_version", kRunDatasetSchemaVersion);
   writeStringAttribute(file, "wpg_version", WPG_VERSION_STRING);
@@ -474,7 +473,8 @@ void writeFile(const std::string& file_path, const Scenario& scenario, const Wal
                           : nullptr;
     if (recording) recording->replayed = 0;
     const RecordingScope scope(recording, RecordingMode::kReplay);
-    writeRunGroup(runs, scenario.name, scenario, result, clearances, multibody, goal);
+    writeRunGroup(runs, scenario.name, scenario, result, clearances, multibody, goal, nullptr,
+                  multibody_chunks);
   }
   try {
     file.close();  // inside the try of the caller: a failed flush is an error, not a warning
@@ -502,7 +502,7 @@ void checkRunInputs(const Scenario& scenario, const wpg::WalkResult& result,
 H5::Group writeRunGroup(H5::Group& runs, const std::string& group_name, const Scenario& scenario,
                         const WalkResult& result, const FootstepClearances* clearances,
                         const MultibodyRecord* multibody, const GoalOutcome* goal,
-                        const DatasetChecks* given_checks) {
+                        const DatasetChecks* given_checks, PendingRecording* multibody_chunks) {
   H5::Group run = createGroup(runs, group_name);
   writeStringAttribute(run, "algorithm",
                        generatorAlgorithmName(scenario.request.generator.algorithm));
@@ -528,11 +528,15 @@ H5::Group writeRunGroup(H5::Group& runs, const std::string& group_name, const Sc
   }
   writeChecks(run, given_checks ? *given_checks : *computed, clearances);
   if (multibody) {
-    ChunkRecording* replay = activeReplay();
-    ChunkRecording* part = replay && replay->multibody_part ? replay->multibody_part() : nullptr;
-    if (part) {
-      part->replayed = 0;
-      const RecordingScope scope(part, RecordingMode::kReplay);
+    std::unique_ptr<ChunkRecording> chunks;
+    if (multibody_chunks && multibody_chunks->valid()) {
+      try {
+        chunks = multibody_chunks->get();
+      } catch (...) {  // compressed below instead, which reports its own errors
+      }
+    }
+    if (chunks) {
+      const RecordingScope scope(chunks.get(), RecordingMode::kReplay);
       writeMultibody(run, scenario, *multibody);
     } else {
       writeMultibody(run, scenario, *multibody);
@@ -573,44 +577,19 @@ void writeRunDataset(const std::string& path, const Scenario& scenario,
   }
   // The multibody fields (a replayed run: most of the file's bytes) are compressed on another
   // thread while this one writes everything before them; the same chunks as compressed here.
-  std::shared_ptr<ChunkRecording> walk;
-  if (prepared && prepared->recording) {
-    walk = std::static_pointer_cast<ChunkRecording>(prepared->recording);
-  } else {
-    walk = std::make_shared<ChunkRecording>();
-    walk->partial = true;  // nothing recorded: every dataset compressed here
-  }
-  ChunkRecording multibody_part;
-  std::thread compressing;
-  bool compressed = false;
+  PendingRecording multibody_chunks;
   if (multibody) {
     try {
-      compressing = std::thread([&] {
-        try {
-          const RecordingScope scope(&multibody_part, RecordingMode::kRecord);
-          H5::Group placeholder;  // never used by HDF5 while recording
-          writeMultibody(placeholder, scenario, *multibody);
-          compressed = true;
-        } catch (...) {  // compressed by the writer instead, which reports its own errors
-        }
+      multibody_chunks = std::async(std::launch::async, [&] {
+        auto chunks = std::make_unique<ChunkRecording>();
+        const RecordingScope scope(chunks.get(), RecordingMode::kRecord);
+        H5::Group placeholder;  // never used by HDF5 while recording
+        writeMultibody(placeholder, scenario, *multibody);
+        return chunks;
       });
-    } catch (const std::system_error&) {  // no thread to spare
+    } catch (const std::system_error&) {  // no thread to spare: compressed by the writer
     }
   }
-  struct Joined {
-    std::thread& thread;
-    ChunkRecording& walk;
-    ~Joined() {
-      if (thread.joinable()) thread.join();
-      walk.multibody_part = nullptr;
-    }
-  } joined{compressing, *walk};
-  walk->multibody_part = [&]() -> ChunkRecording* {
-    if (compressing.joinable()) compressing.join();
-    return compressed ? &multibody_part : nullptr;
-  };
-  const PreparedRun with_multibody{walk};
-  prepared = &with_multibody;
   // Written beside the target under an unpredictable name, then renamed over it (atomic on one
   // file system); removed on failure and on SIGINT / SIGTERM (output_file.hpp).
   TemporaryOutput temporary(path);
@@ -618,7 +597,8 @@ void writeRunDataset(const std::string& path, const Scenario& scenario,
     std::lock_guard<std::mutex> lock(hdf5Mutex());
     H5::Exception::dontPrint();  // errors become exceptions with messages, not stderr dumps
     try {
-      writeFile(temporary.path(), scenario, result, clearances, multibody, goal, prepared);
+      writeFile(temporary.path(), scenario, result, clearances, multibody, goal, prepared,
+                &multibody_chunks);
     } catch (const H5::Exception& error) {
       throw std::runtime_error(path + ": cannot write the HDF5 file (" + error.getFuncName() +
                                ": " + error.getDetailMsg() + ")");

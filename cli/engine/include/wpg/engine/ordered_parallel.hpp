@@ -58,7 +58,6 @@ void runOrdered(std::size_t count, int threads,
   std::vector<std::vector<Outcome>> spent;     // delivered, by the worker that made them
   std::size_t next_job = 0, next_delivery = 0;
   bool delivering = false;
-  int running = 0;  // worker threads other than the caller still in their loop
   std::exception_ptr error;
 
   // Outcomes whose turn has come (consecutive from next_delivery), counted up to `enough`.
@@ -99,7 +98,7 @@ void runOrdered(std::size_t count, int threads,
     progress_signal.notify_all();
   };
 
-  // Runs jobs until none is left (or an error); false when the hand-out has ended.
+  // Runs jobs until none is left to hand out (or an error).
   const auto runJobs = [&](int worker_index) {
     while (true) {
       std::vector<Outcome> garbage;
@@ -137,9 +136,6 @@ void runOrdered(std::size_t count, int threads,
       go_signal.wait(lock, [&] { return go; });
     }
     runJobs(worker_index);
-    std::lock_guard<std::mutex> lock(mutex);
-    --running;
-    progress_signal.notify_all();
   };
 
   const std::size_t wanted = threads < 1 ? 1 : static_cast<std::size_t>(threads);
@@ -149,14 +145,8 @@ void runOrdered(std::size_t count, int threads,
   pool.reserve(static_cast<std::size_t>(count_threads));
   for (int t = 1; t < count_threads && !error; ++t) {
     try {
-      {
-        std::lock_guard<std::mutex> lock(mutex);
-        ++running;
-      }
       pool.emplace_back(worker, t);
     } catch (const std::system_error& e) {
-      std::lock_guard<std::mutex> lock(mutex);
-      --running;
       error = std::make_exception_ptr(std::runtime_error(
           "cannot start worker thread " + std::to_string(t + 1) + " of " +
           std::to_string(count_threads) + " (-j): " + e.what()));
@@ -182,14 +172,15 @@ void runOrdered(std::size_t count, int threads,
   }
   runJobs(0);  // the calling thread is worker 0
   {
-    // The others' last outcomes, delivered here as they come.
+    // Every job is handed out (or an error stopped the hand-out): the others' last outcomes,
+    // delivered here as they come.
     std::unique_lock<std::mutex> lock(mutex);
     while (true) {
       if (!delivering && !error) {
         delivering = true;
         deliverReady(lock, 0);
       }
-      if (error || (running == 0 && !delivering && next_delivery == next_job)) break;
+      if (error || (!delivering && next_delivery == count)) break;
       progress_signal.wait(lock);
     }
   }
