@@ -72,7 +72,9 @@ class ThreadExecutor : public StudyExecutor {
     claim = std::make_unique<datasets::OutputClaim>(path);
     // A file held by another process was refused above: what is left to judge is damage.
     const bool existing = output.resume && !claim->created();
-    if (existing && !datasets::isDamagedHdf5File(path)) {
+    // Opens the file and visits every object header: once.
+    const bool damaged = existing && datasets::isDamagedHdf5File(path);
+    if (existing && !damaged) {
       // A slice finishes its own shard only (and a whole batch is not finished as a slice).
       const std::string label = datasets::readShardContents(path).label;
       if (label != shard_label) {
@@ -83,7 +85,7 @@ class ThreadExecutor : public StudyExecutor {
             " (file left as it is)");
       }
     }
-    if (existing && datasets::isDamagedHdf5File(path)) {
+    if (damaged) {
       // Nothing of it can be trusted. Kept aside, not removed, and the study starts again (the
       // same runs give the same file), under a new claim on the new file.
       observer.movedDamagedFile(path, datasets::moveDamagedFileAside(path), false);
