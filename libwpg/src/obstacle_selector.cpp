@@ -5,11 +5,20 @@
 #include "wpg/obstacle_tangent.hpp"
 
 namespace wpg {
+namespace {
+
+// [m] how far on the other side of an obstacle's centre line the feet must be for the robot to
+// pass it on that side instead: a little more than a step's sway, so that the feet of a robot
+// that walks along the line do not switch sides at every step.
+constexpr double kSideSwitch = 0.1;
+
+}  // namespace
 
 void ObstacleSelector::set(std::vector<Obstacle> obstacles) {
   ObstacleSet validated(std::move(obstacles));  // throws before anything changes
   obstacles_ = std::move(validated);
   order_.assign(obstacles_.obstacleCount(), {0.0, 0});
+  route_.assign(obstacles_.obstacleCount(), {0.0, 0});
   side_.assign(obstacles_.obstacleCount(), 0);
   normal_.assign(obstacles_.obstacleCount(), Eigen::Vector2d::Zero());
 }
@@ -34,41 +43,86 @@ void ObstacleSelector::select(const Eigen::Vector2d& support, double reach,
   for (int k = 0; k < kept; ++k) slots(k) = order_[k].second;
 }
 
-void ObstacleSelector::tangentNormals(const Eigen::Vector2d& com,
-                                      const Eigen::Vector2d& feet_middle,
-                                      const Eigen::Vector2d& direction, double foot_radius,
-                                      double clearance,
-                                      const Eigen::Ref<const Eigen::VectorXi>& slots,
-                                      Eigen::Ref<Eigen::Matrix2Xd> normals) {
+void ObstacleSelector::borderNormals(const Eigen::Vector2d& com,
+                                     const Eigen::Vector2d& feet_middle,
+                                     const Eigen::Vector2d& direction,
+                                     const WalkingParameters& parameters, double clearance,
+                                     const Eigen::Ref<const Eigen::VectorXi>& slots,
+                                     Eigen::Ref<Eigen::Matrix2Xd> normals) {
   normals.setZero();
-  // Among other obstacles a circle keeps the row at the step: their half-planes, each turned
-  // towards the command on its own, may leave no room between them (obstacle_cluttered: rows
-  // relaxed, a step 4 cm inside a margin).
-  int in_reach = 0;
-  for (int k = 0; k < slots.size(); ++k) in_reach += slots(k) >= 0 ? 1 : 0;
-  if (in_reach > 1) return;
+  const double length = direction.norm();
+  if (length <= 1e-12) {  // no command: each border faces the CoM
+    for (int k = 0; k < slots.size(); ++k) {
+      if (slots(k) < 0) continue;
+      Eigen::Vector2d facing;
+      obstacles_.signedDistance(slots(k), com, &facing);
+      normals.col(k) = facing;
+    }
+    return;
+  }
+  const Eigen::Vector2d d = direction / length;
+  const Eigen::Vector2d left(-d.y(), d.x());
+  // The slots in the order the robot meets their obstacles along the command (the centres'
+  // positions along d); an insertion sort of at most max_obstacles_in_qp slots.
+  int count = 0;
   for (int k = 0; k < slots.size(); ++k) {
-    const int index = slots(k);
-    if (index < 0) continue;
+    if (slots(k) < 0) continue;
+    const double along = (obstacles_.reachCircle(slots(k)).head<2>() - com).dot(d);
+    int at = count++;
+    for (; at > 0 && route_[at - 1].first > along; --at) route_[at] = route_[at - 1];
+    route_[at] = {along, k};
+  }
+  // The route: the CoM, then the point beside each obstacle not yet passed where the robot
+  // will pass it. Each obstacle's border is turned as far as keeps the route point before it
+  // `clearance` inside the free side: the next obstacle's border leaves the way round the
+  // current one open (a border turned from the CoM alone may cut across it: a staggered
+  // pair then closes in a wedge in front of the robot). An obstacle whose centre the CoM has
+  // passed turns its border from the CoM (on towards the command, behind the robot).
+  Eigen::Vector2d route_point = com;
+  for (int r = 0; r < count; ++r) {
+    const int k = route_[r].second, index = slots(k);
     const Obstacle& obstacle = obstacles_.obstacle(index);
-    if (obstacle.type != ObstacleType::kCircle) continue;
+    const bool passed = route_[r].first < 0.0;
+    const Eigen::Vector2d& from = passed ? com : route_point;
+    const Eigen::Vector2d centre = obstacles_.reachCircle(index).head<2>();
+    // The side: where the feet are when the obstacle comes within reach, kept until the feet
+    // are clearly (kSideSwitch) on the other side of its centre line. Other obstacles may push
+    // the robot across that line (the way round the one before it): going back across to keep
+    // a side chosen from afar would be a detour, or, along a border square to the command in
+    // front of it, no way at all (measured on a staggered pair: 15 s sliding sideways).
+    const double offset = left.dot(feet_middle - centre);
+    if (side_[index] * offset < -kSideSwitch) side_[index] = 0;
     const bool fresh = side_[index] == 0;
-    if (fresh) side_[index] = obstacleSide(obstacle.center, feet_middle, direction);
-    const double radius = obstacle.radius + obstacle.margin + foot_radius;
-    const Eigen::Vector2d candidate =
-        commandTangentNormal(obstacle.center, radius, com, direction, side_[index], clearance);
+    if (fresh) side_[index] = obstacleSide(centre, feet_middle, d);
+    const int side = side_[index];
+    const double radius = obstacles_.coreRadius(index) + stepCentreMargin(obstacle, parameters);
+    const std::vector<Eigen::Vector2d>& core = obstacles_.core(index);
+    const auto borderFrom = [&](const Eigen::Vector2d& point) {
+      Eigen::Vector2d facing;
+      obstacles_.signedDistance(index, point, &facing);
+      return borderNormal(core, radius, point, d, side, clearance, facing);
+    };
+    // A border must leave the robot where it is on its free side with room for a step (half
+    // the clearance): one turned from a route point ahead that does not is turned from the
+    // CoM, and a border kept from the samples before that does not is given up.
+    const auto leavesRoom = [&](const Eigen::Vector2d& n) {
+      return n.dot(com) - borderOffset(core, radius, n) >= 0.5 * clearance;
+    };
+    Eigen::Vector2d candidate = borderFrom(from);
+    if (&from != &com && !leavesRoom(candidate)) candidate = borderFrom(com);
     // The border only ever turns towards the command (a ratchet): recomputed beside a CoM that
     // walked straight on, it would recede in front of the robot at every sample, and the robot
-    // would walk up to the circle instead of sliding along the border.
-    const double length = direction.norm();
-    if (fresh || length <= 1e-12) {
+    // would walk up to the obstacle instead of sliding along the border.
+    if (fresh || !leavesRoom(normal_[index]) ||
+        borderProgress(candidate, d, side) >= borderProgress(normal_[index], d, side))
       normal_[index] = candidate;
-    } else {
-      const Eigen::Vector2d wanted =
-          side_[index] * Eigen::Vector2d(-direction.y(), direction.x()) / length;
-      if (candidate.dot(wanted) >= normal_[index].dot(wanted)) normal_[index] = candidate;
-    }
     normals.col(k) = normal_[index];
+    if (!passed) {
+      // abreast of the centre, `clearance` beyond the grown shape on the passing side
+      const Eigen::Vector2d out = side * left;
+      const double beside = borderOffset(core, radius, out) - out.dot(centre) + clearance;
+      route_point = centre + beside * out;
+    }
   }
 }
 

@@ -7,9 +7,20 @@ namespace wpg {
 namespace {
 
 constexpr double kSideTie = 0.01;  // [m] offsets within this of the line count as a tie (left)
+constexpr double kPi = 3.14159265358979323846;
 
 double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
   return a.x() * b.y() - a.y() * b.x();
+}
+
+// The signed angle from a to b (counter-clockwise positive), in (-pi, pi].
+double angleFrom(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  return std::atan2(cross(a, b), a.dot(b));
+}
+
+Eigen::Vector2d rotated(const Eigen::Vector2d& v, double angle) {
+  const double c = std::cos(angle), s = std::sin(angle);
+  return {c * v.x() - s * v.y(), s * v.x() + c * v.y()};
 }
 
 }  // namespace
@@ -23,60 +34,94 @@ int obstacleSide(const Eigen::Vector2d& center, const Eigen::Vector2d& robot,
   return offset >= -kSideTie ? 1 : -1;
 }
 
-Eigen::Vector2d commandTangentNormal(const Eigen::Vector2d& center, double radius,
-                                     const Eigen::Vector2d& com, const Eigen::Vector2d& direction,
-                                     int side, double clearance) {
-  const Eigen::Vector2d d = com - center;
-  const double distance = d.norm();
-  const double length = direction.norm();
-  if (distance <= 1e-12) {  // CoM at the centre (inside: the row is violated whatever n is)
-    if (length <= 1e-12) return Eigen::Vector2d::UnitX();
-    return side * Eigen::Vector2d(-direction.y(), direction.x()) / length;
+double borderProgress(const Eigen::Vector2d& normal, const Eigen::Vector2d& direction, int side) {
+  // The turn left from n to d is clockwise (negative) on the left side, counter-clockwise on
+  // the right: side * that turn is -pi at n = -d, -pi/2 at the side's normal, 0 at d; cut at
+  // the other side's normal (above pi/2: a turn the long way round).
+  double progress = side * angleFrom(normal, direction);
+  if (progress > 0.5 * kPi) progress -= 2.0 * kPi;
+  return progress;
+}
+
+double borderOffset(const std::vector<Eigen::Vector2d>& core, double radius,
+                    const Eigen::Vector2d& normal) {
+  double support = normal.dot(core.front());
+  for (const Eigen::Vector2d& v : core) support = std::max(support, normal.dot(v));
+  return support + radius;
+}
+
+Eigen::Vector2d borderNormal(const std::vector<Eigen::Vector2d>& core, double radius,
+                             const Eigen::Vector2d& com, const Eigen::Vector2d& direction,
+                             int side, double clearance, const Eigen::Vector2d& facing) {
+  if (direction.norm() <= 1e-12) return facing;
+  // The arc of normals whose border passes `clearance` beside the CoM, as angles from
+  // `facing` [lo, hi]: the intersection of one arc per core point v, centred on the direction
+  // from v to the CoM, acos((radius + clearance) / |com - v|) wide on each side. When it is not
+  // empty the CoM is at least radius + clearance from the core and `facing` is inside it
+  // (facing . (com - v) >= the distance for every v): every point's arc holds 0, within a
+  // right angle of it, so no angle wraps.
+  double lo = -kPi, hi = kPi;
+  for (const Eigen::Vector2d& v : core) {
+    const Eigen::Vector2d away = com - v;
+    const double distance = away.norm();
+    if (distance <= radius + clearance) return facing;
+    const double centre = angleFrom(facing, away);
+    const double half_width = std::acos((radius + clearance) / distance);
+    lo = std::max(lo, centre - half_width);
+    hi = std::min(hi, centre + half_width);
   }
-  const Eigen::Vector2d facing = d / distance;  // the tangent facing the CoM
-  if (length <= 1e-12 || distance <= radius + clearance) return facing;
-  // The wanted normal: perpendicular to the command, on the passing side (border parallel to
-  // the command). The normals whose border passes at least `clearance` beside the CoM,
-  // n.(com - c) >= radius + clearance, are those within acos((radius + clearance) / distance)
-  // of `facing`: turn `facing` towards the wanted one, at most that far.
-  const Eigen::Vector2d wanted = side * Eigen::Vector2d(-direction.y(), direction.x()) / length;
-  const double turn = std::atan2(cross(facing, wanted), facing.dot(wanted));
-  const double max_turn = std::acos((radius + clearance) / distance);
-  const double a = std::clamp(turn, -max_turn, max_turn);
-  const double c = std::cos(a), s = std::sin(a);
-  return {c * facing.x() - s * facing.y(), s * facing.x() + c * facing.y()};
+  if (lo > hi) return facing;
+  // Turn from `facing` towards d through the passing side: clockwise when passing on the left
+  // (side +1: from -d through the left normal to d), counter-clockwise on the right. The turn
+  // that brings facing to d that way is side * progress(facing) (progress 0 at d).
+  const double wanted = side * borderProgress(facing, direction, side);
+  return rotated(facing, std::clamp(wanted, lo, hi));
 }
 
 void turnReferenceAlongBorders(const Eigen::Ref<const Eigen::Matrix2Xd>& normals,
+                               const Eigen::Ref<const Eigen::VectorXd>& heading_cos,
+                               const Eigen::Ref<const Eigen::VectorXd>& heading_sin,
                                double max_sideways_speed, Eigen::Ref<Eigen::VectorXd> velocity_x,
                                Eigen::Ref<Eigen::VectorXd> velocity_y) {
+  constexpr double kInside = 1e-12;  // n.u >= -this: u drives into no border
+  const auto drivesIntoNone = [&](const Eigen::Vector2d& u) {
+    for (int k = 0; k < normals.cols(); ++k)
+      if (normals.col(k).dot(u) < -kInside * u.norm()) return false;
+    return true;
+  };
   for (int j = 0; j < velocity_x.size(); ++j) {
-    const Eigen::Vector2d command(velocity_x(j), velocity_y(j));
-    Eigen::Vector2d v = command;
+    const Eigen::Vector2d v(velocity_x(j), velocity_y(j));
     const double speed = v.norm();
-    bool turned = false;
+    if (speed <= 1e-12 || drivesIntoNone(v)) continue;
+    // The nearest direction of the cone {u : n_k . u >= 0 for every border}: in the plane it
+    // lies on one of the borders' lines, the projection of v on it nearest to v among those
+    // that drive into no other border.
+    Eigen::Vector2d best = Eigen::Vector2d::Zero();
+    double best_distance = speed;
     for (int k = 0; k < normals.cols(); ++k) {
       const Eigen::Vector2d n = normals.col(k);
       const double into = n.dot(v);
-      if (into < 0.0) {  // n is a unit vector (or zero: no change)
-        v -= into * n;
-        turned = true;
+      if (!(into < 0.0)) continue;  // zero columns and borders it does not drive into
+      const Eigen::Vector2d u = v - into * n;
+      if (-into < best_distance && u.norm() > 1e-12 && drivesIntoNone(u)) {
+        best = u;
+        best_distance = -into;
       }
     }
-    const double length = v.norm();
-    if (!turned || length <= 1e-12) continue;
-    // Along the border at the commanded speed, unless its part across the command then exceeds
-    // what the gait can walk sideways: asked for more, the QP buys the missing sideways speed
-    // with the outward step's length (the feasibility polygon's slanted edges) and slides along
-    // a steep border more slowly than along one it can follow.
+    const double length = best.norm();
+    if (length <= 1e-12) continue;
+    // At the reference's speed, unless its part across the robot's heading then exceeds what
+    // the gait can walk sideways: asked for more, the QP buys the missing sideways speed with
+    // the outward step's length (the feasibility polygon's slanted edges) and slides along a
+    // steep border more slowly than along one it can follow.
     double target = speed;
-    const double sine = std::abs(cross(command, v)) / (speed * length);
-    if (max_sideways_speed > 0.0 && sine * speed > max_sideways_speed) {
+    const Eigen::Vector2d across(-heading_sin(j), heading_cos(j));
+    const double sine = std::abs(across.dot(best)) / length;
+    if (max_sideways_speed > 0.0 && sine * speed > max_sideways_speed)
       target = max_sideways_speed / sine;
-    }
-    v *= target / length;
-    velocity_x(j) = v.x();
-    velocity_y(j) = v.y();
+    best *= target / length;
+    velocity_x(j) = best.x();
+    velocity_y(j) = best.y();
   }
 }
 

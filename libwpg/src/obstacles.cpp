@@ -74,6 +74,9 @@ ObstacleSet::ObstacleSet(std::vector<Obstacle> obstacles) : obstacles_(std::move
     const Obstacle& obstacle = obstacles_[i];
     obstacle.validate("obstacles[" + std::to_string(i) + "]");
     vertices_.push_back(obstacle.worldVertices());
+    core_.push_back(obstacle.type == ObstacleType::kCircle
+                        ? std::vector<Eigen::Vector2d>{obstacle.center}
+                        : vertices_.back());
     Eigen::Vector2d center;
     double radius = 0.0;
     boundingCircle(obstacle, &center, &radius);

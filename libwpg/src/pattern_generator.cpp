@@ -184,24 +184,22 @@ const MpcIterationLog& PatternGenerator::update(double time, const Eigen::Vector
   }
   problem_->obstacle_normal.setZero();
   if (w.obstacle_linearization == ObstacleLinearization::kCommandTangent && !gait_.standing()) {
-    // The circles' half-planes of this sample (wpg/obstacle_tangent.hpp): from the CoM, the
-    // command's direction at this sample (J1's world reference) and the passing side, chosen
-    // from the point between the feet; then J1's reference turned along the borders it drives
-    // into, so that sliding round is what the cost asks for, no faster sideways than the gait
-    // can walk.
+    // The obstacles' half-planes of this sample (wpg/obstacle_tangent.hpp): from the CoM, the
+    // command's direction at this sample (J1's world reference) and each obstacle's passing
+    // side, chosen from the point between the feet; then J1's reference turned along the
+    // borders it drives into, so that sliding round is what the cost asks for.
     const Eigen::Vector2d feet_middle =
         0.5 * (gait_.footPose(FootSide::kLeft) + gait_.footPose(FootSide::kRight)).head<2>();
-    obstacles_.tangentNormals(Eigen::Vector2d(com_x_(0), com_y_(0)), feet_middle,
-                              Eigen::Vector2d(problem_->velocity_x(0), problem_->velocity_y(0)),
-                              w.obstacle_foot_radius, tangentClearance(w),
-                              problem_->obstacle_slot, problem_->obstacle_normal);
-    // The sideways limit is the straight gait's: a turning robot yaws its feet, and with them
-    // the feasibility polygon (eq. 14), towards the border, and is not held to it (with the
-    // limit, experiment B stopped 6 cm further from its obstacle and the goal walks reached
-    // their goals up to 1.6 s later).
-    const double sideways_limit = command.z() == 0.0 ? w.gaitSidewaysSpeed() : 0.0;
-    turnReferenceAlongBorders(problem_->obstacle_normal, sideways_limit,
-                              problem_->velocity_x, problem_->velocity_y);
+    obstacles_.borderNormals(Eigen::Vector2d(com_x_(0), com_y_(0)), feet_middle,
+                             Eigen::Vector2d(problem_->velocity_x(0), problem_->velocity_y(0)),
+                             w, tangentClearance(w), problem_->obstacle_slot,
+                             problem_->obstacle_normal);
+    // Sideways no faster than the gait walks (in the robot's frame, where its reach is), or
+    // than the command itself asks.
+    const double sideways_limit = std::max(w.gaitSidewaysSpeed(), std::abs(command.y()));
+    turnReferenceAlongBorders(problem_->obstacle_normal, references_.headingCos(),
+                              references_.headingSin(), sideways_limit, problem_->velocity_x,
+                              problem_->velocity_y);
   }
   references_.addSway(*problem_);
 

@@ -1,9 +1,12 @@
-// The command_tangent linearization of circle obstacles (wpg/obstacle_tangent.hpp): which
-// half-plane, which side, how J1's reference is turned, and that the selector's border only
-// turns towards the command.
+// The command_tangent linearization of the obstacle rows (wpg/obstacle_tangent.hpp): which
+// half-plane for circles, boxes and polygons, which side, how J1's reference is turned, and
+// that the selector's border only turns towards the command, for one obstacle or several.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
+#include <utility>
+#include <vector>
 
 #include "wpg/obstacle_selector.hpp"
 #include "wpg/obstacle_tangent.hpp"
@@ -16,10 +19,22 @@ using Eigen::Vector2d;
 const Vector2d kCenter(1.4, 0.0);
 const double kRadius = 0.63;      // grown circle [m]
 const double kClearance = 0.3;    // CoM from the border [m]
+const Vector2d kForward(0.2, 0.0);
+
+// cos and sin of a heading of 0 for `n` samples.
+std::pair<Eigen::VectorXd, Eigen::VectorXd> straight(int n) {
+  return {Eigen::VectorXd::Ones(n), Eigen::VectorXd::Zero(n)};
+}
+
+// A circle's border: its centre, grown by kRadius.
+Vector2d circleBorder(const Vector2d& com, const Vector2d& direction, int side) {
+  return wpg::borderNormal({kCenter}, kRadius, com, direction, side, kClearance,
+                           (com - kCenter).normalized());
+}
 
 TEST(ObstacleTangent, ObstacleAheadGivesATangentTurnedTowardsThePassingSide) {
   const Vector2d com(0.0, 0.0);
-  const Vector2d n = wpg::commandTangentNormal(kCenter, kRadius, com, {0.2, 0.0}, +1, kClearance);
+  const Vector2d n = circleBorder(com, kForward, +1);
   EXPECT_NEAR(n.norm(), 1.0, 1e-12);
   // the CoM keeps exactly `clearance` from the border, which is turned to the left (n has a
   // positive y: the free side is up-left) and still faces the robot (n.x < 0)
@@ -27,21 +42,30 @@ TEST(ObstacleTangent, ObstacleAheadGivesATangentTurnedTowardsThePassingSide) {
   EXPECT_GT(n.y(), 0.0);
   EXPECT_LT(n.x(), 0.0);
   // the other side is the mirror image
-  const Vector2d m = wpg::commandTangentNormal(kCenter, kRadius, com, {0.2, 0.0}, -1, kClearance);
+  const Vector2d m = circleBorder(com, kForward, -1);
   EXPECT_NEAR(m.x(), n.x(), 1e-12);
   EXPECT_NEAR(m.y(), -n.y(), 1e-12);
 }
 
-TEST(ObstacleTangent, CommandLineClearOfTheCircleGivesABorderAlongTheCommand) {
-  const Vector2d com(0.5, 1.2);  // abreast-ish, more than r + clearance to the left
-  const Vector2d n = wpg::commandTangentNormal(kCenter, kRadius, com, {0.2, 0.0}, +1, kClearance);
-  EXPECT_NEAR(n.x(), 0.0, 1e-12);
-  EXPECT_NEAR(n.y(), 1.0, 1e-12);
+// Abreast of the circle (its CoM well clear of it), the border turns past the command's line
+// towards the command (behind the robot) as far as keeps it `clearance` beside the CoM: the
+// space ahead and across is free for the next obstacle's way round.
+TEST(ObstacleTangent, AbreastOfTheCircleTheBorderTurnsBehindTheRobot) {
+  const Vector2d com(1.4, 1.2);
+  const Vector2d n = circleBorder(com, kForward, +1);
+  EXPECT_NEAR(n.norm(), 1.0, 1e-12);
+  EXPECT_GT(n.x(), 0.0);  // facing forward: walking on along +x moves away from it
+  EXPECT_NEAR(n.dot(com - kCenter) - kRadius, kClearance, 1e-12);
+  // far past it, the border is square to the command behind the robot
+  const Vector2d past(4.0, 0.3);
+  const Vector2d m = circleBorder(past, kForward, +1);
+  EXPECT_NEAR(m.x(), 1.0, 1e-12);
+  EXPECT_NEAR(m.y(), 0.0, 1e-12);
 }
 
 TEST(ObstacleTangent, CloseToTheCircleTheBorderFacesTheCom) {
   const Vector2d com(0.6, 0.3);  // 0.85 m from the centre, below r + clearance
-  const Vector2d n = wpg::commandTangentNormal(kCenter, kRadius, com, {0.2, 0.0}, +1, kClearance);
+  const Vector2d n = circleBorder(com, kForward, +1);
   EXPECT_NEAR((n - (com - kCenter).normalized()).norm(), 0.0, 1e-12);
 }
 
@@ -58,7 +82,8 @@ TEST(ObstacleTangent, ReferenceIntoABorderSlidesAlongItAtTheCommandedSpeed) {
   normals.col(1) = Vector2d(-1.0, 1.0).normalized();
   Eigen::VectorXd vx = Eigen::VectorXd::Constant(3, 0.2), vy = Eigen::VectorXd::Zero(3);
   vx(2) = -0.2;  // moving away from the border: unchanged
-  wpg::turnReferenceAlongBorders(normals, 0.0, vx, vy);  // no sideways limit
+  const auto heading = straight(3);
+  wpg::turnReferenceAlongBorders(normals, heading.first, heading.second, 0.0, vx, vy);
   EXPECT_NEAR(vx(0), 0.2 / std::sqrt(2.0), 1e-12);
   EXPECT_NEAR(vy(0), 0.2 / std::sqrt(2.0), 1e-12);
   EXPECT_NEAR(vx(2), -0.2, 1e-12);
@@ -74,7 +99,7 @@ TEST(ObstacleTangent, ReferenceAlongABorderCrossesTheCommandNoFasterThanTheGaitW
   normals.col(0) = Vector2d(-1.0, 1.0).normalized();
   Eigen::VectorXd vx = Eigen::VectorXd::Constant(2, 0.3), vy = Eigen::VectorXd::Zero(2);
   vx(1) = -0.3;
-  wpg::turnReferenceAlongBorders(normals, 0.125, vx, vy);
+  wpg::turnReferenceAlongBorders(normals, straight(2).first, straight(2).second, 0.125, vx, vy);
   EXPECT_NEAR(vy(0), 0.125, 1e-12);
   EXPECT_NEAR(vx(0), 0.125, 1e-12);  // along the border
   EXPECT_NEAR(vx(1), -0.3, 1e-12);
@@ -82,7 +107,7 @@ TEST(ObstacleTangent, ReferenceAlongABorderCrossesTheCommandNoFasterThanTheGaitW
   normals.col(0) = Vector2d(-0.5, std::sqrt(3.0) / 2.0);  // the border 30 degrees off +x
   vx.setConstant(0.2);
   vy.setZero();
-  wpg::turnReferenceAlongBorders(normals, 0.125, vx, vy);
+  wpg::turnReferenceAlongBorders(normals, straight(2).first, straight(2).second, 0.125, vx, vy);
   EXPECT_NEAR(std::hypot(vx(0), vy(0)), 0.2, 1e-12);
   EXPECT_NEAR(vy(0), 0.1, 1e-12);
 }
@@ -97,8 +122,8 @@ TEST(ObstacleTangent, GaitSidewaysSpeedIsThePolygonsLateralReachPerGaitCycle) {
 }
 
 // Walking straight on towards the obstacle, the selector keeps the first border (a border
-// recomputed beside the advancing CoM would recede in front of it); moving to the passing side,
-// the border turns towards the command.
+// recomputed beside the advancing CoM would recede in front of it) while it leaves the CoM half
+// the clearance; moving to the passing side, the border turns towards the command.
 TEST(ObstacleTangent, SelectorBorderOnlyTurnsTowardsTheCommand) {
   wpg::Obstacle obstacle;
   obstacle.center = kCenter;
@@ -108,20 +133,193 @@ TEST(ObstacleTangent, SelectorBorderOnlyTurnsTowardsTheCommand) {
   selector.set({obstacle});
   Eigen::VectorXi slots(1);
   Eigen::Matrix2Xd normals(2, 1);
-  const double foot = kRadius - 0.5;
+  wpg::WalkingParameters parameters;
+  parameters.obstacle_foot_radius = kRadius - 0.5;
   selector.select({0.0, 0.0}, 1.5, slots);
   ASSERT_EQ(slots(0), 0);
-  selector.tangentNormals({0.0, 0.0}, {0.0, 0.0}, {0.2, 0.0}, foot, kClearance, slots, normals);
+  selector.borderNormals({0.0, 0.0}, {0.0, 0.0}, {0.2, 0.0}, parameters, kClearance, slots, normals);
   const Vector2d first = normals.col(0);
-  selector.tangentNormals({0.3, 0.0}, {0.3, 0.0}, {0.2, 0.0}, foot, kClearance, slots, normals);
+  selector.borderNormals({0.1, 0.0}, {0.1, 0.0}, {0.2, 0.0}, parameters, kClearance, slots, normals);
   EXPECT_EQ(normals.col(0), first);  // straight on: kept
-  selector.tangentNormals({0.3, 0.6}, {0.3, 0.6}, {0.2, 0.0}, foot, kClearance, slots, normals);
+  // further on the kept border would leave the CoM less than half the clearance: given up
+  const Vector2d closer(0.3, 0.0);
+  ASSERT_LT(first.dot(closer - kCenter) - kRadius, 0.5 * kClearance);
+  selector.borderNormals(closer, closer, {0.2, 0.0}, parameters, kClearance, slots, normals);
+  EXPECT_NE(normals.col(0), first);
+  EXPECT_GE(normals.col(0).dot(closer - kCenter) - kRadius, 0.5 * kClearance);
+  selector.borderNormals({0.3, 0.6}, {0.3, 0.6}, {0.2, 0.0}, parameters, kClearance, slots, normals);
   EXPECT_GT(normals(1, 0), first.y());  // to the left: turned towards +y (border along +x)
   // out of reach: forgotten, chosen afresh
   selector.select({-5.0, 0.0}, 1.5, slots);
   selector.select({0.0, 0.0}, 1.5, slots);
-  selector.tangentNormals({0.0, 0.0}, {0.0, 0.0}, {0.2, 0.0}, foot, kClearance, slots, normals);
+  selector.borderNormals({0.0, 0.0}, {0.0, 0.0}, {0.2, 0.0}, parameters, kClearance, slots, normals);
   EXPECT_NEAR((normals.col(0) - first).norm(), 0.0, 1e-12);
+}
+
+// Any convex core: for random polygons (as vertex sets) and CoMs, the border keeps every point
+// of the grown core on its far side (the row is inside eq. 18's set), passes at least
+// `clearance` beside the CoM unless it faces it, and is turned as far towards the command as
+// that allows: a little further, some point comes closer than the clearance (or it is at d).
+TEST(ObstacleTangent, BorderOfAnyConvexCoreIsASupportingLineTurnedAsFarAsTheComAllows) {
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  int turned = 0, facing_count = 0, at_command = 0;
+  for (int trial = 0; trial < 2000; ++trial) {
+    std::vector<Vector2d> core;
+    const int points = 1 + trial % 6;
+    const Vector2d centre(2.0 + unit(random), 0.5 * unit(random));
+    for (int p = 0; p < points; ++p) core.push_back(centre + 0.4 * Vector2d(unit(random), unit(random)));
+    const double radius = 0.1 + 0.3 * std::abs(unit(random));
+    const Vector2d com(2.0 + 2.5 * unit(random), 2.0 * unit(random));
+    const Vector2d direction = Vector2d(1.0, 0.3 * unit(random));
+    const int side = unit(random) > 0.0 ? 1 : -1;
+    // the facing normal of the core's hull: the direction from its nearest point (by sampling
+    // the segments between the points, fine enough for this test's tolerance)
+    Vector2d nearest = core.front();
+    for (const Vector2d& a : core)
+      for (const Vector2d& b : core)
+        for (int t = 0; t <= 200; ++t) {
+          const Vector2d q = a + (b - a) * (t / 200.0);
+          if ((com - q).norm() < (com - nearest).norm()) nearest = q;
+        }
+    if ((com - nearest).norm() < 1e-9) continue;
+    const Vector2d facing = (com - nearest).normalized();
+    const Vector2d n = wpg::borderNormal(core, radius, com, direction, side, kClearance, facing);
+    ASSERT_NEAR(n.norm(), 1.0, 1e-12);
+    const double offset = wpg::borderOffset(core, radius, n);
+    for (const Vector2d& v : core) EXPECT_LE(n.dot(v) + radius, offset + 1e-12);
+    if (n == facing) {
+      ++facing_count;
+      continue;
+    }
+    ++turned;
+    EXPECT_GE(n.dot(com) - offset, kClearance - 1e-9);
+    const double progress = wpg::borderProgress(n, direction, side);
+    if (std::abs(progress) < 1e-9) {
+      ++at_command;
+      continue;
+    }
+    // turned a little further towards d (clockwise on the left side, unless the CoM is past
+    // the obstacle on the other side and the border turns back to d): the CoM loses its
+    // clearance
+    const double step = (progress < 0.0 ? -side : side) * 1e-6;
+    const Vector2d further(std::cos(step) * n.x() - std::sin(step) * n.y(),
+                           std::sin(step) * n.x() + std::cos(step) * n.y());
+    EXPECT_LT(std::abs(wpg::borderProgress(further, direction, side)), std::abs(progress));
+    EXPECT_LT(further.dot(com) - wpg::borderOffset(core, radius, further), kClearance + 1e-9);
+  }
+  // every case occurs
+  EXPECT_GT(turned, 200);
+  EXPECT_GT(facing_count, 100);
+  EXPECT_GT(at_command, 10);
+}
+
+TEST(ObstacleTangent, ProgressGrowsFromSquareInFrontToBehindThroughThePassingSide) {
+  const Vector2d d(1.0, 0.0);
+  EXPECT_NEAR(wpg::borderProgress({-1.0, 0.0}, d, +1), -M_PI, 1e-12);
+  EXPECT_NEAR(wpg::borderProgress({0.0, 1.0}, d, +1), -0.5 * M_PI, 1e-12);
+  EXPECT_NEAR(wpg::borderProgress({1.0, 0.0}, d, +1), 0.0, 1e-12);
+  EXPECT_NEAR(wpg::borderProgress({0.0, -1.0}, d, -1), -0.5 * M_PI, 1e-12);
+  EXPECT_NEAR(wpg::borderProgress({-1.0, 0.0}, d, -1), -M_PI, 1e-12);
+  // just short of the cut (the other side's normal) the progress is at its largest
+  EXPECT_GT(wpg::borderProgress({0.01, -1.0}, d, +1), 1.5);
+  EXPECT_LT(wpg::borderProgress({-0.01, -1.0}, d, +1), -4.0);
+}
+
+// A box dead ahead: its border, like a circle's, passes `clearance` beside the CoM and slants
+// towards the passing side, and the row keeps every corner grown by the margin behind it.
+TEST(ObstacleTangent, BoxAheadGetsABorderTurnedTowardsThePassingSide) {
+  wpg::Obstacle box;
+  box.type = wpg::ObstacleType::kBox;
+  box.center = {2.0, 0.0};
+  box.size = {0.4, 0.4};
+  box.yaw = 0.3;
+  box.margin = 0.2;
+  wpg::ObstacleSet set({box});
+  const double radius = 0.2 + 0.1287;
+  const Vector2d com(0.5, 0.0);
+  Vector2d facing;
+  set.signedDistance(0, com, &facing);
+  for (int side : {+1, -1}) {
+    const Vector2d n = wpg::borderNormal(set.core(0), radius, com, {1.0, 0.0}, side, kClearance,
+                                         facing);
+    EXPECT_NEAR(n.dot(com) - wpg::borderOffset(set.core(0), radius, n), kClearance, 1e-9);
+    EXPECT_LT(n.x(), 0.0);
+    EXPECT_GT(side * n.y(), 0.0);
+  }
+}
+
+// Two borders facing each other across a diagonal corridor: the reference slides along the
+// corridor (the only directions that drive into neither), at its own speed.
+TEST(ObstacleTangent, ReferenceBetweenTwoBordersSlidesAlongTheCorridor) {
+  Eigen::Matrix2Xd normals(2, 3);
+  const Vector2d along = Vector2d(1.0, 1.0).normalized();
+  normals.col(0) = Vector2d(-along.y(), along.x());  // left border, free side to its left
+  normals.col(1) = -normals.col(0);
+  normals.col(2).setZero();  // an empty slot
+  Eigen::VectorXd vx = Eigen::VectorXd::Constant(1, 0.2), vy = Eigen::VectorXd::Zero(1);
+  const auto heading = straight(1);
+  wpg::turnReferenceAlongBorders(normals, heading.first, heading.second, 0.0, vx, vy);
+  EXPECT_NEAR(vx(0), 0.2 * along.x(), 1e-12);
+  EXPECT_NEAR(vy(0), 0.2 * along.y(), 1e-12);
+  // a wedge whose every direction is more than a right angle from the reference: unchanged
+  normals.col(0) = Vector2d(-1.0, 0.2).normalized();
+  normals.col(1) = Vector2d(-1.0, -0.2).normalized();
+  vx(0) = 0.2;
+  vy(0) = 0.0;
+  wpg::turnReferenceAlongBorders(normals, heading.first, heading.second, 0.0, vx, vy);
+  EXPECT_EQ(vx(0), 0.2);
+  EXPECT_EQ(vy(0), 0.0);
+}
+
+// The sideways limit is in the robot's frame: a robot heading +y, commanded forward (world
+// +y), whose reference turns along a border at 45 degrees, is held to 0.125 m/s across its
+// heading (world x), not across world y.
+TEST(ObstacleTangent, SidewaysLimitIsAcrossTheRobotsHeading) {
+  Eigen::Matrix2Xd normals(2, 1);
+  normals.col(0) = Vector2d(1.0, -1.0).normalized();  // a border across the way ahead
+  Eigen::VectorXd vx = Eigen::VectorXd::Zero(1), vy = Eigen::VectorXd::Constant(1, 0.3);
+  const Eigen::VectorXd c = Eigen::VectorXd::Zero(1), s = Eigen::VectorXd::Ones(1);  // h = pi/2
+  wpg::turnReferenceAlongBorders(normals, c, s, 0.125, vx, vy);
+  EXPECT_NEAR(std::abs(vx(0)), 0.125, 1e-12);
+  EXPECT_NEAR(vy(0), 0.125, 1e-12);
+}
+
+// Several obstacles in reach at once (a staggered pair, a box and a circle): each gets its own
+// border, none of them zero.
+TEST(ObstacleTangent, SelectorGivesEveryObstacleInReachItsBorder) {
+  wpg::Obstacle a, b, box;
+  a.center = {1.2, 0.25};
+  a.radius = 0.15;
+  a.margin = 0.2;
+  b = a;
+  b.center = {2.4, -0.25};
+  box.type = wpg::ObstacleType::kBox;
+  box.center = {1.8, 0.9};
+  box.size = {0.5, 0.3};
+  box.margin = 0.2;
+  wpg::ObstacleSelector selector;
+  selector.set({a, b, box});
+  Eigen::VectorXi slots(4);
+  Eigen::Matrix2Xd normals(2, 4);
+  selector.select({0.3, -0.1}, 3.0, slots);
+  ASSERT_GE(slots(2), 0);
+  wpg::WalkingParameters parameters;
+  selector.borderNormals({0.4, -0.1}, {0.3, -0.1}, {0.2, 0.0}, parameters, kClearance, slots,
+                         normals);
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(normals.col(k).norm(), 1.0, 1e-12) << k;
+  EXPECT_EQ(normals.col(3).norm(), 0.0);
+  // the rows keep the steps out: the CoM's own clearance from each border is positive
+  for (int k = 0; k < 3; ++k) {
+    const int index = slots(k);
+    const double radius =
+        selector.distance()->coreRadius(index) +
+        wpg::stepCentreMargin(selector.obstacles()[index], parameters);
+    EXPECT_GT(normals.col(k).dot(Vector2d(0.4, -0.1)) -
+                  wpg::borderOffset(selector.distance()->core(index), radius, normals.col(k)),
+              0.0)
+        << k;
+  }
 }
 
 }  // namespace

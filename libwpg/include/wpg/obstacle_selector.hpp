@@ -28,23 +28,26 @@ class ObstacleSelector {
   // margin) within `reach` of `support` [m], -1 for the rest. Does not allocate.
   void select(const Eigen::Vector2d& support, double reach, Eigen::Ref<Eigen::VectorXi> slots);
 
-  // command_tangent linearization (obstacle_tangent.hpp): column k of `normals` <- the
-  // half-plane normal of the circle in slot k (grown by its margin and `foot_radius`), from the
-  // CoM, the command's world `direction` and the obstacle's passing side; zero for an empty slot
-  // or a box or polygon (their rows keep the linearization at the step), and all zero when more
-  // than one obstacle is in the slots (a circle among others keeps it too). The side is chosen
-  // from `feet_middle` when the obstacle comes within reach (select()) and kept while it stays
-  // there, so that the robot does not change its mind half-way round. Does not allocate.
-  void tangentNormals(const Eigen::Vector2d& com, const Eigen::Vector2d& feet_middle,
-                      const Eigen::Vector2d& direction, double foot_radius, double clearance,
-                      const Eigen::Ref<const Eigen::VectorXi>& slots,
-                      Eigen::Ref<Eigen::Matrix2Xd> normals);
+  // command_tangent linearization (obstacle_tangent.hpp): column k of `normals` <- the border
+  // normal of the obstacle in slot k (any shape, grown by its step-centre margin,
+  // stepCentreMargin of `parameters`), from the CoM, the command's world `direction` and the
+  // obstacle's passing side; zero for an empty slot. Every obstacle in the slots gets a border
+  // the same way, taken in the order the robot meets them along the command: each keeps the
+  // point where the robot will pass the one before it clear (the route round them). The side is chosen from `feet_middle` when the obstacle comes
+  // within reach (select()) and kept while it stays there, so that the robot does not change
+  // its mind half-way round; the border only turns towards the command while it stays
+  // (borderProgress). Does not allocate.
+  void borderNormals(const Eigen::Vector2d& com, const Eigen::Vector2d& feet_middle,
+                     const Eigen::Vector2d& direction, const WalkingParameters& parameters,
+                     double clearance, const Eigen::Ref<const Eigen::VectorXi>& slots,
+                     Eigen::Ref<Eigen::Matrix2Xd> normals);
   // Forgets the passing sides (a new walk).
   void forgetSides() { std::fill(side_.begin(), side_.end(), 0); }
 
  private:
   ObstacleSet obstacles_;
   std::vector<std::pair<double, int>> order_;  // scratch, sized once per set()
+  std::vector<std::pair<double, int>> route_;  // scratch: slots along the command, per set()
   std::vector<int> side_;  // per obstacle: passing side +1 / -1, 0 = not chosen (out of reach)
   std::vector<Eigen::Vector2d> normal_;  // per obstacle: its border so far (valid when side_ != 0)
 };

@@ -67,10 +67,19 @@ class ObstacleSet : public ObstacleDistanceOracle {
   // Circle enclosing obstacle `index` grown by its margin: (x, y, radius) [m], for the cheap
   // selection of the obstacles near the previewed steps.
   const Eigen::Vector3d& reachCircle(int index) const { return reach_[index]; }
+  // Obstacle `index` as a convex core grown by a radius: a circle's centre and radius, a box's
+  // or polygon's vertices (world, counter-clockwise) and 0. The borders of the obstacle rows
+  // (obstacle_tangent.hpp) are supporting lines of the core grown further by the step-centre
+  // margin.
+  const std::vector<Eigen::Vector2d>& core(int index) const { return core_[index]; }
+  double coreRadius(int index) const {
+    return obstacles_[index].type == ObstacleType::kCircle ? obstacles_[index].radius : 0.0;
+  }
 
  private:
   std::vector<Obstacle> obstacles_;
   std::vector<std::vector<Eigen::Vector2d>> vertices_;  // world, counter-clockwise
+  std::vector<std::vector<Eigen::Vector2d>> core_;      // vertices, or a circle's centre
   std::vector<Eigen::Vector3d> reach_;
 };
 // The name this class had before it owned the obstacles of the NMPC.

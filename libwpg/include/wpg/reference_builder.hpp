@@ -32,6 +32,10 @@ class ReferenceBuilder {
   // ... then the commanded omega [rad/s] held for `elapsed` [s].
   void integrateHeading(double omega, double elapsed) { commanded_heading_ += omega * elapsed; }
   double commandedHeading() const { return commanded_heading_; }
+  // cos and sin of the heading h_j of every previewed sample at the last build (the one that
+  // turns the robot-frame command into J1's world reference).
+  const Eigen::VectorXd& headingCos() const { return heading_cos_; }
+  const Eigen::VectorXd& headingSin() const { return heading_sin_; }
 
   // Writes problem.yaw_reference, velocity_x/y (with a window: R(h_j) times the window's mean
   // of the command, plus the sway) and velocity_past_x/y for the clamped

@@ -1,15 +1,17 @@
 // Obstacle avoidance, paper eq. (18)-(19): one row per previewed step and obstacle slot (the
 // obstacles near the steps, chosen at every sample), with libwpg's exact 2-D distances. The
 // bound is WalkingParameters::obstacle_distance_form's: the whole sole out of the margin
-// (default) or the paper's R^2 + m^2 as written. A circle's row is either eq. (18) itself,
-// which the solver linearizes at the step (the paper's linearization), or, when the problem
-// carries a normal for its slot (obstacle_linearization: command_tangent,
-// wpg/obstacle_tangent.hpp), the tangent half-plane of that normal on the same circle.
+// (default) or the paper's R^2 + m^2 as written. A row is either eq. (18) itself (a circle's
+// (F - c)^2 >= r^2, a box's or polygon's signed distance), which the solver linearizes at the
+// step (the paper's linearization), or, when the problem carries a normal for its slot
+// (obstacle_linearization: command_tangent, wpg/obstacle_tangent.hpp), the supporting
+// half-plane of that normal on the same grown shape.
 #include <cmath>
 
 #include "nmpc_internal.hpp"
 #include "wpg/nmpc/builtin_families.hpp"
 #include "wpg/nmpc/model.hpp"
+#include "wpg/obstacle_tangent.hpp"
 
 namespace wpg {
 namespace {
@@ -40,7 +42,16 @@ class ObstacleConstraint final : public NamedConstraintFamily {
         const WalkingParameters& w = model.parameters();
         Eigen::Vector2d dg;
         const auto normal = problem.obstacle_normal.col(k);
-        if (obstacle.type == ObstacleType::kCircle) {
+        if (!normal.isZero()) {
+          // command_tangent linearization (wpg/obstacle_tangent.hpp): the supporting
+          // half-plane n.F >= h(n) + radius of the obstacle grown by the step-centre margin, n
+          // fixed for the sample: g = h(n) + radius - n.F <= 0, linear in F (metres, the
+          // distance missing to the border), inside eq. (18)'s set, for every shape.
+          const double radius =
+              problem.obstacles->coreRadius(index) + stepCentreMargin(obstacle, w);
+          g(row) = borderOffset(problem.obstacles->core(index), radius, normal) - normal.dot(F);
+          dg = -normal;
+        } else if (obstacle.type == ObstacleType::kCircle) {
           // r^2 is R^2 + m^2 in the paper's form (eq. 18 as written, the step a point),
           // (R + m + obstacle_foot_radius)^2 in the default sole_clearance form (the whole sole
           // out of the margin circle).
@@ -51,20 +62,12 @@ class ObstacleConstraint final : public NamedConstraintFamily {
                                        : (R + m + w.obstacle_foot_radius) *
                                              (R + m + w.obstacle_foot_radius);
           const double r = std::sqrt(r_squared);
-          if (!normal.isZero()) {
-            // command_tangent linearization (wpg/obstacle_tangent.hpp): the half-plane
-            // n.(F - c) >= r, n fixed for the sample: g = r - n.(F - c) <= 0, linear in F
-            // (metres, the distance missing to the border), inside eq. (18)'s set.
-            g(row) = r - normal.dot(d);
-            dg = -normal;
-          } else {
-            // eq. (18): (F - c)^2 >= r^2, written (r^2 - |F - c|^2) / (2 r) <= 0: the same
-            // feasible set and linearization up to a positive factor, in metres (to first
-            // order the distance missing to the circle), so that the relaxation slack of this
-            // family has one unit whatever the shapes.
-            g(row) = (r_squared - d.squaredNorm()) / (2.0 * r);
-            dg = -d / r;
-          }
+          // eq. (18): (F - c)^2 >= r^2, written (r^2 - |F - c|^2) / (2 r) <= 0: the same
+          // feasible set and linearization up to a positive factor, in metres (to first
+          // order the distance missing to the circle), so that the relaxation slack of this
+          // family has one unit whatever the shapes.
+          g(row) = (r_squared - d.squaredNorm()) / (2.0 * r);
+          dg = -d / r;
         } else {
           // d(F) >= margin (+ obstacle_foot_radius in the sole_clearance form)  <=>
           // g = stepCentreMargin - d(F) <= 0, with d the signed distance to the convex shape
