@@ -228,7 +228,14 @@ TEST(ShippedObstacleScenarios, LoadAndRoundTrip) {
                  {"paper_experiment_b", 1},
                  {"obstacle_boxes", 3},
                  {"obstacle_polygon", 2},
-                 {"obstacle_cluttered", 7}};
+                 {"obstacle_cluttered", 7},
+                 {"obstacle_slalom", 3},
+                 {"obstacle_box_on_path", 1},
+                 {"obstacle_box_then_circle", 2},
+                 {"obstacle_gap", 2},
+                 {"obstacle_enclosure", 3},
+                 {"obstacle_turning", 1},
+                 {"obstacle_lateral", 1}};
   const std::string path = (fs::temp_directory_path() /
                             ("wpg_test_obstacles_resolved_" + std::to_string(::getpid()) + ".yaml"))
                                .string();

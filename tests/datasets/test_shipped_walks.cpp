@@ -92,7 +92,10 @@ INSTANTIATE_TEST_SUITE_P(Scenarios, ShippedWalk,
                                            "paper_experiment_a", "paper_experiment_b",
                                            "obstacle_boxes", "obstacle_polygon",
                                            "obstacle_cluttered", "push_standing",
-                                           "push_stepping_in_place"));
+                                           "push_stepping_in_place", "obstacle_slalom",
+                                           "obstacle_box_on_path", "obstacle_box_then_circle",
+                                           "obstacle_gap", "obstacle_enclosure",
+                                           "obstacle_turning", "obstacle_lateral"));
 
 TEST(ShippedWalks, EveryShippedScenarioIsCovered) {
   int count = 0;
@@ -100,7 +103,7 @@ TEST(ShippedWalks, EveryShippedScenarioIsCovered) {
     if (entry.path().extension() == ".yaml") ++count;
   // + the four walks to a goal (goal_*.yaml), run by tests/planning/test_goal_scenarios.cpp:
   // they need the route planner.
-  EXPECT_EQ(count, 13 + 4) << "a new shipped scenario must be added to the list above";
+  EXPECT_EQ(count, 20 + 4) << "a new shipped scenario must be added to the list above";
 }
 
 TEST(ShippedWalks, WalkForwardTracksTheCommandedSpeed) {
