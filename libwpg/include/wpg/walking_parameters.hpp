@@ -103,14 +103,15 @@ enum class ObstacleLinearization {
   // of the previous plan, a half-plane facing that step. With an obstacle on the path its
   // border is perpendicular to the command and the robot marks time in front of it.
   kStep,
-  // wpg: the circle's tangent half-plane turned as far towards the command's direction as the
-  // robot's CoM allows, on the side the robot passes, and J1's reference turned along it
+  // wpg: for every obstacle in the QP (circle, box or polygon, alone or with others), a
+  // supporting half-plane of the obstacle grown by its margin, turned as far towards the
+  // command's direction as the robot's CoM (and the way round the obstacle before it) allows,
+  // on the side the robot passes, and J1's reference turned along the borders
   // (libwpg/include/wpg/obstacle_tangent.hpp). Fixed during a sample (exact Jacobian: constant).
   // With heading_reference: command and a large weight_yaw the robot slides round an obstacle on
   // the path and walks on (paper_experiment_a); with the support-foot heading it turns while it
-  // slides and circles the obstacle. Only for a circle alone in the QP: among other obstacles
-  // each row keeps the linearization at the step (tangents turned towards the command one by
-  // one may leave no room between them). The default (docs/obstacle_passing.md).
+  // slides and circles the obstacle. The default (docs/obstacle_passing.md,
+  // docs/obstacle_scenes.md).
   kCommandTangent,
 };
 bool parseObstacleLinearization(const std::string& name, ObstacleLinearization* out);
