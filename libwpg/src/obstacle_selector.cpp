@@ -50,6 +50,8 @@ void ObstacleSelector::borderNormals(const Eigen::Vector2d& com,
                                      const Eigen::Ref<const Eigen::VectorXi>& slots,
                                      Eigen::Ref<Eigen::Matrix2Xd> normals) {
   normals.setZero();
+  if (slides_.cols() != slots.size()) slides_.resize(2, slots.size());  // once per slot count
+  slides_.setZero();
   const double length = direction.norm();
   if (length <= 1e-12) {  // no command: each border faces the CoM
     for (int k = 0; k < slots.size(); ++k) {
@@ -117,6 +119,7 @@ void ObstacleSelector::borderNormals(const Eigen::Vector2d& com,
         borderProgress(candidate, d, side) >= borderProgress(normal_[index], d, side))
       normal_[index] = candidate;
     normals.col(k) = normal_[index];
+    slides_.col(k) = borderSlide(normal_[index], d, side);
     if (!passed) {
       // abreast of the centre, `clearance` beyond the grown shape on the passing side
       const Eigen::Vector2d out = side * left;

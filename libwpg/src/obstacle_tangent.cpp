@@ -78,7 +78,15 @@ Eigen::Vector2d borderNormal(const std::vector<Eigen::Vector2d>& core, double ra
   return rotated(facing, std::clamp(wanted, lo, hi));
 }
 
+Eigen::Vector2d borderSlide(const Eigen::Vector2d& normal, const Eigen::Vector2d& direction,
+                            int side) {
+  const Eigen::Vector2d tangent(-normal.y(), normal.x());
+  const Eigen::Vector2d towards = side * Eigen::Vector2d(-direction.y(), direction.x());
+  return tangent.dot(towards) >= 0.0 ? tangent : Eigen::Vector2d(-tangent);
+}
+
 void turnReferenceAlongBorders(const Eigen::Ref<const Eigen::Matrix2Xd>& normals,
+                               const Eigen::Ref<const Eigen::Matrix2Xd>& slides,
                                const Eigen::Ref<const Eigen::VectorXd>& heading_cos,
                                const Eigen::Ref<const Eigen::VectorXd>& heading_sin,
                                double max_sideways_speed, Eigen::Ref<Eigen::VectorXd> velocity_x,
@@ -94,22 +102,28 @@ void turnReferenceAlongBorders(const Eigen::Ref<const Eigen::Matrix2Xd>& normals
     const double speed = v.norm();
     if (speed <= 1e-12 || drivesIntoNone(v)) continue;
     // The nearest direction of the cone {u : n_k . u >= 0 for every border}: in the plane it
-    // lies on one of the borders' lines, the projection of v on it nearest to v among those
-    // that drive into no other border.
+    // lies along one of the borders, the one nearest to v in angle among the directions along
+    // the borders it drives into that drive into no other border; along each border, the
+    // projection of v when it points to the passing side, else the slide to that side.
+    // Within a right angle of v only: a reference turned backwards would walk the robot away.
     Eigen::Vector2d best = Eigen::Vector2d::Zero();
-    double best_distance = speed;
+    double best_cosine = -1e-9;
     for (int k = 0; k < normals.cols(); ++k) {
       const Eigen::Vector2d n = normals.col(k);
       const double into = n.dot(v);
       if (!(into < 0.0)) continue;  // zero columns and borders it does not drive into
-      const Eigen::Vector2d u = v - into * n;
-      if (-into < best_distance && u.norm() > 1e-12 && drivesIntoNone(u)) {
+      Eigen::Vector2d u = v - into * n;
+      const double along = u.norm();
+      u = u.dot(slides.col(k)) > 1e-9 * speed ? Eigen::Vector2d(u / along)
+                                              : Eigen::Vector2d(slides.col(k));
+      const double cosine = u.dot(v) / speed;
+      if (cosine > best_cosine && drivesIntoNone(u)) {
         best = u;
-        best_distance = -into;
+        best_cosine = cosine;
       }
     }
-    const double length = best.norm();
-    if (length <= 1e-12) continue;
+    if (best.isZero()) continue;  // no such direction: the QP holds the steps
+    const double length = 1.0;
     // At the reference's speed, unless its part across the robot's heading then exceeds what
     // the gait can walk sideways: asked for more, the QP buys the missing sideways speed with
     // the outward step's length (the feasibility polygon's slanted edges) and slides along a

@@ -197,7 +197,8 @@ const MpcIterationLog& PatternGenerator::update(double time, const Eigen::Vector
     // Sideways no faster than the gait walks (in the robot's frame, where its reach is), or
     // than the command itself asks.
     const double sideways_limit = std::max(w.gaitSidewaysSpeed(), std::abs(command.y()));
-    turnReferenceAlongBorders(problem_->obstacle_normal, references_.headingCos(),
+    turnReferenceAlongBorders(problem_->obstacle_normal, obstacles_.slides(),
+                              references_.headingCos(),
                               references_.headingSin(), sideways_limit, problem_->velocity_x,
                               problem_->velocity_y);
   }

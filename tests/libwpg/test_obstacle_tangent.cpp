@@ -26,6 +26,14 @@ std::pair<Eigen::VectorXd, Eigen::VectorXd> straight(int n) {
   return {Eigen::VectorXd::Ones(n), Eigen::VectorXd::Zero(n)};
 }
 
+// The slides of `normals` (zero columns kept zero) towards the left (+1) or right (-1) of +x.
+Eigen::Matrix2Xd slidesFor(const Eigen::Matrix2Xd& normals, int side) {
+  Eigen::Matrix2Xd slides = Eigen::Matrix2Xd::Zero(2, normals.cols());
+  for (int k = 0; k < normals.cols(); ++k)
+    if (!normals.col(k).isZero()) slides.col(k) = wpg::borderSlide(normals.col(k), {1.0, 0.0}, side);
+  return slides;
+}
+
 // A circle's border: its centre, grown by kRadius.
 Vector2d circleBorder(const Vector2d& com, const Vector2d& direction, int side) {
   return wpg::borderNormal({kCenter}, kRadius, com, direction, side, kClearance,
@@ -51,7 +59,7 @@ TEST(ObstacleTangent, ObstacleAheadGivesATangentTurnedTowardsThePassingSide) {
 // towards the command (behind the robot) as far as keeps it `clearance` beside the CoM: the
 // space ahead and across is free for the next obstacle's way round.
 TEST(ObstacleTangent, AbreastOfTheCircleTheBorderTurnsBehindTheRobot) {
-  const Vector2d com(1.4, 1.2);
+  const Vector2d com(1.4, 1.3);  // 0.67 m from the grown circle: the whole clearance
   const Vector2d n = circleBorder(com, kForward, +1);
   EXPECT_NEAR(n.norm(), 1.0, 1e-12);
   EXPECT_GT(n.x(), 0.0);  // facing forward: walking on along +x moves away from it
@@ -83,7 +91,7 @@ TEST(ObstacleTangent, ReferenceIntoABorderSlidesAlongItAtTheCommandedSpeed) {
   Eigen::VectorXd vx = Eigen::VectorXd::Constant(3, 0.2), vy = Eigen::VectorXd::Zero(3);
   vx(2) = -0.2;  // moving away from the border: unchanged
   const auto heading = straight(3);
-  wpg::turnReferenceAlongBorders(normals, heading.first, heading.second, 0.0, vx, vy);
+  wpg::turnReferenceAlongBorders(normals, slidesFor(normals, +1), heading.first, heading.second, 0.0, vx, vy);
   EXPECT_NEAR(vx(0), 0.2 / std::sqrt(2.0), 1e-12);
   EXPECT_NEAR(vy(0), 0.2 / std::sqrt(2.0), 1e-12);
   EXPECT_NEAR(vx(2), -0.2, 1e-12);
@@ -99,7 +107,7 @@ TEST(ObstacleTangent, ReferenceAlongABorderCrossesTheCommandNoFasterThanTheGaitW
   normals.col(0) = Vector2d(-1.0, 1.0).normalized();
   Eigen::VectorXd vx = Eigen::VectorXd::Constant(2, 0.3), vy = Eigen::VectorXd::Zero(2);
   vx(1) = -0.3;
-  wpg::turnReferenceAlongBorders(normals, straight(2).first, straight(2).second, 0.125, vx, vy);
+  wpg::turnReferenceAlongBorders(normals, slidesFor(normals, +1), straight(2).first, straight(2).second, 0.125, vx, vy);
   EXPECT_NEAR(vy(0), 0.125, 1e-12);
   EXPECT_NEAR(vx(0), 0.125, 1e-12);  // along the border
   EXPECT_NEAR(vx(1), -0.3, 1e-12);
@@ -107,7 +115,7 @@ TEST(ObstacleTangent, ReferenceAlongABorderCrossesTheCommandNoFasterThanTheGaitW
   normals.col(0) = Vector2d(-0.5, std::sqrt(3.0) / 2.0);  // the border 30 degrees off +x
   vx.setConstant(0.2);
   vy.setZero();
-  wpg::turnReferenceAlongBorders(normals, straight(2).first, straight(2).second, 0.125, vx, vy);
+  wpg::turnReferenceAlongBorders(normals, slidesFor(normals, +1), straight(2).first, straight(2).second, 0.125, vx, vy);
   EXPECT_NEAR(std::hypot(vx(0), vy(0)), 0.2, 1e-12);
   EXPECT_NEAR(vy(0), 0.1, 1e-12);
 }
@@ -259,7 +267,7 @@ TEST(ObstacleTangent, ReferenceBetweenTwoBordersSlidesAlongTheCorridor) {
   normals.col(2).setZero();  // an empty slot
   Eigen::VectorXd vx = Eigen::VectorXd::Constant(1, 0.2), vy = Eigen::VectorXd::Zero(1);
   const auto heading = straight(1);
-  wpg::turnReferenceAlongBorders(normals, heading.first, heading.second, 0.0, vx, vy);
+  wpg::turnReferenceAlongBorders(normals, slidesFor(normals, +1), heading.first, heading.second, 0.0, vx, vy);
   EXPECT_NEAR(vx(0), 0.2 * along.x(), 1e-12);
   EXPECT_NEAR(vy(0), 0.2 * along.y(), 1e-12);
   // a wedge whose every direction is more than a right angle from the reference: unchanged
@@ -267,9 +275,24 @@ TEST(ObstacleTangent, ReferenceBetweenTwoBordersSlidesAlongTheCorridor) {
   normals.col(1) = Vector2d(-1.0, -0.2).normalized();
   vx(0) = 0.2;
   vy(0) = 0.0;
-  wpg::turnReferenceAlongBorders(normals, heading.first, heading.second, 0.0, vx, vy);
+  wpg::turnReferenceAlongBorders(normals, slidesFor(normals, +1), heading.first, heading.second, 0.0, vx, vy);
   EXPECT_EQ(vx(0), 0.2);
   EXPECT_EQ(vy(0), 0.0);
+}
+
+// A box's face met head on: the reference has no projection along the border of its own; it
+// slides towards the passing side, no faster sideways than the gait walks.
+TEST(ObstacleTangent, ReferenceSquareIntoABorderSlidesTowardsThePassingSide) {
+  Eigen::Matrix2Xd normals(2, 1);
+  normals.col(0) = Vector2d(-1.0, 0.0);
+  const auto heading = straight(1);
+  for (int side : {+1, -1}) {
+    Eigen::VectorXd vx = Eigen::VectorXd::Constant(1, 0.2), vy = Eigen::VectorXd::Zero(1);
+    wpg::turnReferenceAlongBorders(normals, slidesFor(normals, side), heading.first,
+                                   heading.second, 0.125, vx, vy);
+    EXPECT_NEAR(vx(0), 0.0, 1e-12);
+    EXPECT_NEAR(vy(0), side * 0.125, 1e-12);
+  }
 }
 
 // The sideways limit is in the robot's frame: a robot heading +y, commanded forward (world
@@ -280,7 +303,7 @@ TEST(ObstacleTangent, SidewaysLimitIsAcrossTheRobotsHeading) {
   normals.col(0) = Vector2d(1.0, -1.0).normalized();  // a border across the way ahead
   Eigen::VectorXd vx = Eigen::VectorXd::Zero(1), vy = Eigen::VectorXd::Constant(1, 0.3);
   const Eigen::VectorXd c = Eigen::VectorXd::Zero(1), s = Eigen::VectorXd::Ones(1);  // h = pi/2
-  wpg::turnReferenceAlongBorders(normals, c, s, 0.125, vx, vy);
+  wpg::turnReferenceAlongBorders(normals, slidesFor(normals, +1), c, s, 0.125, vx, vy);
   EXPECT_NEAR(std::abs(vx(0)), 0.125, 1e-12);
   EXPECT_NEAR(vy(0), 0.125, 1e-12);
 }

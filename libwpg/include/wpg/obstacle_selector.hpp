@@ -41,6 +41,9 @@ class ObstacleSelector {
                      const Eigen::Vector2d& direction, const WalkingParameters& parameters,
                      double clearance, const Eigen::Ref<const Eigen::VectorXi>& slots,
                      Eigen::Ref<Eigen::Matrix2Xd> normals);
+  // Column k: the unit tangent of slot k's border towards its passing side (borderSlide), as
+  // the last borderNormals left them; zero for an empty slot.
+  const Eigen::Matrix2Xd& slides() const { return slides_; }
   // Forgets the passing sides (a new walk).
   void forgetSides() { std::fill(side_.begin(), side_.end(), 0); }
 
@@ -49,6 +52,7 @@ class ObstacleSelector {
   std::vector<std::pair<double, int>> order_;  // scratch, sized once per set()
   std::vector<std::pair<double, int>> route_;  // scratch: slots along the command, per set()
   std::vector<int> side_;  // per obstacle: passing side +1 / -1, 0 = not chosen (out of reach)
+  Eigen::Matrix2Xd slides_;  // per slot, sized at the first borderNormals of a slot count
   std::vector<Eigen::Vector2d> normal_;  // per obstacle: its border so far (valid when side_ != 0)
 };
 

@@ -28,7 +28,10 @@
 //  - an obstacle abreast: the border along the command, then past it, n -> d: behind the robot,
 //    the border frees the space ahead and across, where the next obstacle may send the robot
 //    (a slalom: a border kept along the command would forbid coming back across the path);
-//  - closer to the core than radius + clearance: the border facing the CoM.
+//  - closer to the core than radius + clearance: the border facing the CoM (turning it while
+//    the CoM is that close, with less clearance, leaves the previewed steps, which are ahead of
+//    the CoM, on the wrong side: measured with half the CoM's room as the clearance, the
+//    staggered pair, the tight slalom and narrow doorways fell after relaxed rows).
 // The normal depends on the sample's data only (CoM, command, side, the border of the samples
 // before: ObstacleSelector keeps it and lets it turn only towards d), not on the QP's
 // variables: the row is linear in the step, its Jacobian exact and constant. Every obstacle in
@@ -63,6 +66,11 @@ Eigen::Vector2d borderNormal(const std::vector<Eigen::Vector2d>& core, double ra
                              const Eigen::Vector2d& com, const Eigen::Vector2d& direction,
                              int side, double clearance, const Eigen::Vector2d& facing);
 
+// The unit tangent of the border of `normal` that points to the passing `side` (+1 left of the
+// command's `direction`, -1 right): the way J1's reference slides along it.
+Eigen::Vector2d borderSlide(const Eigen::Vector2d& normal, const Eigen::Vector2d& direction,
+                            int side);
+
 // The right-hand side h(n) + radius of the border n.F >= h(n) + radius of the core `core`
 // grown by `radius`, for a unit n.
 double borderOffset(const std::vector<Eigen::Vector2d>& core, double radius,
@@ -72,7 +80,10 @@ double borderOffset(const std::vector<Eigen::Vector2d>& core, double radius,
 // the borders of `normals` (columns; zero columns ignored; a border is driven into when n.v <
 // 0): the reference projected onto that cone of directions (the nearest direction of it; no
 // change when it drives into none), and scaled back to its own speed, so that it slides along
-// the borders instead of asking the robot to walk through them. When the cone holds no
+// the borders instead of asking the robot to walk through them. Along a border the reference
+// slides towards the obstacle's passing side, column k of `slides` (the unit tangent of border
+// k that way): a reference square into a border (a box's face met head on) has no projection
+// of its own along it. When the cone holds no
 // direction within a right angle of the reference (borders facing each other across it) the
 // reference is left as it is: the QP holds the steps. Scaled back no faster than leaves its
 // part across the robot's heading within `max_sideways_speed` [m/s] (<= 0: no limit), the
@@ -83,6 +94,7 @@ double borderOffset(const std::vector<Eigen::Vector2d>& core, double radius,
 // sideways reach, and the robot slides slower (docs/obstacle_passing.md, "Sliding along a steep
 // border"). Does not allocate.
 void turnReferenceAlongBorders(const Eigen::Ref<const Eigen::Matrix2Xd>& normals,
+                               const Eigen::Ref<const Eigen::Matrix2Xd>& slides,
                                const Eigen::Ref<const Eigen::VectorXd>& heading_cos,
                                const Eigen::Ref<const Eigen::VectorXd>& heading_sin,
                                double max_sideways_speed, Eigen::Ref<Eigen::VectorXd> velocity_x,
