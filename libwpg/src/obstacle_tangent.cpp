@@ -104,7 +104,7 @@ void turnReferenceAlongBorders(const Eigen::Ref<const Eigen::Matrix2Xd>& normals
     // The nearest direction of the cone {u : n_k . u >= 0 for every border}: in the plane it
     // lies along one of the borders, the one nearest to v in angle among the directions along
     // the borders it drives into that drive into no other border; along each border, the
-    // projection of v when it points to the passing side, else the slide to that side.
+    // projection of v, or, square into it, the slide to the passing side.
     // Within a right angle of v only: a reference turned backwards would walk the robot away.
     Eigen::Vector2d best = Eigen::Vector2d::Zero();
     double best_cosine = -1e-9;
@@ -112,10 +112,13 @@ void turnReferenceAlongBorders(const Eigen::Ref<const Eigen::Matrix2Xd>& normals
       const Eigen::Vector2d n = normals.col(k);
       const double into = n.dot(v);
       if (!(into < 0.0)) continue;  // zero columns and borders it does not drive into
+      // Within kSquare of square into the border, v's projection along it is too short to say
+      // which way round (its sign flips with the sway): slide towards the passing side.
+      constexpr double kSquare = 0.1;  // |projection| / |v|: 5.7 degrees
       Eigen::Vector2d u = v - into * n;
       const double along = u.norm();
-      u = u.dot(slides.col(k)) > 1e-9 * speed ? Eigen::Vector2d(u / along)
-                                              : Eigen::Vector2d(slides.col(k));
+      u = along > kSquare * speed || u.dot(slides.col(k)) > 0.0 ? Eigen::Vector2d(u / along)
+                                                                : Eigen::Vector2d(slides.col(k));
       const double cosine = u.dot(v) / speed;
       if (cosine > best_cosine && drivesIntoNone(u)) {
         best = u;

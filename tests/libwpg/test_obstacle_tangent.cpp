@@ -130,8 +130,8 @@ TEST(ObstacleTangent, GaitSidewaysSpeedIsThePolygonsLateralReachPerGaitCycle) {
 }
 
 // Walking straight on towards the obstacle, the selector keeps the first border (a border
-// recomputed beside the advancing CoM would recede in front of it) while it leaves the CoM half
-// the clearance; moving to the passing side, the border turns towards the command.
+// recomputed beside the advancing CoM would recede in front of it) until the CoM crosses it;
+// moving to the passing side, the border turns towards the command.
 TEST(ObstacleTangent, SelectorBorderOnlyTurnsTowardsTheCommand) {
   wpg::Obstacle obstacle;
   obstacle.center = kCenter;
@@ -149,12 +149,12 @@ TEST(ObstacleTangent, SelectorBorderOnlyTurnsTowardsTheCommand) {
   const Vector2d first = normals.col(0);
   selector.borderNormals({0.1, 0.0}, {0.1, 0.0}, {0.2, 0.0}, parameters, kClearance, slots, normals);
   EXPECT_EQ(normals.col(0), first);  // straight on: kept
-  // further on the kept border would leave the CoM less than half the clearance: given up
-  const Vector2d closer(0.3, 0.0);
-  ASSERT_LT(first.dot(closer - kCenter) - kRadius, 0.5 * kClearance);
+  // further on, the CoM has crossed the kept border: given up
+  const Vector2d closer(0.6, 0.0);
+  ASSERT_LT(first.dot(closer - kCenter) - kRadius, 0.0);
   selector.borderNormals(closer, closer, {0.2, 0.0}, parameters, kClearance, slots, normals);
   EXPECT_NE(normals.col(0), first);
-  EXPECT_GE(normals.col(0).dot(closer - kCenter) - kRadius, 0.5 * kClearance);
+  EXPECT_GE(normals.col(0).dot(closer - kCenter) - kRadius, 0.0);
   selector.borderNormals({0.3, 0.6}, {0.3, 0.6}, {0.2, 0.0}, parameters, kClearance, slots, normals);
   EXPECT_GT(normals(1, 0), first.y());  // to the left: turned towards +y (border along +x)
   // out of reach: forgotten, chosen afresh

@@ -80,10 +80,10 @@ double borderOffset(const std::vector<Eigen::Vector2d>& core, double radius,
 // the borders of `normals` (columns; zero columns ignored; a border is driven into when n.v <
 // 0): the reference projected onto that cone of directions (the nearest direction of it; no
 // change when it drives into none), and scaled back to its own speed, so that it slides along
-// the borders instead of asking the robot to walk through them. Along a border the reference
-// slides towards the obstacle's passing side, column k of `slides` (the unit tangent of border
-// k that way): a reference square into a border (a box's face met head on) has no projection
-// of its own along it. When the cone holds no
+// the borders instead of asking the robot to walk through them. A reference (nearly) square
+// into a border (a box's face met head on) has no projection of its own along it: it slides
+// towards the obstacle's passing side, column k of `slides` (the unit tangent of border k that
+// way). When the cone holds no
 // direction within a right angle of the reference (borders facing each other across it) the
 // reference is left as it is: the QP holds the steps. Scaled back no faster than leaves its
 // part across the robot's heading within `max_sideways_speed` [m/s] (<= 0: no limit), the
