@@ -224,11 +224,8 @@ TEST(ShippedObstacleScenarios, LoadAndRoundTrip) {
   const struct {
     const char* name;
     std::size_t obstacles;
-  } shipped[] = {{"paper_experiment_a", 1},
-                 {"paper_experiment_b", 1},
-                 {"obstacle_boxes", 3},
-                 {"obstacle_polygon", 2},
-                 {"obstacle_cluttered", 7}};
+  } shipped[] = {{"paper_experiment_a", 1}, {"paper_experiment_b", 1}, {"obstacle_boxes", 3},
+                 {"obstacle_polygon", 2},   {"obstacle_cluttered", 7}, {"obstacle_wall", 1}};
   const std::string path = (fs::temp_directory_path() /
                             ("wpg_test_obstacles_resolved_" + std::to_string(::getpid()) + ".yaml"))
                                .string();
