@@ -27,7 +27,8 @@ else
 fi
 
 # One cell: "RMS / max" after the filter (before it for --replay), "falls at T s" when the
-# robot fell; a walk to a goal that did not reach it says so (" (goal not reached)").
+# robot fell; a walk to a goal that did not reach it says so (" (goal not reached)"), a walk
+# that ended blocked too (" (blocked, exit 1)").
 cell() {
   local scenario=$1 status=0 out
   shift
@@ -52,6 +53,10 @@ cell() {
   fi
   if grep -q "^goal " <<<"$out" && ! grep -q "^goal      reached" <<<"$out"; then
     echo " (goal not reached)"
+  fi
+  if grep -q "the robot is blocked: " <<<"$out"; then
+    echo " (blocked, exit $status)"
+    return
   fi
   [[ $status == 0 ]] || echo " (exit $status)"
 }

@@ -35,6 +35,7 @@ ComparisonCell summarizeComparisonCell(const std::string& world, const std::stri
   double clearance = kNaN;
   for (const ComparisonRunSample& run : runs) {
     cell.reached += run.goal_reached ? 1.0 : 0.0;
+    cell.blocked += run.blocked ? 1.0 : 0.0;
     if (run.goal_reached) times.push_back(run.time_to_goal);
     walked.push_back(run.walked_length);
     routes.push_back(run.route_length);
@@ -77,6 +78,7 @@ const std::vector<ComparisonColumn>& comparisonColumns() {
       {"runs", "1", false, &ComparisonCell::runs},
       {"reached", "1", false, &ComparisonCell::reached},
       {"success_rate", "1", false, &ComparisonCell::success_rate},
+      {"blocked", "1", false, &ComparisonCell::blocked},
       {"margin_entered", "1", false, &ComparisonCell::margin_entered},
       {"time_to_goal_median", "s", false, &ComparisonCell::time_to_goal_median},
       {"time_to_goal_q1", "s", false, &ComparisonCell::time_to_goal_q1},

@@ -10,8 +10,9 @@
 #include "wpg/analysis/command_tracking.hpp"
 #include "wpg/analysis/run_summary.hpp"
 #include "wpg/analysis/sample_statistics.hpp"
-#include "wpg/support_polygon.hpp"
 #include "wpg/obstacles.hpp"
+#include "wpg/progress_monitor.hpp"
+#include "wpg/support_polygon.hpp"
 #include "wpg/walk_checks.hpp"
 
 namespace wpg::analysis {
@@ -130,6 +131,28 @@ double obstacleClearance(const WalkingParameters& w, const WalkRequest& request,
   return least;
 }
 
+// The whole walk's progress along its command (METRICS.md, progress_ratio): over the NMPC
+// rows with a linear command whose next sampling instant is a sample of the walk, the CoM's
+// displacement to that instant along the command, over the commanded distance. The same sums,
+// in the same order, as libwpg's ProgressMonitor (the run's `progress_ratio` attribute).
+double progressRatio(const WalkingParameters& w, const WalkTrajectory& tr) {
+  const double T = w.sampling_period;
+  const long sub = std::lround(T / w.control_period);
+  const long n = static_cast<long>(tr.size());
+  double walked = 0.0, commanded = 0.0;
+  for (const MpcIterationLog& row : tr.mpc) {
+    if (!row.commanded_velocity.allFinite()) return kNaN;  // not stored (an older file)
+    const long i = std::lround(row.time / w.control_period);
+    if (i < 0 || i + sub > n - 1) continue;  // no period after it in the walk
+    if (!(row.commanded_velocity.norm() > ProgressMonitor::kMinLinearCommand)) continue;
+    const Eigen::Vector2d displacement = row.commanded_velocity * T;
+    const double length = displacement.norm();
+    walked += (tr.com[i + sub].head<2>() - tr.com[i].head<2>()).dot(displacement) / length;
+    commanded += length;
+  }
+  return commanded > 0.0 ? walked / commanded : kNaN;
+}
+
 void nmpcLog(const WalkTrajectory& tr, RunMetrics* metrics) {
   const std::size_t k = tr.mpc.size();
   metrics->nmpc_iterations = static_cast<double>(k);
@@ -184,11 +207,15 @@ double quantile(std::vector<double> values, double q) {
 }
 
 RunMetrics computeRunMetrics(const WalkingParameters& walking, const WalkRequest& request,
-                             const WalkTrajectory& trajectory, bool success,
-                             const ZmpErrorComparison* zmp_error, VelocityReference reference) {
+                             const WalkResult& walk, const ZmpErrorComparison* zmp_error,
+                             VelocityReference reference) {
+  const WalkTrajectory& trajectory = walk.trajectory;
   RunMetrics metrics;
   const RunSummary summary = summarizeRun(trajectory);
-  metrics.success = success ? 1.0 : 0.0;
+  metrics.success = walk.success ? 1.0 : 0.0;
+  metrics.blocked = walk.blocked ? 1.0 : 0.0;
+  metrics.blocked_since = walk.blocked ? walk.blocked_since : kNaN;
+  metrics.progress_ratio = progressRatio(walking, trajectory);
   metrics.distance = summary.displacement;
   metrics.path_length = summary.path_length;
   metrics.steps = static_cast<double>(summary.steps);
@@ -217,6 +244,9 @@ RunMetrics computeRunMetrics(const WalkingParameters& walking, const WalkRequest
 const std::vector<MetricDefinition>& runMetricTable() {
   static const std::vector<MetricDefinition> table = {
       {"success", "1", true, false, &RunMetrics::success},
+      {"blocked", "1", true, false, &RunMetrics::blocked},
+      {"blocked_since", "s", false, false, &RunMetrics::blocked_since},
+      {"progress_ratio", "1", false, false, &RunMetrics::progress_ratio},
       {"distance", "m", false, false, &RunMetrics::distance},
       {"path_length", "m", false, false, &RunMetrics::path_length},
       {"steps", "1", true, false, &RunMetrics::steps},

@@ -57,8 +57,10 @@ int finishBatchFile(const std::string& batch_file, bool plot) {
   std::cout << "\n";
   if (files.failed_runs > 0) {
     std::cout.flush();
-    printError(std::to_string(files.failed_runs) + " of " + std::to_string(files.runs) +
-               " runs failed (exit_status in /batch/summary says which; datasets written)");
+    printError(
+        std::to_string(files.failed_runs) + " of " + std::to_string(files.runs) +
+        " runs failed (exit_status in /batch/summary says which, blocked which of them ended "
+        "blocked; datasets written)");
     return kExitRunFailed;
   }
   return kExitSuccess;

@@ -35,10 +35,11 @@ namespace fs = std::filesystem;
 namespace wpg::cli {
 namespace {
 
-// A short table on stdout: success, time to goal, clearance per world x variant.
+// A short table on stdout: success, runs that ended blocked, time to goal, clearance per
+// world x variant.
 void printComparison(const std::vector<analysis::ComparisonCell>& cells) {
-  std::printf("%-16s %-20s %9s %14s %10s %9s\n", "world", "variant", "reached", "time to goal",
-              "clearance", "planning");
+  std::printf("%-16s %-20s %9s %8s %14s %10s %9s\n", "world", "variant", "reached", "blocked",
+              "time to goal", "clearance", "planning");
   for (const analysis::ComparisonCell& cell : cells) {
     const auto shown = [](double value, const char* unit, int decimals) {
       if (std::isnan(value)) return std::string("-");
@@ -49,8 +50,9 @@ void printComparison(const std::vector<analysis::ComparisonCell>& cells) {
     };
     const std::string reached = std::to_string(static_cast<int>(cell.reached)) + "/" +
                                 std::to_string(static_cast<int>(cell.runs));
-    std::printf("%-16s %-20s %9s %14s %10s %9s\n", cell.world.c_str(), cell.variant.c_str(),
-                reached.c_str(), shown(cell.time_to_goal_median, "s", 1).c_str(),
+    std::printf("%-16s %-20s %9s %8d %14s %10s %9s\n", cell.world.c_str(), cell.variant.c_str(),
+                reached.c_str(), static_cast<int>(cell.blocked),
+                shown(cell.time_to_goal_median, "s", 1).c_str(),
                 shown(cell.clearance_min, "m", 3).c_str(),
                 shown(1e3 * cell.planning_time_median, "ms", 1).c_str());
   }

@@ -5,7 +5,9 @@
 namespace wpg::cli {
 
 constexpr int kExitSuccess = 0;
-constexpr int kExitRunFailed = 1;  // the walk was generated but some NMPC iteration failed
+// The walk was generated but failed: an NMPC iteration, a fall, a step in a margin, or the
+// robot ended blocked (it stopped making progress along its command).
+constexpr int kExitRunFailed = 1;
 constexpr int kExitBadInput = 2;   // bad scenario, option or file: nothing was written
 // Could not complete for want of a resource or an I/O error (out of memory, disk full, a write
 // that failed): nothing was written (the temporary output is removed).

@@ -79,10 +79,10 @@ void registerRunCommand(CLI::App& app, CommandAction& action) {
                     "Replay and run the dynamic filter (Kajita preview control on the ZMP error, "
                     "paper Sec. IV) with the scenario's filter_settings; implies --replay. "
                     "Default: the scenario's `filter:` key (false)");
-  setExitCodes(
-      run_app,
-      "0 success, 1 the walk failed (dataset still written), 2 bad input (nothing written), " +
-          std::string(kIncompleteWriting));
+  setExitCodes(run_app,
+               "0 success, 1 the walk failed or ended blocked (dataset still written), 2 bad input "
+               "(nothing written), " +
+                   std::string(kIncompleteWriting));
   runWhenParsed(run_app, action, parsed, &runCommand,
                 [](Parsed<RunOptions>& p, CLI::App&) { p.options.plot = !p.no_plot; });
 }

@@ -47,6 +47,7 @@ void ReferenceBuilder::setCadence(const WalkingParameters& cadence) {
 
 void ReferenceBuilder::reset(double yaw) {
   commanded_heading_ = yaw;
+  command_frame_heading_ = yaw;
   forgetWalkedSamples();
   pending_command_.setZero();
   pending_heading_ = yaw;
@@ -93,6 +94,7 @@ void ReferenceBuilder::build(const Eigen::Vector3d& command, int phase_sample,
   // will have at each sample if it follows omega: from the feet's mean yaw (the free-flyer
   // yaw; paper) or from the command's heading.
   const double heading = command_heading ? commanded_heading_ : feet_mean_yaw;
+  command_frame_heading_ = heading;
   const auto sample_heading = [&](int j) {
     return heading + command.z() * (j + 1) * w.sampling_period;
   };

@@ -5,9 +5,10 @@
 #include <stdexcept>
 #include <string>
 
+#include "value_checks.hpp"
 #include "wpg/obstacles.hpp"
 #include "wpg/online_walking_generator.hpp"
-#include "value_checks.hpp"
+#include "wpg/progress_monitor.hpp"
 
 namespace wpg {
 namespace {
@@ -42,6 +43,15 @@ void checkLandingsClear(const WalkingParameters& parameters, const WalkRequest& 
       }
     }
   }
+}
+
+// The linear part of the command the generator tracks at the sample it just solved, in the
+// world: clamped, turned by the heading it expressed the command in (progress_monitor.hpp).
+Eigen::Vector2d commandedWorldVelocity(const PatternGenerator& generator) {
+  const double heading = generator.commandFrameHeading();
+  const Eigen::Vector3d& command = generator.clampedCommand();
+  const double c = std::cos(heading), s = std::sin(heading);
+  return {c * command.x() - s * command.y(), s * command.x() + c * command.y()};
 }
 
 }  // namespace
@@ -83,8 +93,9 @@ WalkResult runWalkLoop(OnlineWalkingGenerator& generator, const WalkRequest& req
   for (FootSide side : {FootSide::kLeft, FootSide::kRight})
     out.footsteps.push_back({0.0, generator.patternGenerator().footPose(side), side});
 
-  bool fallen = false;
-  for (int k = 0; k < iterations && !fallen; ++k) {
+  ProgressMonitor progress(parameters, request.generator);
+  bool fallen = false, stopped_blocked = false;
+  for (int k = 0; k < iterations && !fallen && !stopped_blocked; ++k) {
     Eigen::Vector3d command = Eigen::Vector3d::Zero();
     if (!commands.nextCommand(k, k * T, generator, command)) break;
     generator.setCommand(command);
@@ -108,24 +119,47 @@ WalkResult runWalkLoop(OnlineWalkingGenerator& generator, const WalkRequest& req
         const MpcIterationLog& log = generator.lastIteration();
         out.mpc.push_back(log);
         out.mpc.back().command = command;  // the metrics of a goal walk track it (METRICS.md)
+        const Eigen::Vector2d velocity = commandedWorldVelocity(generator.patternGenerator());
+        out.mpc.back().commanded_velocity = velocity;
         if (result.success && iterationStatusFailsWalk(log.status)) {
           result.success = false;
           result.message = std::string("NMPC iteration at t = ") + std::to_string(sample.time) +
                            " s ended with status '" + iterationStatusName(log.status) + "'";
         }
+        progress.addSample(sample.time, sample.com_position.head<2>(), velocity);
       }
       if (observer) observer->afterStep(generator, sample);
       appendControlSample(sample, out);
       if (generator.landed()) out.footsteps.push_back(generator.lastLanding());
+      // Found blocked: this sampling instant closes the walk (it is recorded, as a fall's).
+      if (sample.nmpc_sample && request.generator.stop_when_blocked && progress.blocked()) {
+        stopped_blocked = true;
+        break;
+      }
     }
   }
   if (result.success && generator.obstacleDistance())
     checkLandingsClear(parameters, request, *generator.obstacleDistance(), result);
-  if (!fallen) {
+  if (!fallen && !stopped_blocked) {
     // The sample at the end belongs to the last period: a swing foot still in the air is
     // where its polynomial puts it (not back at its lift-off pose).
     generator.setPushAcceleration(request.pushAccelerationAt(generator.time()));
     appendControlSample(generator.currentSample(), out);
+  }
+  progress.finish(out.time.back(), out.com.back().head<2>());
+  result.progress_ratio = progress.progressRatio();
+  // A fall ends the walk by itself (its outcome); a command source that reached its target
+  // made its progress (CommandSource::reachedTarget).
+  if (!fallen && progress.blocked() && !commands.reachedTarget()) {
+    result.blocked = true;
+    result.blocked_since = progress.blockedSince();
+    result.blocked_position = progress.blockedPosition();
+    result.stopped_blocked = stopped_blocked;
+    result.blocked_description = progress.describeBlocked();
+    if (result.success) {
+      result.success = false;
+      result.message = "the robot is blocked: " + result.blocked_description;
+    }
   }
   return result;
 }

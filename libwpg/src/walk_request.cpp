@@ -96,6 +96,11 @@ void GeneratorSettings::validate() const {
     fail("generator.fall_capture_distance", "a positive distance in m", str(g.fall_capture_distance));
   if (!(g.slack_weight > 0.0) || !std::isfinite(g.slack_weight))
     fail("generator.slack_weight", "a positive number", str(g.slack_weight));
+  if (g.blocked_window_cycles < 1 || g.blocked_window_cycles > kMaxBlockedWindowCycles)
+    fail("generator.blocked_window_cycles", "an integer in [1, 100] (gait cycles)",
+         str(g.blocked_window_cycles));
+  if (!(g.blocked_progress > 0.0 && g.blocked_progress < 1.0))
+    fail("generator.blocked_progress", "a ratio in (0, 1)", str(g.blocked_progress));
 }
 
 }  // namespace wpg

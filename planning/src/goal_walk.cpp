@@ -227,6 +227,11 @@ class GoalCommands final : public CommandSource {
     return !(no_route_ && generator.patternGenerator().standing() && k > 0);
   }
 
+  // A walk that reached its goal made its progress: the turn on the spot at the goal
+  // (align_yaw) holds the robot where it stands with a small linear command, which the
+  // progress monitor would read as no progress (walk_loop.hpp).
+  bool reachedTarget() const override { return result_.goal_reached; }
+
  private:
   static PathFollowerSettings withLookahead(PathFollowerSettings settings,
                                             const wpg::GoalRequest& goal) {
@@ -361,15 +366,26 @@ GoalWalkResult walkToGoal(const wpg::WalkingParameters& parameters, const wpg::W
   result.final_distance = (stand - goal.goal.position).norm();
   result.final_yaw_error =
       goal.goal.has_yaw ? std::abs(wrapAngle(last.free_flyer_yaw - goal.goal.yaw)) : 0.0;
-  if (!result.goal_reached && walk.success) {
+  // The walk loop's blocked verdict is part of why the goal was missed: the message says both.
+  const std::string blocked =
+      walk.blocked ? "the robot is blocked: " + walk.blocked_description : std::string();
+  if (!result.goal_reached && (walk.success || (walk.blocked && walk.message == blocked))) {
     walk.success = false;  // the dataset's success and message say why the goal was missed
-    walk.message = "goal not reached: " +
-                   (result.outcome.empty() ? std::string("out of time") : result.outcome);
+    if (walk.stopped_blocked) {  // generator.stop_when_blocked ended it there
+      walk.message = "goal not reached: " + blocked;
+    } else {
+      walk.message = "goal not reached: " +
+                     (result.outcome.empty() ? std::string("out of time") : result.outcome) +
+                     (blocked.empty() ? "" : "; " + blocked);
+    }
   }
   if (result.goal_reached) {
     result.outcome = "reached";
   } else if (fallen) {
     result.outcome = "fell: " + walk.message;
+  } else if (walk.stopped_blocked) {  // generator.stop_when_blocked ended it
+    result.outcome = "blocked at t = " + format(walk.trajectory.time.back(), 1) + " s, " +
+                     format(result.final_distance) + " m from the goal";
   } else if (result.outcome.empty()) {
     result.outcome = "out of time: " + format(result.final_distance) + " m from the goal after " +
                      format(request.duration, 1) + " s";

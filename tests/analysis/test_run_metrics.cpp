@@ -1,8 +1,9 @@
 // computeRunMetrics on hand-made trajectories whose metrics are known in closed form, the
 // quantile's interpolation, and the metric table (names unique, every field listed once).
+#include <algorithm>
 #include <cmath>
-#include <limits>
 #include <cstddef>
+#include <limits>
 #include <set>
 #include <string>
 
@@ -37,6 +38,14 @@ wpg::WalkTrajectory straightLine(std::size_t samples, double velocity, const Eig
   return t;
 }
 
+// The result of a walk with this trajectory and verdict.
+wpg::WalkResult walkResult(wpg::WalkTrajectory t, bool success = true) {
+  wpg::WalkResult result;
+  result.trajectory = std::move(t);
+  result.success = success;
+  return result;
+}
+
 }  // namespace
 
 TEST(RunMetrics, QuantileInterpolatesBetweenOrderStatistics) {
@@ -63,7 +72,7 @@ TEST(RunMetrics, HandMadeWalk) {
     log.solve_time = 1e-5 * (k + 1);
     t.mpc.push_back(log);
   }
-  const RunMetrics m = computeRunMetrics(w, request, t, false, nullptr);
+  const RunMetrics m = computeRunMetrics(w, request, walkResult(t, false), nullptr);
   EXPECT_EQ(m.success, 0.0);
   EXPECT_NEAR(m.distance, v * 999 * w.control_period, 1e-12);
   // the CoM's mean velocity is v, the reference 0.25: error 0.05 at every sample
@@ -115,28 +124,28 @@ TEST(RunMetrics, VelocityErrorLeavesOutTheStartAndFollowsIterationCommands) {
   const auto commanded = wpg::analysis::VelocityReference::kIterationCommands;
   const wpg::WalkRequest goal_walk;  // no schedule: a walk to a goal
   wpg::WalkTrajectory t = walk(1400);
-  const RunMetrics m = computeRunMetrics(w, goal_walk, t, true, nullptr, commanded);
+  const RunMetrics m = computeRunMetrics(w, goal_walk, walkResult(t), nullptr, commanded);
   // The windows begin one cycle after the first command (1 s + 1.6 s) or later: the CoM walks
   // the command in all of them. Those that began earlier had errors up to 0.1 (the lag).
   EXPECT_NEAR(m.velocity_error_rms, 0.0, 1e-12);
   EXPECT_NEAR(m.velocity_error_max, 0.0, 1e-12);
   // The same walk on the request's schedule (none: zero): the CoM's 0.2 m/s is the error.
-  const RunMetrics scheduled = computeRunMetrics(w, goal_walk, t, true, nullptr);
+  const RunMetrics scheduled = computeRunMetrics(w, goal_walk, walkResult(t), nullptr);
   EXPECT_NEAR(scheduled.velocity_error_max, 0.2, 1e-12);
   // A command that changes mid-walk is measured as it was given: 0.3 m/s from 5 s on, which
   // the CoM does not follow, an error ramping up to 0.1 over one cycle.
   for (std::size_t k = 50; k < t.mpc.size(); ++k) t.mpc[k].command.x() = 0.3;
-  const RunMetrics changed = computeRunMetrics(w, goal_walk, t, true, nullptr, commanded);
+  const RunMetrics changed = computeRunMetrics(w, goal_walk, walkResult(t), nullptr, commanded);
   EXPECT_NEAR(changed.velocity_error_max, 0.1, 1e-12);
   EXPECT_GT(changed.velocity_error_rms, 0.01);
   // Commands not known (a file that does not store them): NaN, never a guess.
   t.mpc[3].command.setConstant(std::numeric_limits<double>::quiet_NaN());
-  const RunMetrics unknown = computeRunMetrics(w, goal_walk, t, true, nullptr, commanded);
+  const RunMetrics unknown = computeRunMetrics(w, goal_walk, walkResult(t), nullptr, commanded);
   EXPECT_TRUE(std::isnan(unknown.velocity_error_rms));
   EXPECT_TRUE(std::isnan(unknown.velocity_error_max));
   // Too short to hold a window after the start (3.5 s < 1 s + 2 cycles): NaN.
-  EXPECT_TRUE(std::isnan(
-      computeRunMetrics(w, goal_walk, walk(700), true, nullptr, commanded).velocity_error_rms));
+  EXPECT_TRUE(std::isnan(computeRunMetrics(w, goal_walk, walkResult(walk(700)), nullptr, commanded)
+                             .velocity_error_rms));
 }
 
 TEST(RunMetrics, StepsObstaclesAndZmpError) {
@@ -163,7 +172,7 @@ TEST(RunMetrics, StepsObstaclesAndZmpError) {
   wpg::analysis::ZmpErrorComparison zmp;
   zmp.before = {0.02, 0.05};
   zmp.after = {0.004, 0.01};
-  const RunMetrics m = computeRunMetrics(w, request, t, true, &zmp);
+  const RunMetrics m = computeRunMetrics(w, request, walkResult(t), &zmp);
   EXPECT_NEAR(m.yaw_bound_margin_min, w.max_step_yaw_change - 0.03, 1e-15);
   // (0.1, 0.25) in the left feasibility polygon (eq. 14): its nearest edge is y = 0.2, 0.05 m
   // away (the others are 0.089 m and more)
@@ -173,6 +182,57 @@ TEST(RunMetrics, StepsObstaclesAndZmpError) {
               std::hypot(0.9, 0.155) - 0.2 - 0.05 - w.obstacle_foot_radius, 1e-12);
   EXPECT_DOUBLE_EQ(m.zmp_error_rms_before, 0.02);
   EXPECT_DOUBLE_EQ(m.zmp_error_max_after, 0.01);
+}
+
+// progress_ratio (METRICS.md): the CoM's displacement along the commanded world velocity of
+// each NMPC row, over the commanded distance, over the rows with a linear command whose next
+// sampling instant is a sample of the walk.
+TEST(RunMetrics, ProgressRatioOfAStraightAndOfABlockedWalk) {
+  wpg::WalkingParameters w;  // T = 0.1 s, 5 ms samples: 20 samples a row
+  // 10 s at 0.2 m/s along x, commanded (0.2, 0) from the first row on: every period walks its
+  // command.
+  wpg::WalkTrajectory t = straightLine(2001, 0.2, Eigen::Vector2d::Zero(), w.control_period);
+  for (int k = 0; k < 100; ++k) {
+    wpg::MpcIterationLog log;
+    log.time = 0.1 * k;
+    log.commanded_velocity = Eigen::Vector2d(0.2, 0.0);
+    t.mpc.push_back(log);
+  }
+  EXPECT_NEAR(computeRunMetrics(w, {}, walkResult(t), nullptr).progress_ratio, 1.0, 1e-12);
+  // Standing still for the first second (no command in rows 0-9): those rows do not count.
+  for (int k = 0; k < 10; ++k) t.mpc[k].commanded_velocity.setZero();
+  for (std::size_t i = 0; i < t.size(); ++i) t.com[i].x() = std::max(0.0, 0.2 * (t.time[i] - 1.0));
+  EXPECT_NEAR(computeRunMetrics(w, {}, walkResult(t), nullptr).progress_ratio, 1.0, 1e-12);
+  // Blocked at x = 0.3 m from 2.5 s on: 0.3 m walked of the 1.8 m commanded from 1 s to 10 s.
+  for (std::size_t i = 0; i < t.size(); ++i) t.com[i].x() = std::min(t.com[i].x(), 0.3);
+  EXPECT_NEAR(computeRunMetrics(w, {}, walkResult(t), nullptr).progress_ratio, 0.3 / 1.8, 1e-12);
+  // A command across the motion: no progress along it; sideways commanded, x walked.
+  for (wpg::MpcIterationLog& log : t.mpc) {
+    if (log.commanded_velocity.norm() > 0.0) log.commanded_velocity = Eigen::Vector2d(0.0, 0.2);
+  }
+  EXPECT_NEAR(computeRunMetrics(w, {}, walkResult(t), nullptr).progress_ratio, 0.0, 1e-12);
+  // No linear command at all (turning on the spot): it does not apply.
+  for (wpg::MpcIterationLog& log : t.mpc) log.commanded_velocity.setZero();
+  EXPECT_TRUE(std::isnan(computeRunMetrics(w, {}, walkResult(t), nullptr).progress_ratio));
+  // Not stored (a file written before it was): NaN, never a guess.
+  t.mpc[5].commanded_velocity.setConstant(std::numeric_limits<double>::quiet_NaN());
+  EXPECT_TRUE(std::isnan(computeRunMetrics(w, {}, walkResult(t), nullptr).progress_ratio));
+}
+
+TEST(RunMetrics, BlockedAndSinceFromTheVerdict) {
+  wpg::WalkingParameters w;
+  wpg::WalkResult walk =
+      walkResult(straightLine(10, 0.0, Eigen::Vector2d::Zero(), w.control_period));
+  RunMetrics m = computeRunMetrics(w, {}, walk, nullptr);
+  EXPECT_EQ(m.blocked, 0.0);
+  EXPECT_TRUE(std::isnan(m.blocked_since));  // does not apply
+  walk.success = false;
+  walk.blocked = true;
+  walk.blocked_since = 12.3;
+  m = computeRunMetrics(w, {}, walk, nullptr);
+  EXPECT_EQ(m.success, 0.0);
+  EXPECT_EQ(m.blocked, 1.0);
+  EXPECT_EQ(m.blocked_since, 12.3);
 }
 
 TEST(RunMetrics, TableListsEveryFieldOnceWithAUnit) {

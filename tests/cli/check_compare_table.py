@@ -4,7 +4,8 @@ its runs, recomputed with h5py + numpy from the run groups (not from the table's
   rows and numbers (10 significant digits);
 - success rate = goal_reached attributes / runs; time to goal median, q1, q3 (numpy's linear
   percentile) over the reached runs; clearance_min = least checks/step_centre_clearance;
-  runs with a step centre inside a margin (< -1e-9 m);
+  runs with a step centre inside a margin (< -1e-9 m); runs that ended blocked (their
+  `blocked` attribute);
 - every run's planner seed is its study seed; the obstacles of the world named `field` (a
   random field in tests/cli/studies/compare_small.yaml) differ between seeds, those of every
   other world do not.
@@ -47,9 +48,10 @@ def main():
         obstacles_by_world = {}
         for r, (world, variant) in enumerate(rows):
             members = [n for n, w, v in zip(names, run_world, run_variant) if w == world and v == variant]
-            reached, times, clearances = 0, [], []
+            reached, blocked, times, clearances = 0, 0, [], []
             for name in members:
                 run = f["runs"][name]
+                blocked += int(run.attrs["blocked"])
                 seed = int(run_seed[names.index(name)])
                 if int(run["plans"].attrs["seed"]) != seed:
                     errors.append("%s: planner seed %d, study seed %d" % (name, run["plans"].attrs["seed"], seed))
@@ -62,6 +64,7 @@ def main():
                 "runs": len(members),
                 "reached": reached,
                 "success_rate": reached / len(members),
+                "blocked": blocked,
                 "time_to_goal_median": float(np.percentile(times, 50)) if times else math.nan,
                 "time_to_goal_q1": float(np.percentile(times, 25)) if times else math.nan,
                 "time_to_goal_q3": float(np.percentile(times, 75)) if times else math.nan,

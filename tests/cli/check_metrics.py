@@ -136,6 +136,24 @@ def recompute(run, scenario):
     sides = run["footstep_side"][:]
     m = {}
     m["success"] = float(run.attrs["success"])
+    # Stuck is an outcome: the run group's verdict (absent from older files: not blocked).
+    m["blocked"] = float(run.attrs.get("blocked", 0))
+    m["blocked_since"] = float(run.attrs["blocked_since"]) if m["blocked"] == 1 else math.nan
+    # progress_ratio: over the NMPC rows with a linear command (> 1e-3 m/s) whose next
+    # sampling instant is a sample of the walk, the CoM's displacement to it along the
+    # commanded world velocity, over the commanded distance.
+    m["progress_ratio"] = math.nan
+    if "commanded_velocity" in run["mpc"]:
+        T = w["sampling_period"]
+        sub = int(round(T / w["control_period"]))
+        velocity = run["mpc"]["commanded_velocity"][:]
+        rows = np.round(run["mpc"]["time"][:] / w["control_period"]).astype(int)
+        keep = (rows + sub <= len(t) - 1) & (np.linalg.norm(velocity, axis=1) > 1e-3)
+        d = velocity[keep] * T
+        length = np.linalg.norm(d, axis=1)
+        if length.sum() > 0:
+            walked = np.sum(np.sum((com[rows[keep] + sub, :2] - com[rows[keep], :2]) * d, axis=1) / length)
+            m["progress_ratio"] = float(walked / length.sum())
     m["distance"] = float(np.hypot(*(com[-1, :2] - com[0, :2])))
     m["path_length"] = float(np.sum(np.hypot(*np.diff(com[:, :2], axis=0).T)))
     m["steps"] = float(max(len(steps) - 2, 0))

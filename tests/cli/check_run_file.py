@@ -85,6 +85,24 @@ def main():
                     # a family's bit is set exactly when its slack is positive (above rounding)
                     check(np.array_equal((slack[()] > 1e-9).any(axis=1), relaxed != 0),
                           where + "/mpc/relaxed_families disagrees with slack")
+                velocity = mpc.get("commanded_velocity")
+                if check(velocity is not None, where + "/mpc/commanded_velocity missing"):
+                    check(velocity.shape == (k, 2), "%s/mpc/commanded_velocity shape %s, expected %s"
+                          % (where, velocity.shape, (k, 2)))
+                    check(np.all(np.isfinite(velocity[()])), where + "/mpc/commanded_velocity not finite")
+            # Stuck is an outcome: blocked 0 or 1, where and since when only when 1.
+            blocked = run.attrs.get("blocked")
+            if check(blocked in (0, 1), "%s:blocked is %r, expected 0 or 1" % (where, blocked)):
+                for key in ("blocked_since", "blocked_x", "blocked_y"):
+                    present = key in run.attrs
+                    check(present == (blocked == 1), "%s:%s %s with blocked %d"
+                          % (where, key, "present" if present else "missing", blocked))
+                    if present:
+                        check(np.isfinite(run.attrs[key]), "%s:%s not finite" % (where, key))
+                if blocked == 1:
+                    check(int(run.attrs["success"]) == 0, where + ": blocked but success 1")
+            if "progress_ratio" in run.attrs:
+                check(np.isfinite(run.attrs["progress_ratio"]), where + ":progress_ratio not finite")
 
 
 if __name__ == "__main__":

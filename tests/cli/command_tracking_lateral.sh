@@ -3,7 +3,8 @@
 # the left from 1 s) walked for 30 s: in steady state (datasets/METRICS.md, steady_*: whole gait
 # cycles from 16 s on) the CoM moves at >= 90 % of the command to the left, within 0.01 m/s
 # forwards, without turning (steady_tracking <= 1; measured 0.101 m/s; the paper's
-# instantaneous J1, one key away, 0.005 m/s), and `wpg analyze` agrees with the recomputation
+# instantaneous J1, one key away, 0.005 m/s: it steps in place and ends blocked, exit 1, since
+# 2.6 s, the first window judged), and `wpg analyze` agrees with the recomputation
 # of check_metrics.py. The shipped 10 s walk covers >= 0.3 m (measured 0.42 m; 0.001 m before
 # the default J1 followed lateral commands).
 set -euo pipefail
@@ -13,8 +14,11 @@ wpg="$1"
 make_workdir
 cd "$WORKDIR"
 "$wpg" run walk_sideways --set duration=30 --no-plot -o sideways.h5 >/dev/null || fail "run: exit $?"
+status=0
 "$wpg" run walk_sideways --set duration=30 --set walking.velocity_tracking=instantaneous \
-  --no-plot -o paper.h5 >/dev/null || fail "run (paper's J1): exit $?"
+  --no-plot -o paper.h5 >/dev/null 2>paper.err || status=$?
+[[ $status == 1 ]] && grep -q "the robot is blocked: .*, since t = 2.6 s" paper.err \
+  || fail "run (paper's J1): exit $status, expected 1 (blocked since 2.6 s): $(cat paper.err)"
 "$wpg" run walk_sideways --no-plot -o shipped.h5 >/dev/null || fail "run (shipped): exit $?"
 for file in sideways.h5 paper.h5; do
   "$wpg" analyze "$file" --format json >"$file.json" || fail "analyze $file: exit $?"

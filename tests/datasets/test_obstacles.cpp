@@ -235,7 +235,8 @@ TEST(ShippedObstacleScenarios, LoadAndRoundTrip) {
                  {"obstacle_gap", 2},
                  {"obstacle_enclosure", 3},
                  {"obstacle_turning", 1},
-                 {"obstacle_lateral", 1}};
+                 {"obstacle_lateral", 1},
+                 {"obstacle_wall", 1}};
   const std::string path = (fs::temp_directory_path() /
                             ("wpg_test_obstacles_resolved_" + std::to_string(::getpid()) + ".yaml"))
                                .string();

@@ -119,6 +119,39 @@ TEST_F(ScenarioRun, AFailedWalkIsAResultWithItsOutcome) {
   EXPECT_EQ(wpg_test::intAttribute(file.openGroup("/runs/walk_forward"), "success"), 0);
 }
 
+// Stuck is an outcome: the wall with no way round is blocked (exit 1), its dataset says so,
+// and the metrics read back are the result's; the whole walk's progress ratio the monitor
+// summed during the walk is the metric analysis/ recomputes from the trajectory, bit for bit.
+TEST_F(ScenarioRun, ABlockedWalkIsAResultWithItsOutcome) {
+  const Scenario scenario = shipped("obstacle_wall", {});
+  const RunResult result = wpg::engine::runScenario(scenario, {wpg_test::kRobotsDir, nullptr});
+  EXPECT_EQ(result.outcome, RunOutcome::kBlocked);
+  EXPECT_STREQ(wpg::engine::runOutcomeName(result.outcome), "blocked");
+  EXPECT_EQ(result.exitStatus(), 1);
+  EXPECT_EQ(result.failure, result.walk.result.message);
+  EXPECT_EQ(result.metrics.blocked, 1.0);
+  EXPECT_EQ(result.metrics.blocked_since, result.walk.result.blocked_since);
+  EXPECT_EQ(result.metrics.progress_ratio, result.walk.result.progress_ratio);
+  wpg::engine::writeRunDataset(path("wall.h5"), scenario, result);
+  const H5::H5File file(path("wall.h5"), H5F_ACC_RDONLY);
+  const H5::Group run = file.openGroup("/runs/obstacle_wall");
+  EXPECT_EQ(wpg_test::intAttribute(run, "blocked"), 1);
+  EXPECT_EQ(wpg_test::intAttribute(run, "success"), 0);
+  const std::vector<wpg::engine::StoredRunMetrics> stored =
+      wpg::engine::analyzeRunFile(path("wall.h5"), wpg_test::kRobotsDir);
+  ASSERT_EQ(stored.size(), 1u);
+  for (const wpg::analysis::MetricDefinition& metric : wpg::analysis::runMetricTable()) {
+    expectSame(result.metrics.*metric.field, stored[0].metrics.*metric.field, metric.name);
+  }
+  // A walk that makes progress: not blocked, its ratio the metric's too.
+  const RunResult walk =
+      wpg::engine::runScenario(shipped("walk_forward", {}), {wpg_test::kRobotsDir, nullptr});
+  EXPECT_EQ(walk.outcome, RunOutcome::kSucceeded);
+  EXPECT_EQ(walk.metrics.blocked, 0.0);
+  EXPECT_TRUE(std::isnan(walk.metrics.blocked_since));
+  EXPECT_EQ(walk.metrics.progress_ratio, walk.walk.result.progress_ratio);
+}
+
 TEST_F(ScenarioRun, TheSameScenarioGivesTheSameWalk) {
   // 5 s: the velocity error's first window, one gait cycle after the start at 1 s, ends at 4.2 s.
   const Scenario scenario = shipped("walk_forward", {"duration=5"});

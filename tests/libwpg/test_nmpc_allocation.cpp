@@ -588,4 +588,30 @@ TEST(NmpcAllocation, WalkLoopIterations) {
   EXPECT_TRUE(pushed) << "the push must act inside the counted iterations";
 }
 
+// The progress monitor (wpg/progress_monitor.hpp) fed at every NMPC sample while the robot
+// is blocked: walking into a wall with no way round, counted from 10 s to 25 s (found blocked
+// at 13.7 s), the windows judged and the stretch kept without allocating.
+TEST(NmpcAllocation, WalkLoopIterationsWhileBlocked) {
+  if (!counterAvailable()) GTEST_SKIP() << "no allocation counter (needs glibc or ASan)";
+  WalkingParameters w;
+  wpg::WalkRequest request;
+  request.duration = 30.0;
+  request.reference = {{0.0, Vector3d::Zero()}, {1.0, Vector3d(0.2, 0.0, 0.0)}};
+  wpg::Obstacle wall;
+  wall.type = wpg::ObstacleType::kBox;
+  wall.center = Eigen::Vector2d(2.0, 0.0);
+  wall.size = Eigen::Vector2d(0.3, 6.0);
+  wall.margin = 0.2;
+  request.obstacles = {wall};
+  request.validate();
+  wpg::OnlineWalkingGenerator generator(w, request.generator);
+  generator.setObstacles(request.obstacles);
+  CountingCommands commands(request, 100, 250);
+  const wpg::WalkResult result = wpg::runWalkLoop(generator, request, commands);
+  EXPECT_EQ(commands.counts.allocations, 0)
+      << "malloc/calloc/realloc calls in the walk loop while blocked";
+  EXPECT_TRUE(result.blocked) << result.message;
+  EXPECT_LT(result.blocked_since + 4.8, 25.0);  // found inside the counted iterations
+}
+
 }  // namespace

@@ -204,7 +204,11 @@ TEST(VelocityWindow, TheDefaultWalksSidewaysAtTheCommandThePapersJ1DoesNot) {
     request.duration = 20.0;
     request.reference = {{0.0, Eigen::Vector3d::Zero()}, {1.0, Eigen::Vector3d(0.0, 0.1, 0.0)}};
     const wpg::WalkResult result = wpg::generateWalk(parameters, request);
-    EXPECT_TRUE(result.success) << result.message;
+    // Stepping in place at a twentieth of the command, the paper's J1 (and the short window)
+    // end blocked (wpg/progress_monitor.hpp); nothing else fails any of the three walks.
+    EXPECT_EQ(result.blocked, tracking != wpg::VelocityTracking::kWithSway) << result.message;
+    EXPECT_TRUE(result.success || result.message.rfind("the robot is blocked: ", 0) == 0)
+        << result.message;
     return lateralSpeed(result.trajectory, 8.0);
   };
   const double paper = sideways(wpg::VelocityTracking::kInstantaneous);

@@ -90,6 +90,45 @@ TEST(ShippedGoalWalks, TheUTrapHoldsARobotCommandedStraightAtTheGoal) {
   // Held inside the U, short of its back wall (x = 2.5): the goal (4.2, 0) stays > 1.5 m away.
   EXPECT_LT(walk.final_pose.x(), 2.5);
   EXPECT_GT(walk.final_distance, 1.5);
+  // Stuck is an outcome: blocked from the window that starts at 7.8 s, in front of the back
+  // wall; the goal's own outcome stays (out of time) and the message says both.
+  EXPECT_TRUE(walk.walk.blocked);
+  EXPECT_NEAR(walk.walk.blocked_since, 7.8, 1e-9);
+  EXPECT_LT(walk.walk.blocked_position.x(), 2.5);
+  EXPECT_EQ(walk.walk.message.rfind("goal not reached: out of time; the robot is blocked: ", 0), 0u)
+      << walk.walk.message;
+  EXPECT_NE(walk.walk.message.find("since t = 7.8 s"), std::string::npos) << walk.walk.message;
+  EXPECT_LT(walk.walk.progress_ratio, 0.2);
+}
+
+// generator.stop_when_blocked ends the goal walk at the sample it is found blocked (one window
+// after its start), with that as the goal's outcome instead of running out the 90 s.
+TEST(ShippedGoalWalks, StopWhenBlockedEndsTheTrappedGoalWalk) {
+  const wpg::datasets::Scenario scenario =
+      load("goal_u_trap", {"planner.algorithm=none", "generator.stop_when_blocked=true"});
+  const wpg::planning::GoalWalkResult walk =
+      wpg::planning::walkToGoal(scenario.walking, scenario.request, scenario.goal);
+  EXPECT_FALSE(walk.goal_reached);
+  ASSERT_TRUE(walk.walk.blocked);
+  EXPECT_TRUE(walk.walk.stopped_blocked);
+  EXPECT_NEAR(walk.walk.blocked_since, 7.8, 1e-9);
+  EXPECT_NEAR(walk.walk.trajectory.time.back(), 7.8 + 4.8, 1e-9);
+  EXPECT_EQ(walk.outcome.rfind("blocked at t = 12.6 s, ", 0), 0u) << walk.outcome;
+}
+
+// The shipped goal walks reach their goals unblocked (goal_with_yaw ends with its turn on the
+// spot at the goal), walking most of what their commands ask for.
+TEST(ShippedGoalWalks, GoalWalksThatReachTheirGoalAreNotBlocked) {
+  for (const char* name :
+       {"goal_cluttered", "goal_u_trap", "goal_unknown_obstacle", "goal_with_yaw"}) {
+    const wpg::datasets::Scenario scenario = load(name);
+    const wpg::planning::GoalWalkResult walk =
+        wpg::planning::walkToGoal(scenario.walking, scenario.request, scenario.goal);
+    ASSERT_TRUE(walk.goal_reached) << name << ": " << walk.outcome;
+    EXPECT_FALSE(walk.walk.blocked) << name;
+    EXPECT_TRUE(walk.walk.success) << name << ": " << walk.walk.message;
+    EXPECT_GT(walk.walk.progress_ratio, 0.5) << name;
+  }
 }
 
 }  // namespace

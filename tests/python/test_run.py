@@ -98,6 +98,37 @@ def test_a_failed_walk_is_a_result(cli, tmp_path):
     assert cli("diff", tmp_path / "cli.h5", tmp_path / "failed.h5").returncode == 0
 
 
+def test_a_blocked_walk_says_so_and_reads_back_the_same(cli, tmp_path):
+    # The wall with no way round: the robot steps in place in front of it, every NMPC
+    # iteration solved; the walk ends blocked (exit 1), since the start of the first window
+    # without progress.
+    run = wpg.run("obstacle_wall")
+    assert run.outcome == "blocked" and run.blocked is True
+    assert run.success is False and run.exit_code == 1
+    assert set(run.mpc.status) == {"solved"}
+    assert run.blocked_since == pytest.approx(8.9, abs=1e-9)
+    i = int(np.argmin(abs(run.time - run.blocked_since)))
+    assert run.blocked_position == tuple(run.com[i, :2])
+    assert run.message.startswith("the robot is blocked: ") and "since t = 8.9 s" in run.message
+    metrics = run.metrics
+    assert metrics["blocked"] == 1 and metrics["blocked_since"] == run.blocked_since
+    assert 0.2 < metrics["progress_ratio"] < 0.3
+    # The commanded velocity the progress is measured along: 0.2 m/s along x from 1 s on.
+    mpc = run.mpc
+    assert (mpc.commanded_vx[mpc.time >= 1.0] == 0.2).all() and (mpc.commanded_vy == 0).all()
+    run.save(tmp_path / "wall.h5")
+    back = wpg.io.load_run(tmp_path / "wall.h5")
+    assert back.outcome == "blocked" and back.blocked_since == run.blocked_since
+    assert back.blocked_position == run.blocked_position
+    assert back.metrics["progress_ratio"] == metrics["progress_ratio"]
+    # A walk that makes progress: not blocked, nothing to say where.
+    walk = wpg.run("walk_forward", overrides={"duration": 6})
+    assert walk.outcome == "succeeded" and walk.blocked is False
+    assert walk.blocked_since is None and walk.blocked_position is None
+    assert walk.metrics["blocked"] == 0 and np.isnan(walk.metrics["blocked_since"])
+    assert 0.7 < walk.metrics["progress_ratio"] < 0.8  # 0.76: the start from rest lags the command
+
+
 def test_replay_and_filter_add_the_multibody_arrays(cli, tmp_path):
     run = wpg.run("walk_forward", overrides={"duration": 3}, replay=True, filter=True)
     n = len(run.time)

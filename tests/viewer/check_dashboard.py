@@ -5,7 +5,8 @@ headless Chromium with the network off.
 - a comparison study: the box plots and the success rates draw every world x variant of the
   file's /compare attributes, each with all its seeds, and a top view per world x seed, its
   caption "seed S · R/N reached" (words apart, as read aloud or copied) with the seed and
-  the count of the file's goal_reached for that world and seed;
+  the count of the file's goal_reached for that world and seed, then " · B blocked" when B > 0
+  of its runs ended blocked (the summary's `blocked`);
   a batch: a top view per run;
 - every run of /batch/summary has its page beside the dashboard (PAGE_runs/<run>.html), and
   the first one opens without error at #t=1 (its script, shared in PAGE_runs/, is found).
@@ -40,13 +41,16 @@ def main():
             seeds = len(f["compare"].attrs["seeds"])
             summary = f["batch/summary"]
             text = lambda column: [v.decode() if isinstance(v, bytes) else str(v) for v in summary[column][()]]
-            # (world, seed) -> [runs that reached the goal, runs], in the study's order.
+            # (world, seed) -> [runs that reached the goal, runs, runs that ended blocked], in the
+            # study's order.
             captions = {}
-            for world, seed, reached in zip(text("sweep.world"), text("sweep.seed"),
-                                            summary["goal_reached"][()]):
-                counts = captions.setdefault((world, float(seed)), [0, 0])
+            for world, seed, reached, blocked in zip(text("sweep.world"), text("sweep.seed"),
+                                                     summary["goal_reached"][()],
+                                                     summary["blocked"][()]):
+                counts = captions.setdefault((world, float(seed)), [0, 0, 0])
                 counts[0] += int(reached == 1)
                 counts[1] += 1
+                counts[2] += int(blocked == 1)
     runs_folder = os.path.splitext(page_path)[0] + "_runs"
     for name in names:
         if not os.path.isfile(os.path.join(runs_folder, name + ".html")):
@@ -80,12 +84,13 @@ def main():
             want = list(captions.items())
             if len(shown) != len(want):
                 fail("%d top-view captions, expected %d" % (len(shown), len(want)))
-            for caption, ((world, seed), (reached, runs)) in zip(shown, want):
-                match = re.fullmatch(r"seed (\S+) · (\d+)/(\d+) reached", caption)
+            for caption, ((world, seed), (reached, runs, blocked)) in zip(shown, want):
+                match = re.fullmatch(r"seed (\S+) · (\d+)/(\d+) reached( · (\d+) blocked)?", caption)
                 if not match or float(match.group(1)) != seed or \
-                        (int(match.group(2)), int(match.group(3))) != (reached, runs):
-                    fail("the top view of %s, seed %g: caption %r, expected 'seed %g · %d/%d reached'"
-                         % (world, seed, caption, seed, reached, runs))
+                        (int(match.group(2)), int(match.group(3))) != (reached, runs) or \
+                        int(match.group(5) or 0) != blocked or match.group(5) == "0":
+                    fail("the top view of %s, seed %g: caption %r, expected 'seed %g · %d/%d "
+                         "reached' and %d blocked" % (world, seed, caption, seed, reached, runs, blocked))
             print("top-view captions: %s" % "; ".join(shown))
         elif drawn["topViews"] != min(len(names), 240):
             fail("%d top views, expected one per run (%d)" % (drawn["topViews"], len(names)))

@@ -100,8 +100,7 @@ std::shared_ptr<RunSession> loadStoredRun(const std::string& path, const std::st
   run->scenario = std::move(analyzed.scenario);
   engine::RunResult& result = run->result;
   result.metrics = std::move(analyzed.metrics);
-  result.outcome =
-      stored.result.success ? engine::RunOutcome::kSucceeded : engine::RunOutcome::kWalkFailed;
+  result.outcome = engine::walkOutcome(stored.result);
   result.failure = stored.result.message;
   result.walk.result = std::move(stored.result);
   return run;

@@ -132,7 +132,7 @@ py::dict footstepColumns(const RunSession& run) {
 py::dict mpcColumns(const RunSession& run) {
   const WalkTrajectory& w = run.result.walk.result.trajectory;
   const auto k = static_cast<py::ssize_t>(w.mpc.size());
-  py::array_t<double> time(k), solve_time(k), cost(k);
+  py::array_t<double> time(k), solve_time(k), cost(k), commanded_vx(k), commanded_vy(k);
   py::array_t<std::int32_t> qp(k), sqp(k);
   py::array_t<std::uint8_t> code(k), relaxed(k);
   const auto families = static_cast<py::ssize_t>(w.constraint_families.size());
@@ -144,6 +144,8 @@ py::dict mpcColumns(const RunSession& run) {
     time.mutable_at(i) = log.time;
     solve_time.mutable_at(i) = log.solve_time;
     cost.mutable_at(i) = log.cost;
+    commanded_vx.mutable_at(i) = log.commanded_velocity.x();
+    commanded_vy.mutable_at(i) = log.commanded_velocity.y();
     qp.mutable_at(i) = log.qp_iterations;
     sqp.mutable_at(i) = log.sqp_iterations;
     code.mutable_at(i) = static_cast<std::uint8_t>(log.status);
@@ -162,6 +164,8 @@ py::dict mpcColumns(const RunSession& run) {
   out["sqp_iterations"] = sqp;
   out["cost"] = cost;
   out["relaxed_families"] = relaxed;
+  out["commanded_vx"] = commanded_vx;
+  out["commanded_vy"] = commanded_vy;
   for (py::ssize_t f = 0; f < families; ++f) {
     out[py::str("slack_" + w.constraint_families[f].name)] = slack[f];
   }
@@ -270,15 +274,35 @@ void bindOnline(py::module_& m) {
 void bindRun(py::module_& m) {
   py::class_<RunSession, std::shared_ptr<RunSession>>(m, "RunCore")
       .def_property_readonly("name", [](const RunSession& r) { return r.scenario.name; })
-      .def_property_readonly("success", [](const RunSession& r) { return r.result.exitStatus() == 0; })
+      .def_property_readonly("success",
+                             [](const RunSession& r) { return r.result.exitStatus() == 0; })
       .def_property_readonly("exit_code", [](const RunSession& r) { return r.result.exitStatus(); })
-      .def_property_readonly("outcome", [](const RunSession& r) { return engine::runOutcomeName(r.result.outcome); })
-      .def_property_readonly("message", [](const RunSession& r) { return r.result.walk.result.message; })
-      .def_property_readonly("scenario_yaml", [](const RunSession& r) { return r.scenario.resolved_yaml; })
+      .def_property_readonly(
+          "outcome", [](const RunSession& r) { return engine::runOutcomeName(r.result.outcome); })
+      .def_property_readonly("message",
+                             [](const RunSession& r) { return r.result.walk.result.message; })
+      .def_property_readonly("blocked",
+                             [](const RunSession& r) { return r.result.walk.result.blocked; })
+      .def_property_readonly("blocked_since",
+                             [](const RunSession& r) -> py::object {
+                               const WalkResult& walk = r.result.walk.result;
+                               if (!walk.blocked) return py::none();
+                               return py::float_(walk.blocked_since);
+                             })
+      .def_property_readonly("blocked_position",
+                             [](const RunSession& r) -> py::object {
+                               const WalkResult& walk = r.result.walk.result;
+                               if (!walk.blocked) return py::none();
+                               return py::make_tuple(walk.blocked_position.x(),
+                                                     walk.blocked_position.y());
+                             })
+      .def_property_readonly("scenario_yaml",
+                             [](const RunSession& r) { return r.scenario.resolved_yaml; })
       .def_property_readonly("warnings", [](const RunSession& r) { return r.scenario.warnings; })
       .def_property_readonly("scenario_path", [](const RunSession& r) { return r.scenario_path; })
       .def_property_readonly("stored_file", [](const RunSession& r) { return r.stored_file; })
-      .def_property_readonly("replayed", [](const RunSession& r) { return r.result.replay.has_value(); })
+      .def_property_readonly("replayed",
+                             [](const RunSession& r) { return r.result.replay.has_value(); })
       .def("walk_array", &walkArray)
       .def("replay_array", &replayArray)
       .def("replay_summary", &replaySummary)

@@ -41,8 +41,27 @@ class Run:
 
     @property
     def outcome(self):
-        """"succeeded", "walk_failed" or "replay_failed"."""
+        """"succeeded", "walk_failed", "replay_failed" or "blocked" (the robot stopped making
+        progress along its command and had not resumed at the end: datasets/SCENARIOS.md,
+        generator.blocked_window_cycles)."""
         return self._core.outcome
+
+    @property
+    def blocked(self):
+        """True when the walk ended blocked (the dataset's `blocked` attribute)."""
+        return self._core.blocked
+
+    @property
+    def blocked_since(self):
+        """Start of the blocked stretch [s] (the start of the first window without progress);
+        None when not blocked."""
+        return self._core.blocked_since
+
+    @property
+    def blocked_position(self):
+        """(x, y) of the CoM [m, world] when the blocked stretch started; None when not
+        blocked."""
+        return self._core.blocked_position
 
     @property
     def message(self):
@@ -98,14 +117,16 @@ class Run:
     def mpc(self):
         """pandas.DataFrame, one row per NMPC iteration: time, status (text, e.g. "solved"),
         status_code, solve_time [s, wall time], qp_iterations, sqp_iterations, cost,
-        relaxed_families (bit mask), then slack_<family> per constraint family (its unit in
+        relaxed_families (bit mask), commanded_vx, commanded_vy [m/s, world: the linear command
+        the iteration tracked, as progress is measured along it; NaN when read back from a file
+        without it], then slack_<family> per constraint family (its unit in
         df.attrs["units"])."""
         if "mpc" not in self._cache:
             import pandas as pd
             frame = pd.DataFrame(self._core.mpc_columns())
             units = {"time": "s", "status": "1", "status_code": "1", "solve_time": "s",
                      "qp_iterations": "1", "sqp_iterations": "1", "cost": "1",
-                     "relaxed_families": "1"}
+                     "relaxed_families": "1", "commanded_vx": "m/s", "commanded_vy": "m/s"}
             groups = {}
             for family, unit, group in self._core.constraint_families():
                 units["slack_" + family] = unit

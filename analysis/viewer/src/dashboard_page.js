@@ -155,8 +155,8 @@ export function dashboardPage(app, data) {
 
   // --- top views --------------------------------------------------------------------------
   const [topCard, topBody] = card('Top views', comparison
-    ? 'Every seed of every world: the CoM path of each variant (● reached the goal, ✕ did not). A click opens the run nearest to it.'
-    : 'Every run: its CoM path (● succeeded, ✕ failed). A click opens it.');
+    ? 'Every seed of every world: the CoM path of each variant (● reached the goal, ■ ended blocked, ✕ did not reach it otherwise). A click opens the run nearest to it.'
+    : 'Every run: its CoM path (● succeeded, ■ ended blocked, ✕ failed otherwise). A click opens it.');
   dashboard.append(topCard);
   if (comparison) {
     const key = element('div', { class: 'variant-key' }, data.variants.map((v) => element('span', {}, [element('span', { class: 'swatch', style: `background:${variantColour(v)}` }), v])));
@@ -175,9 +175,11 @@ export function dashboardPage(app, data) {
         }
         if (!items.length) continue;
         const reached = items.filter((i) => i.top.reached).length;
+        const blocked = items.filter((i) => i.top.blocked).length;
         const seedText = Number.isFinite(Number(seed)) ? format(Number(seed), 6) : seed;
         // One text, words apart: the caption reads the same aloud or copied as on the screen.
-        topView(grid, items, element('div', { class: 'caption' }, [element('span', { text: `seed ${seedText} · ${reached}/${items.length} reached` })]), open);
+        const caption = `seed ${seedText} · ${reached}/${items.length} reached` + (blocked ? ` · ${blocked} blocked` : '');
+        topView(grid, items, element('div', { class: 'caption' }, [element('span', { text: caption })]), open);
         published.topViews += 1;
       }
     }
@@ -193,7 +195,9 @@ export function dashboardPage(app, data) {
       for (; shown < until; ++shown) {
         if (!runs[shown]) continue;
         const caption = [names[shown], ...swept.map((c) => `${c.name.slice(6)} ${format(c.values[shown], 3)}`)];
-        topView(grid, [{ top: runs[shown].top, colour: runs[shown].top.success ? '#2563eb' : '#d62728', run: shown, name: names[shown] }],
+        const top = runs[shown].top;
+        const colour = top.success ? '#2563eb' : top.blocked ? '#d97706' : '#d62728';
+        topView(grid, [{ top, colour, run: shown, name: names[shown] }],
           element('div', { class: 'caption', title: caption.join('\n') }, [element('span', { text: caption[0] })]), open, bounds);
         published.topViews += 1;
       }
@@ -207,7 +211,8 @@ export function dashboardPage(app, data) {
   // --- the runs ---------------------------------------------------------------------------
   const [tableCard, tableBody] = card('Runs', 'A click on a header sorts; a click on a run opens it.');
   dashboard.append(tableCard);
-  const shownColumns = ['name', ...swept.map((c) => c.name), ...(columns.goal_reached ? ['goal_reached'] : ['exit_status'])];
+  const shownColumns = ['name', ...swept.map((c) => c.name), ...(columns.goal_reached ? ['goal_reached'] : ['exit_status']),
+    'blocked', 'blocked_since'];
   const table = element('table', { class: 'runs' });
   const tableBox = element('div', { class: 'table-box' }, [table]);
   tableBody.append(tableBox);

@@ -93,7 +93,9 @@ export function topView(container, items, caption, onOpen, bounds = null) {
       const end = [px(p[p.length - 2]), py(p[p.length - 1])];
       g.fillStyle = item.colour;
       g.strokeStyle = item.colour;
-      if (item.top.reached) { g.beginPath(); g.arc(end[0], end[1], 3, 0, 2 * Math.PI); g.fill(); } else {
+      if (item.top.reached) { g.beginPath(); g.arc(end[0], end[1], 3, 0, 2 * Math.PI); g.fill(); } else if (item.top.blocked) {
+        g.fillRect(end[0] - 3.5, end[1] - 3.5, 7, 7);  // stuck: the run ended blocked
+      } else {
         g.beginPath();
         g.moveTo(end[0] - 4, end[1] - 4); g.lineTo(end[0] + 4, end[1] + 4);
         g.moveTo(end[0] + 4, end[1] - 4); g.lineTo(end[0] - 4, end[1] + 4);

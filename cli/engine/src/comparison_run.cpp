@@ -93,6 +93,7 @@ std::vector<datasets::TableColumn> h5Table(const std::vector<analysis::Compariso
 analysis::ComparisonRunSample sampleOf(const datasets::StoredComparisonRun& run) {
   analysis::ComparisonRunSample sample;
   sample.goal_reached = run.goal_reached;
+  sample.blocked = run.blocked;
   sample.time_to_goal = run.time_to_goal;
   sample.walked_length = run.path_length;
   sample.route_length = run.route_length;
@@ -115,6 +116,7 @@ analysis::ComparisonRunSample comparisonSampleOf(const datasets::Scenario& scena
   analysis::ComparisonRunSample sample;
   const std::optional<datasets::GoalOutcome>& goal = result.walk.goal;
   sample.goal_reached = goal && goal->goal_reached;
+  sample.blocked = result.walk.result.blocked;
   sample.time_to_goal = goal ? goal->time_to_goal : kNaN;
   sample.walked_length = result.metrics.path_length;
   sample.steps = result.metrics.steps;

@@ -16,8 +16,14 @@ const char* runOutcomeName(RunOutcome outcome) {
     case RunOutcome::kSucceeded: return "succeeded";
     case RunOutcome::kWalkFailed: return "walk_failed";
     case RunOutcome::kReplayFailed: return "replay_failed";
+    case RunOutcome::kBlocked: return "blocked";
   }
   return "unknown";
+}
+
+RunOutcome walkOutcome(const WalkResult& walk) {
+  if (walk.success) return RunOutcome::kSucceeded;
+  return walk.blocked ? RunOutcome::kBlocked : RunOutcome::kWalkFailed;
 }
 
 RunResult runScenario(const datasets::Scenario& scenario, const RunSettings& settings) {
@@ -51,16 +57,16 @@ RunResult runScenario(const datasets::Scenario& scenario, const RunSettings& set
 
 void evaluateRun(const datasets::Scenario& scenario, RunResult& result) {
   const WalkResult& walk = result.walk.result;
-  result.outcome = walk.success ? RunOutcome::kSucceeded : RunOutcome::kWalkFailed;
+  result.outcome = walkOutcome(walk);
   result.failure = walk.success ? "" : walk.message.empty() ? "the walk failed" : walk.message;
   result.footsteps = checkScenarioFootsteps(scenario, walk);
   result.checks = datasets::computeDatasetChecks(
       scenario, walk.trajectory, result.footsteps ? &result.footsteps->clearances : nullptr);
   analysis::ZmpErrorComparison zmp;
   if (result.replay) zmp = analysis::compareZmpError(result.replay->validation);
-  result.metrics = analysis::computeRunMetrics(
-      scenario.walking, scenario.request, walk.trajectory, walk.success,
-      result.replay ? &zmp : nullptr, velocityReferenceOf(scenario));
+  result.metrics =
+      analysis::computeRunMetrics(scenario.walking, scenario.request, walk,
+                                  result.replay ? &zmp : nullptr, velocityReferenceOf(scenario));
 }
 
 datasets::MultibodyRecord multibodyRecordOf(const ReplayOutcome& replay) {

@@ -26,8 +26,7 @@ StoredRunAnalysis analyzeStoredRun(const std::string& path, const std::string& n
     zmp.after.max = stored.zmp_error->max_after;
   }
   run.metrics = analysis::computeRunMetrics(run.scenario.walking, run.scenario.request,
-                                            stored.result.trajectory, stored.result.success,
-                                            stored.zmp_error ? &zmp : nullptr,
+                                            stored.result, stored.zmp_error ? &zmp : nullptr,
                                             velocityReferenceOf(run.scenario));
   return run;
 }

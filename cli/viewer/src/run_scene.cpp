@@ -75,7 +75,20 @@ std::string subtitleOf(const LoadedRun& run) {
     text += run.scene.goal->reached ? " · goal reached at " + formatSeconds(run.scene.goal->time_to_goal)
                                     : " · goal not reached";
   }
-  text += run.stored.result.success ? " · success" : " · failed: " + run.stored.result.message;
+  const WalkResult& walk = run.stored.result;
+  if (walk.blocked) {
+    // Where and since when (the dataset's blocked_since, blocked_x, blocked_y); the message
+    // only when something else failed the walk first.
+    char where[96];
+    std::snprintf(where, sizeof where, " at (%.2f, %.2f) m", walk.blocked_position.x(),
+                  walk.blocked_position.y());
+    text += " · blocked since t = " + formatSeconds(walk.blocked_since) + where;
+    if (walk.message.find("the robot is blocked: ") == std::string::npos) {
+      text += " · failed: " + walk.message;
+    }
+    return text;
+  }
+  text += walk.success ? " · success" : " · failed: " + walk.message;
   return text;
 }
 
@@ -258,6 +271,7 @@ void writeTopView(Json& json, const LoadedRun& run) {
     json.key("reached").boolean(run.stored.result.success);
   }
   json.key("success").boolean(run.stored.result.success);
+  json.key("blocked").boolean(run.stored.result.blocked);
   json.endObject();
 }
 

@@ -2,6 +2,7 @@
 #include "parameter_fields.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <set>
 
@@ -219,13 +220,12 @@ const std::vector<SettingField<GeneratorSettings>>& generatorSettingFields() {
   using G = GeneratorSettings;
   static const std::vector<SettingField<G>> fields = {
       integerSetting("sqp_iterations", &G::sqp_iterations, 0,
-                     "an integer in [0, 1000] (1 = real-time iteration, 0 = to convergence)",
-                     1000),
+                     "an integer in [0, 1000] (1 = real-time iteration, 0 = to convergence)", 1000),
       integerSetting("max_sqp_iterations", &G::max_sqp_iterations, 1, "an integer in [1, 1000]",
                      1000),
       positiveSetting("sqp_tolerance", &G::sqp_tolerance, "a positive number"),
-      integerSetting("max_qp_iterations", &G::max_qp_iterations, 1,
-                     "an integer in [1, 100000]", 100000),
+      integerSetting("max_qp_iterations", &G::max_qp_iterations, 1, "an integer in [1, 100000]",
+                     100000),
       positiveSetting("slack_weight", &G::slack_weight, "a positive number"),
       positiveSetting("fall_capture_distance", &G::fall_capture_distance,
                       "a positive distance of at most 1e4 m", kMaxLength),
@@ -233,6 +233,12 @@ const std::vector<SettingField<GeneratorSettings>>& generatorSettingFields() {
                      "an integer in [0, 32] (obstacles in the QP at each sample)", 32),
       positiveSetting("obstacle_reach", &G::obstacle_reach, "a positive distance of at most 1e4 m",
                       kMaxLength),
+      integerSetting("blocked_window_cycles", &G::blocked_window_cycles, 1,
+                     "an integer in [1, 100] (gait cycles of the robot's nominal steps)",
+                     kMaxBlockedWindowCycles),
+      // (0, 1): the largest double below 1 is the bound (a ratio of 1 or more is refused).
+      positiveSetting("blocked_progress", &G::blocked_progress, "a ratio in (0, 1)",
+                      std::nextafter(1.0, 0.0)),
   };
   return fields;
 }

@@ -53,6 +53,8 @@ std::string emitResolved(const Scenario& scenario) {
   emitKey(out, "algorithm");
   emitScalar(out, generatorAlgorithmName(generator.algorithm));
   emitSettingFields(out, generatorSettingFields(), generator);
+  emitKey(out, "stop_when_blocked");
+  out << generator.stop_when_blocked;
   out << YAML::EndMap;
 
   if (scenario.goal.enabled) {

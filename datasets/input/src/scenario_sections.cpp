@@ -143,6 +143,7 @@ GeneratorSettings readGenerator(const YAML::Node& node, const Source& source) {
   if (!node.IsDefined()) return settings;
   std::vector<std::string> keys = {"algorithm"};
   for (const std::string& name : settingNames(generatorSettingFields())) keys.push_back(name);
+  keys.push_back("stop_when_blocked");
   const Entries entries = readMap(node, "generator", keys, "a map of generator settings", source,
                                   /*null_is_empty=*/true);
   if (present(entries, "algorithm")) {
@@ -156,6 +157,11 @@ GeneratorSettings readGenerator(const YAML::Node& node, const Source& source) {
     }
   }
   readSettingFields(entries, "generator", generatorSettingFields(), source, &settings);
+  if (present(entries, "stop_when_blocked")) {
+    settings.stop_when_blocked =
+        readBoolean(entry(entries, "stop_when_blocked"), "generator.stop_when_blocked",
+                    "true or false", source);
+  }
   return settings;
 }
 

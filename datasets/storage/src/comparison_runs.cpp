@@ -85,7 +85,7 @@ std::vector<StoredComparisonRun> readComparisonRuns(const std::string& path) {
                               time_to_goal = column("time_to_goal"), walked = column("path_length"),
                               steps = column("steps"), route = column("route_length"),
                               clearance = column("step_centre_clearance_min"),
-                              replans = column("replans");
+                              replans = column("replans"), blocked = column("blocked");
     const H5::Group groups = file.openGroup("runs");
     for (hsize_t i = 0; i < count; ++i) {
       StoredComparisonRun run;
@@ -96,6 +96,7 @@ std::vector<StoredComparisonRun> readComparisonRuns(const std::string& path) {
       run.done = done[i] == 1.0 && groups.nameExists(run.name);
       if (run.done) {
         run.goal_reached = reached[i] == 1.0;
+        run.blocked = blocked[i] == 1.0;
         run.time_to_goal = time_to_goal[i];
         run.path_length = walked[i];
         run.steps = steps[i];

@@ -10,6 +10,7 @@
 #include "wpg/datasets/storage/run_dataset.hpp"
 
 #include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -242,6 +243,20 @@ void writeMpcLog(H5::Group& run, const WalkTrajectory& trajectory) {
              {"1", nullptr,
               "bit k set when constraint family k (column k of slack) had to be relaxed",
               nullptr});
+  // What the walk was asked to progress along (libwpg's progress_monitor.hpp); unknown for a
+  // walk read back from a file written before it was stored: nothing rather than NaN.
+  std::vector<double> velocity;
+  velocity.reserve(2 * log.size());
+  for (const MpcIterationLog& row : log) {
+    if (!row.commanded_velocity.allFinite()) return;
+    velocity.insert(velocity.end(), {row.commanded_velocity.x(), row.commanded_velocity.y()});
+  }
+  writeDoubles(mpc, "commanded_velocity", velocity, 2,
+               {"m/s", "world",
+                "linear part of the velocity command the iteration's NMPC tracked, clamped to "
+                "the robot's limits, turned into the world by the heading the generator "
+                "expressed it in (walking.heading_reference); 0 in a fallen row",
+                "x, y"});
 }
 
 // Footsteps against the obstacles (when there are any): the step centres computed by
@@ -510,6 +525,17 @@ H5::Group writeRunGroup(H5::Group& runs, const std::string& group_name, const Sc
   writeStringAttribute(run, "message", result.message);
   writeStringAttribute(run, "robot", scenario.robot);
   writeLinesAttribute(run, "warnings", scenario.warnings);  // the loader's; none: no attribute
+  // Stuck is an outcome: the start of the stretch only when there is one (no NaN, no
+  // sentinel); the whole walk's ratio only when some sample had a linear command.
+  writeIntAttribute(run, "blocked", result.blocked ? 1 : 0);
+  if (result.blocked) {
+    writeDoubleAttribute(run, "blocked_since", result.blocked_since);
+    writeDoubleAttribute(run, "blocked_x", result.blocked_position.x());
+    writeDoubleAttribute(run, "blocked_y", result.blocked_position.y());
+  }
+  if (std::isfinite(result.progress_ratio)) {
+    writeDoubleAttribute(run, "progress_ratio", result.progress_ratio);
+  }
   writeTrajectory(run, result.trajectory);
   writeMpcLog(run, result.trajectory);
   writeObstacles(run, scenario.request.obstacles);

@@ -258,6 +258,29 @@ StoredRun readFile(const std::string& path, const std::string& run_name) {
   if (run.attrExists("success")) {
     stored.result.success = detail::readNumberAttribute(run, "success", path, run_path + ":") != 0.0;
   }
+  // Stuck is an outcome (SCHEMA.md): absent from files written before it was judged (read as
+  // not blocked, the whole walk's ratio not known).
+  if (run.attrExists("blocked")) {
+    stored.result.blocked =
+        detail::readNumberAttribute(run, "blocked", path, run_path + ":") != 0.0;
+  }
+  if (stored.result.blocked) {
+    const auto finite = [&](const char* name) {
+      if (!run.attrExists(name)) {
+        reader.fail("attribute " + run_path + ":" + name + " is missing (blocked is 1)");
+      }
+      const double value = reader.numberAttribute(run, name, run_path + ":");
+      if (!std::isfinite(value)) {
+        reader.fail("attribute " + run_path + ":" + name + ": expected a finite number, got nan");
+      }
+      return value;
+    };
+    stored.result.blocked_since = finite("blocked_since");
+    stored.result.blocked_position = Eigen::Vector2d(finite("blocked_x"), finite("blocked_y"));
+  }
+  stored.result.progress_ratio = run.attrExists("progress_ratio")
+                                     ? reader.numberAttribute(run, "progress_ratio", run_path + ":")
+                                     : std::numeric_limits<double>::quiet_NaN();
 
   WalkTrajectory& t = stored.result.trajectory;
   hsize_t n = 0, rows = 0;
@@ -369,6 +392,7 @@ StoredRun readFile(const std::string& path, const std::string& run_name) {
     }
     row.relaxed_families = static_cast<std::uint32_t>(relaxed[i]);
     row.command.setConstant(std::numeric_limits<double>::quiet_NaN());  // unless stored
+    row.commanded_velocity.setConstant(std::numeric_limits<double>::quiet_NaN());  // likewise
     t.mpc.push_back(row);
   }
   if (mpc.nameExists("command")) {  // a walk to a goal: the path follower's commands
@@ -376,6 +400,13 @@ StoredRun readFile(const std::string& path, const std::string& run_name) {
     log_reader.expectRows("command", rows, k);
     for (hsize_t i = 0; i < k; ++i) {
       t.mpc[i].command = Eigen::Map<const Eigen::Vector3d>(command.data() + 3 * i);
+    }
+  }
+  if (mpc.nameExists("commanded_velocity")) {  // absent from files written before it was
+    const std::vector<double> velocity = log_reader.doubles("commanded_velocity", 2, &rows);
+    log_reader.expectRows("commanded_velocity", rows, k);
+    for (hsize_t i = 0; i < k; ++i) {
+      t.mpc[i].commanded_velocity = Eigen::Map<const Eigen::Vector2d>(velocity.data() + 2 * i);
     }
   }
   return stored;

@@ -94,6 +94,12 @@ class PatternGenerator {
   }
   bool standing() const { return gait_.standing(); }
   double commandedHeading() const { return references_.commandedHeading(); }
+  // The command of the last update(), clamped to the robot's limits, and the heading it was
+  // turned into the world by (J1's frame at that sample: the commanded heading, or the feet's
+  // mean yaw with heading_reference: support_foot): what the walk is asked to progress along
+  // (progress_monitor.hpp).
+  const Eigen::Vector3d& clampedCommand() const { return command_; }
+  double commandFrameHeading() const { return references_.commandFrameHeading(); }
   bool starting() const { return gait_.starting(); }
   int phaseSample() const { return gait_.phaseSample(); }
   const GaitScheduler& gait() const { return gait_; }

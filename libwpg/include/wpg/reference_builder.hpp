@@ -36,6 +36,9 @@ class ReferenceBuilder {
   // turns the robot-frame command into J1's world reference).
   const Eigen::VectorXd& headingCos() const { return heading_cos_; }
   const Eigen::VectorXd& headingSin() const { return heading_sin_; }
+  // The heading the last build() turned the command into the world by at its sample: the
+  // command's heading (heading_reference: command) or the feet's mean yaw (support_foot).
+  double commandFrameHeading() const { return command_frame_heading_; }
 
   // Writes problem.yaw_reference, velocity_x/y (with a window: R(h_j) times the window's mean
   // of the command, plus the sway) and velocity_past_x/y for the clamped
@@ -59,6 +62,7 @@ class ReferenceBuilder {
   // The command's heading at the current sample (heading_reference: command): the feet's
   // mean yaw when the walk started plus the integral of the commanded omega since.
   double commanded_heading_ = 0.0;
+  double command_frame_heading_ = 0.0;  // commandFrameHeading()
   // The walked samples of J1's window and sway, newest first: rows 0-1 the CoM velocity
   // (x', y') at that sample, 2-3 the robot-frame command (vx, vy), 4 the heading h its
   // reference was turned by when it was planned, and 5-6 the CoM velocity in that frame,

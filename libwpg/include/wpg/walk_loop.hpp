@@ -22,10 +22,26 @@ struct ControlSample;
 struct WalkResult {
   WalkTrajectory trajectory;
   // false when some NMPC iteration's status fails the walk (iterationStatusFailsWalk: anything
-  // but solved or relaxed_obstacle), when the robot fell, or when a step landed inside an
-  // obstacle's margin; the walk is still complete and recorded (`wpg run` then exits 1).
+  // but solved or relaxed_obstacle), when the robot fell, when a step landed inside an
+  // obstacle's margin, or when the walk ended blocked; the walk is still complete and recorded
+  // (`wpg run` then exits 1).
   bool success = true;
   std::string message;  // one line: what went wrong first, empty on success
+  // The robot stopped making progress along its command and had not resumed at the end
+  // (progress_monitor.hpp; not judged for a walk that fell, nor for one whose command source
+  // reached its target). Recorded whatever else failed the walk before; the message says so
+  // when nothing did.
+  bool blocked = false;
+  double blocked_since = 0.0;  // [s] start of the blocked stretch (when blocked)
+  Eigen::Vector2d blocked_position = Eigen::Vector2d::Zero();  // [m] the CoM then (when blocked)
+  // ProgressMonitor::describeBlocked(), the message's text after "the robot is blocked: " (when
+  // blocked; not stored in a dataset: the message is).
+  std::string blocked_description;
+  // The walk ended at the sample it was found blocked (generator.stop_when_blocked).
+  bool stopped_blocked = false;
+  // The whole walk's progress along its command (ProgressMonitor::progressRatio); NaN when no
+  // sample had a linear command.
+  double progress_ratio = 0.0;
 };
 
 // Where the walk's velocity command comes from: asked once per NMPC iteration, before its
@@ -39,6 +55,10 @@ class CommandSource {
   // robot stands at its goal); the closing sample is then recorded at `time`.
   virtual bool nextCommand(int iteration, double time, OnlineWalkingGenerator& generator,
                            Eigen::Vector3d& command) = 0;
+  // Whether the commands reached what they were for (a goal walk's goal): such a walk made its
+  // progress, whatever the monitor's last windows say (the turn on the spot at a goal asks for
+  // a little linear velocity that holds the robot where it stands). Asked once, at the end.
+  virtual bool reachedTarget() const { return false; }
 };
 
 // The request's velocity reference schedule (WalkRequest::commandAt), for the whole duration.
@@ -73,9 +93,12 @@ class ControlLoopObserver {
 // around every control period. Records every control period's sample, the closing sample at
 // the end, each NMPC iteration's log and the landed steps (the two initial feet first), and
 // fails the walk (success, message) on a fall, on the first NMPC iteration whose status fails a
-// walk, or on a step landed inside an obstacle's margin. Allocates only before the first
-// control period (the trajectory is reserved for the whole duration) and for the failure
-// message; `commands` and `observer` may allocate in their own calls.
+// walk, on a step landed inside an obstacle's margin, or when the robot ends blocked
+// (progress_monitor.hpp, fed at every NMPC sample; with generator.stop_when_blocked the walk
+// ends at the sample it is found blocked, that sample closing it). Allocates only before the
+// first control period (the trajectory is reserved for the whole duration, the monitor's
+// window made) and for the failure message; `commands` and `observer` may allocate in their
+// own calls.
 WalkResult runWalkLoop(OnlineWalkingGenerator& generator, const WalkRequest& request,
                        CommandSource& commands, ControlLoopObserver* observer = nullptr);
 

@@ -23,6 +23,7 @@ const char* generatorAlgorithmName(GeneratorAlgorithm algorithm);
 constexpr int kMaxSqpIterations = 1000;     // generator.sqp_iterations, max_sqp_iterations
 constexpr int kMaxQpIterations = 100000;    // generator.max_qp_iterations
 constexpr double kMaxWalkDuration = 3600.0;  // [s] duration of one walk
+constexpr int kMaxBlockedWindowCycles = 100;  // generator.blocked_window_cycles (160 s for HRP-2)
 
 struct GeneratorSettings {
   GeneratorAlgorithm algorithm = GeneratorAlgorithm::kNmpc;
@@ -42,6 +43,15 @@ struct GeneratorSettings {
   // the nearest ones whose bounding circle is within obstacle_reach of the support foot [m].
   int max_obstacles_in_qp = 4;
   double obstacle_reach = 1.5;
+  // Stuck is an outcome (progress_monitor.hpp): the robot is blocked when, over a window of
+  // blocked_window_cycles gait cycles of the parameters' nominal steps (3: 4.8 s for HRP-2; a
+  // whole number of cycles, over which the CoM's sway cancels), its CoM walks less than
+  // blocked_progress of the displacement its linear command asks for, and the walk ends
+  // blocked when it has not resumed. stop_when_blocked: the walk ends at the sample it is found
+  // blocked (a study saves the rest of a stuck walk); else it runs its duration out.
+  int blocked_window_cycles = 3;
+  double blocked_progress = 0.25;
+  bool stop_when_blocked = false;
 
   // Throws std::invalid_argument naming the bad field ("generator.<field>") and what was
   // expected.

@@ -67,6 +67,11 @@ struct MpcIterationLog {
   // the path follower's command on a walk to a goal. NaN when unknown (read back from a file
   // that does not store it: only walks to a goal store it, datasets/SCHEMA.md).
   Eigen::Vector3d command = Eigen::Vector3d::Zero();
+  // That command's linear part, clamped to the robot's limits, turned into the world by the
+  // heading the generator expressed it in [m/s] (PatternGenerator::commandFrameHeading): what
+  // the walk is asked to progress along (progress_monitor.hpp). Zero in a fallen row (no NMPC
+  // ran); NaN when unknown (read back from a file written before it was stored).
+  Eigen::Vector2d commanded_velocity = Eigen::Vector2d::Zero();
   double maxSlack() const;  // largest slack of any family (0 when nothing was relaxed)
 };
 

@@ -10,6 +10,7 @@ namespace wpg::analysis {
 // What one run of a comparison contributes to its cell.
 struct ComparisonRunSample {
   bool goal_reached = false;
+  bool blocked = false;             // the walk ended blocked (WalkResult::blocked)
   double time_to_goal = 0.0;        // [s], NaN when not reached
   double walked_length = 0.0;       // [m] horizontal CoM path
   double route_length = 0.0;        // [m] the first plan's route (the straight line without a planner), NaN without a route
@@ -26,6 +27,7 @@ struct ComparisonCell {
   double runs = 0.0;                  // [1]
   double reached = 0.0;               // [1] runs that reached the goal
   double success_rate = 0.0;          // [1] reached / runs
+  double blocked = 0.0;               // [1] runs that ended blocked (stuck, not at the goal)
   double margin_entered = 0.0;        // [1] runs with a step centre inside a margin (clearance < -1e-9 m)
   double time_to_goal_median = 0.0;   // [s] over the runs that reached the goal (NaN: none)
   double time_to_goal_q1 = 0.0;       // [s] 25th percentile

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "wpg/analysis/zmp_error.hpp"
+#include "wpg/walk_loop.hpp"
 #include "wpg/walk_request.hpp"
 #include "wpg/walk_trajectory.hpp"
 #include "wpg/walking_parameters.hpp"
@@ -16,6 +17,9 @@ namespace wpg::analysis {
 // NaN where a metric does not apply (no landed step, no obstacle, not replayed, no iteration).
 struct RunMetrics {
   double success = 0.0;       // [1] 1 when the walk succeeded (WalkResult::success)
+  double blocked = 0.0;       // [1] 1 when the walk ended blocked (WalkResult::blocked)
+  double blocked_since = 0.0;   // [s] start of the blocked stretch; NaN when not blocked
+  double progress_ratio = 0.0;  // [1] CoM displacement along the command / commanded distance
   double distance = 0.0;      // [m] horizontal CoM displacement, first to last sample
   double path_length = 0.0;   // [m] length of the horizontal CoM path
   double steps = 0.0;         // [1] landed footsteps (initial feet not counted)
@@ -58,12 +62,12 @@ enum class VelocityReference {
   kIterationCommands,  // each NMPC iteration's command (MpcIterationLog::command): a goal walk
 };
 
-// `zmp_error` may be null (the walk was not replayed: the four ZMP metrics are NaN).
-// `reference`: kIterationCommands for a walk to a goal (its request has no schedule; NaN
-// velocity metrics when its commands are not known), else kSchedule.
+// The metrics of `walk` (its trajectory, and its verdicts success and blocked). `zmp_error`
+// may be null (the walk was not replayed: the four ZMP metrics are NaN). `reference`:
+// kIterationCommands for a walk to a goal (its request has no schedule; NaN velocity metrics
+// when its commands are not known), else kSchedule.
 RunMetrics computeRunMetrics(const WalkingParameters& walking, const WalkRequest& request,
-                             const WalkTrajectory& trajectory, bool success,
-                             const ZmpErrorComparison* zmp_error,
+                             const WalkResult& walk, const ZmpErrorComparison* zmp_error,
                              VelocityReference reference = VelocityReference::kSchedule);
 
 // One row per metric: its name (the key in JSON, the column in tables), unit, whether it is a

@@ -34,8 +34,14 @@ enum class RunOutcome {
   kSucceeded,
   kWalkFailed,    // the walk failed (an NMPC iteration failed, the robot fell, ...)
   kReplayFailed,  // the walk succeeded, the replay or the filter could not follow it
+  // The robot stopped making progress along its command and had not resumed at the end
+  // (WalkResult::blocked, libwpg's progress_monitor.hpp), whatever else failed the walk.
+  kBlocked,
 };
-const char* runOutcomeName(RunOutcome outcome);  // "succeeded", "walk_failed", "replay_failed"
+// "succeeded", "walk_failed", "replay_failed", "blocked"
+const char* runOutcomeName(RunOutcome outcome);
+// The outcome of a walk before any replay: kSucceeded, kBlocked or kWalkFailed.
+RunOutcome walkOutcome(const WalkResult& walk);
 
 struct RunResult {
   // The walk: walk.result (trajectory, success, message: a failed replay is recorded there
@@ -60,7 +66,8 @@ struct RunResult {
 RunResult runScenario(const datasets::Scenario& scenario, const RunSettings& settings);
 
 // The rest of a result whose walk (and replay) are set: its outcome from the walk's success
-// (kWalkFailed or kSucceeded), the FCL footstep check, the dataset checks and the metrics.
+// and blocked (kSucceeded, kBlocked or kWalkFailed), the FCL footstep check, the dataset checks
+// and the metrics.
 void evaluateRun(const datasets::Scenario& scenario, RunResult& result);
 
 // The dataset of `result` (run dataset, datasets/SCHEMA.md) at `path`, atomically, as

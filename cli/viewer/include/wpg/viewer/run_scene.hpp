@@ -36,7 +36,7 @@ std::string runSceneJson(const LoadedRun& run, const std::string& back = "",
                          const std::string& back_label = "");
 
 // The run's top view for a dashboard: {"path": CoM x, y (float32 base64, at most ~300 points),
-// "obstacles", "goal", "reached", "steps"} appended to `json` as an object.
+// "obstacles", "goal", "reached", "success", "blocked"} appended to `json` as an object.
 void writeTopView(Json& json, const LoadedRun& run);
 
 // Obstacles as the page draws them: type, centre, radius, margin, known to the planner, and

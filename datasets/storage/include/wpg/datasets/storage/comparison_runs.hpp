@@ -15,6 +15,7 @@ struct StoredComparisonRun {
   bool done = false;                 // the run is in the file
   // The summary's goal columns (meaningful when done).
   bool goal_reached = false;
+  bool blocked = false;  // the metric column `blocked`: the walk ended blocked
   double time_to_goal = 0.0, path_length = 0.0, steps = 0.0, route_length = 0.0;
   double clearance_min = 0.0;  // step_centre_clearance_min
   int replans = 0;
