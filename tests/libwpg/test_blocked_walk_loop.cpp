@@ -12,7 +12,8 @@
 namespace {
 
 // Forward at 0.2 m/s from 1 s, into a wall 0.3 m x 6 m centred 2 m ahead (the shipped
-// obstacle_wall); the walk ends at 20 s, the robot stuck in front of the wall since 2.6 s (it slides along the wall's border, sideways more than forward).
+// obstacle_wall); the walk ends at 20 s, the robot blocked since 2.6 s (it slides along the
+// wall's border, sideways more than forward).
 wpg::WalkRequest wallRequest() {
   wpg::WalkRequest request;
   request.duration = 30.0;
