@@ -11,8 +11,12 @@ source "$(dirname "$0")/common.sh"
 wpg="$1"
 make_workdir
 cd "$WORKDIR"
-"$wpg" batch "$HERE/studies/obstacle_scenes_small.yaml" -o small.h5 -j 2 --no-plot >/dev/null ||
-  fail "batch: exit $?"
+# The wall and the U end blocked, a walk that failed: the batch exits 1, and says so.
+status=0
+"$wpg" batch "$HERE/studies/obstacle_scenes_small.yaml" -o small.h5 -j 2 --no-plot >/dev/null \
+  2>batch.err || status=$?
+[[ $status == 1 ]] || fail "batch: exit $status, expected 1 (two walks blocked)"
+grep -q "2 of 5 runs failed" batch.err || fail "batch: $(cat batch.err)"
 "$PYTHON" "$WPG_DATA_DIR/analysis/plot_obstacle_scenes.py" small.h5 -o small.png \
   --table small.md >out.txt || fail "plot_obstacle_scenes.py: exit $?"
 cat out.txt

@@ -31,7 +31,7 @@ with h5py.File(sys.argv[1], "r") as f:
     run = f["runs/obstacle_wall"]
     a = run.attrs
     assert int(a["blocked"]) == 1 and int(a["success"]) == 0, dict(a)
-    assert abs(a["blocked_since"] - 8.9) < 1e-9, a["blocked_since"]
+    assert abs(a["blocked_since"] - 2.6) < 1e-9, a["blocked_since"]
     com, time = run["com"][()], run["time"][()]
     i = int(np.argmin(abs(time - a["blocked_since"])))
     assert (a["blocked_x"], a["blocked_y"]) == tuple(com[i, :2]), (a["blocked_x"], a["blocked_y"])
