@@ -122,12 +122,14 @@ void ObstacleSelector::borderNormals(const Eigen::Vector2d& com,
     // would walk up to the obstacle instead of sliding along the border. A kept border is given
     // up once the CoM has crossed it, or, for a border turned from the way round another
     // obstacle (a forecast of where the robot will be), once the CoM comes closer to it than
-    // the clearance. Measured on obstacle_scenes.yaml and obstacle_passing.yaml: given up at
-    // half the clearance for every border, the robot slid slower (the obstacle dead ahead met
-    // at 1 m at 0.2 m/s passed 0.6 s over the 10 s allowed; 292 scenes correct); only once
-    // crossed, for every border, a border kept from the way round the first circle of a slalom
-    // was crossed by a CoM that hugged that circle, and the sudden new border made the robot
-    // fall (300 correct, 10 failed); as here, 304 correct, 4 failed, and 540 of 540 passed.
+    // the clearance. Measured on obstacle_scenes.yaml and obstacle_passing.yaml (with the sides
+    // of an earlier version, taken from the route points): given up at half the clearance for
+    // every border, the robot slid slower (the obstacle dead ahead met at 1 m at 0.2 m/s passed
+    // 0.6 s over the 10 s allowed; 292 scenes correct); only once crossed, for every border, a
+    // border kept from the way round the first circle of a slalom was crossed by a CoM that
+    // hugged that circle, and the sudden new border made the robot fall (300 correct, 10
+    // failed); as here, 304 correct, 4 failed, 540 of 540 passed. With the sides from the feet
+    // of today, as here: 294 correct, 4 failed, 540 of 540.
     const double keep = after_another ? clearance : 0.0;
     if (fresh || comInside(normal_[index]) < keep ||
         borderProgress(candidate, d, side) >= borderProgress(normal_[index], d, side))

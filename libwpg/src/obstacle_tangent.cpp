@@ -7,7 +7,6 @@ namespace wpg {
 namespace {
 
 constexpr double kSideTie = 0.01;  // [m] offsets within this of the line count as a tie (left)
-constexpr double kPi = 3.14159265358979323846;
 
 double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
   return a.x() * b.y() - a.y() * b.x();
@@ -39,7 +38,7 @@ double borderProgress(const Eigen::Vector2d& normal, const Eigen::Vector2d& dire
   // the right: side * that turn is -pi at n = -d, -pi/2 at the side's normal, 0 at d; cut at
   // the other side's normal (above pi/2: a turn the long way round).
   double progress = side * angleFrom(normal, direction);
-  if (progress > 0.5 * kPi) progress -= 2.0 * kPi;
+  if (progress > 0.5 * M_PI) progress -= 2.0 * M_PI;
   return progress;
 }
 
@@ -60,7 +59,7 @@ Eigen::Vector2d borderNormal(const std::vector<Eigen::Vector2d>& core, double ra
   // empty the CoM is at least radius + clearance from the core and `facing` is inside it
   // (facing . (com - v) >= the distance for every v): every point's arc holds 0, within a
   // right angle of it, so no angle wraps.
-  double lo = -kPi, hi = kPi;
+  double lo = -M_PI, hi = M_PI;
   for (const Eigen::Vector2d& v : core) {
     const Eigen::Vector2d away = com - v;
     const double distance = away.norm();
@@ -125,18 +124,17 @@ void turnReferenceAlongBorders(const Eigen::Ref<const Eigen::Matrix2Xd>& normals
         best_cosine = cosine;
       }
     }
-    if (best.isZero()) continue;  // no such direction: the QP holds the steps
-    const double length = 1.0;
+    if (best.isZero()) continue;  // no such direction: the QP holds the steps (best: a unit)
     // At the reference's speed, unless its part across the robot's heading then exceeds what
     // the gait can walk sideways: asked for more, the QP buys the missing sideways speed with
     // the outward step's length (the feasibility polygon's slanted edges) and slides along a
     // steep border more slowly than along one it can follow.
     double target = speed;
     const Eigen::Vector2d across(-heading_sin(j), heading_cos(j));
-    const double sine = std::abs(across.dot(best)) / length;
+    const double sine = std::abs(across.dot(best));
     if (max_sideways_speed > 0.0 && sine * speed > max_sideways_speed)
       target = max_sideways_speed / sine;
-    best *= target / length;
+    best *= target;
     velocity_x(j) = best.x();
     velocity_y(j) = best.y();
   }
