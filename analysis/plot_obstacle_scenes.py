@@ -134,9 +134,9 @@ def least_step_width(feasibility, max_step_yaw_change):
     faces its command: a step lands in the feasibility polygon of the support foot's frame
     (eq. 14), 0.2 m beside it at least for HRP-2, but the feet may toe in and out in turn by
     half the yaw bound (eq. 16), which turns the polygon: its corner (0.28, 0.2) then lies
-    0.2 cos(0.085) - 0.28 sin(0.085) = 0.1755 m across for HRP-2. (The NMPC walks so through a
-    doorway 0.85 m wide, 0.2 + 2 (margin 0.2 + 0.1287) = 0.857 m being needed side by side:
-    feet yawed 0.041 rad in turn, 0.193 m apart; docs/obstacle_scenes.md.) Turned sideways,
+    0.2 cos(0.085) - 0.28 sin(0.085) = 0.1755 m across for HRP-2 (side by side, a doorway
+    needs 0.2 + 2 (margin 0.2 + 0.1287) = 0.857 m; docs/obstacle_scenes.md; libwpg's
+    WalkingParameters::leastStepWidth is the same bound). Turned sideways,
     a robot would need no width at all: the command's heading, which J2 holds, rules that out."""
     half = 0.5 * max_step_yaw_change
     return min(abs(y) * math.cos(half) - abs(x) * math.sin(half) for x, y in feasibility)

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace wpg {
 namespace {
@@ -22,7 +23,149 @@ Eigen::Vector2d rotated(const Eigen::Vector2d& v, double angle) {
   return {c * v.x() - s * v.y(), s * v.x() + c * v.y()};
 }
 
+// The least distance between the segments [p0, p1] and [q0, q1] (either may be a point).
+double segmentDistance(const Eigen::Vector2d& p0, const Eigen::Vector2d& p1,
+                       const Eigen::Vector2d& q0, const Eigen::Vector2d& q1) {
+  const Eigen::Vector2d u = p1 - p0, v = q1 - q0;
+  // proper crossing: each segment's ends on opposite sides of the other's line
+  if (cross(u, q0 - p0) * cross(u, q1 - p0) < 0.0 && cross(v, p0 - q0) * cross(v, p1 - q0) < 0.0)
+    return 0.0;
+  const auto pointToSegment = [](const Eigen::Vector2d& x, const Eigen::Vector2d& a,
+                                 const Eigen::Vector2d& b) {
+    const Eigen::Vector2d ab = b - a;
+    const double length2 = ab.squaredNorm();
+    const double t = length2 > 0.0 ? std::clamp((x - a).dot(ab) / length2, 0.0, 1.0) : 0.0;
+    return (x - (a + t * ab)).norm();
+  };
+  return std::min({pointToSegment(p0, q0, q1), pointToSegment(p1, q0, q1),
+                   pointToSegment(q0, p0, p1), pointToSegment(q1, p0, p1)});
+}
+
+// Whether `x` is inside (or on) the convex polygon `core` (>= 3 vertices, either orientation).
+bool insideCore(const std::vector<Eigen::Vector2d>& core, const Eigen::Vector2d& x) {
+  if (core.size() < 3) return false;
+  bool negative = false, positive = false;
+  for (std::size_t i = 0; i < core.size(); ++i) {
+    const double turn = cross(core[(i + 1) % core.size()] - core[i], x - core[i]);
+    negative |= turn < 0.0;
+    positive |= turn > 0.0;
+  }
+  return !(negative && positive);
+}
+
+// The support h(n) + radius of the hull of the discs (core[i], radius(i)) for a unit n.
+template <class Radius>
+double support(const std::vector<Eigen::Vector2d>& core, const Radius& radius,
+               const Eigen::Vector2d& normal) {
+  double most = normal.dot(core.front()) + radius(0);
+  for (std::size_t i = 1; i < core.size(); ++i)
+    most = std::max(most, normal.dot(core[i]) + radius(i));
+  return most;
+}
+
+template <class Radius>
+Eigen::Vector2d turnedBorder(const std::vector<Eigen::Vector2d>& core, const Radius& radius,
+                             const Eigen::Vector2d& com, const Eigen::Vector2d& direction,
+                             int side, double clearance, const Eigen::Vector2d& facing) {
+  if (direction.norm() <= 1e-12) return facing;
+  // The arc of normals whose border passes `clearance` beside the CoM, as angles from
+  // `facing` [lo, hi]: the intersection of one arc per core point v, centred on the direction
+  // from v to the CoM, acos((radius + clearance) / |com - v|) wide on each side. When it is not
+  // empty the CoM is at least radius + clearance from the core and `facing` is inside it
+  // (facing . (com - v) >= the distance for every v): every point's arc holds 0, within a
+  // right angle of it, so no angle wraps.
+  double lo = -M_PI, hi = M_PI;
+  for (std::size_t i = 0; i < core.size(); ++i) {
+    const Eigen::Vector2d away = com - core[i];
+    const double distance = away.norm();
+    if (distance <= radius(i) + clearance) return facing;
+    const double centre = angleFrom(facing, away);
+    const double half_width = std::acos((radius(i) + clearance) / distance);
+    lo = std::max(lo, centre - half_width);
+    hi = std::min(hi, centre + half_width);
+  }
+  if (lo > hi) return facing;
+  // Turn from `facing` towards d through the passing side: clockwise when passing on the left
+  // (side +1: from -d through the left normal to d), counter-clockwise on the right. The turn
+  // that brings facing to d that way is side * progress(facing) (progress 0 at d).
+  const double wanted = side * borderProgress(facing, direction, side);
+  return rotated(facing, std::clamp(wanted, lo, hi));
+}
+
 }  // namespace
+
+double borderOffset(const std::vector<Eigen::Vector2d>& core, double radius,
+                    const Eigen::Vector2d& normal) {
+  return support(core, [radius](std::size_t) { return radius; }, normal);
+}
+
+double borderOffset(const std::vector<Eigen::Vector2d>& points, const std::vector<double>& radii,
+                    const Eigen::Vector2d& normal) {
+  return support(points, [&radii](std::size_t i) { return radii[i]; }, normal);
+}
+
+Eigen::Vector2d borderNormal(const std::vector<Eigen::Vector2d>& core, double radius,
+                             const Eigen::Vector2d& com, const Eigen::Vector2d& direction,
+                             int side, double clearance, const Eigen::Vector2d& facing) {
+  return turnedBorder(core, [radius](std::size_t) { return radius; }, com, direction, side,
+                      clearance, facing);
+}
+
+Eigen::Vector2d borderNormal(const std::vector<Eigen::Vector2d>& points,
+                             const std::vector<double>& radii, const Eigen::Vector2d& com,
+                             const Eigen::Vector2d& direction, int side, double clearance,
+                             const Eigen::Vector2d& facing) {
+  return turnedBorder(points, [&radii](std::size_t i) { return radii[i]; }, com, direction,
+                      side, clearance, facing);
+}
+
+Eigen::Vector2d hullFacing(const std::vector<Eigen::Vector2d>& points,
+                           const std::vector<double>& radii, const Eigen::Vector2d& point) {
+  // The distance from a point p outside a convex set is max over unit n of n.p - h(n) (h its
+  // support), attained where the nearest point of the set lies: on one disc (n along p - v) or
+  // on a segment tangent to two discs (n with n.(w - v) = r_v - r_w, pointing outwards). Those
+  // candidates hold the maximizer; every other n gives a lower value, so the best of them is
+  // the gradient of the distance (inside the set: the direction of least depth).
+  const auto clearanceOf = [&](const Eigen::Vector2d& n) {
+    return n.dot(point) - borderOffset(points, radii, n);
+  };
+  Eigen::Vector2d best(1.0, 0.0);
+  double best_clearance = -std::numeric_limits<double>::infinity();
+  const auto consider = [&](const Eigen::Vector2d& n) {
+    const double value = clearanceOf(n);
+    if (value > best_clearance) {
+      best_clearance = value;
+      best = n;
+    }
+  };
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const Eigen::Vector2d away = point - points[i];
+    if (away.norm() > 1e-12) consider(away.normalized());
+    for (std::size_t j = i + 1; j < points.size(); ++j) {
+      const Eigen::Vector2d along = points[j] - points[i];
+      const double length = along.norm();
+      if (length <= 1e-12) continue;
+      const Eigen::Vector2d u = along / length, across(-u.y(), u.x());
+      const double c = (radii[i] - radii[j]) / length;  // n.u of the tangents
+      if (std::abs(c) > 1.0) continue;                   // one disc holds the other
+      const double s = std::sqrt(1.0 - c * c);
+      consider(c * u + s * across);
+      consider(c * u - s * across);
+    }
+  }
+  return best;
+}
+
+double coreDistance(const std::vector<Eigen::Vector2d>& a, const std::vector<Eigen::Vector2d>& b) {
+  if (insideCore(a, b.front()) || insideCore(b, a.front())) return 0.0;
+  double least = (a.front() - b.front()).norm();
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    const Eigen::Vector2d& a1 = a[(i + 1) % a.size()];
+    for (std::size_t j = 0; j < b.size(); ++j)
+      least = std::min(least, segmentDistance(a[i], a1, b[j], b[(j + 1) % b.size()]));
+  }
+  return least;
+}
 
 int obstacleSide(const Eigen::Vector2d& center, const Eigen::Vector2d& robot,
                  const Eigen::Vector2d& direction) {
@@ -42,40 +185,6 @@ double borderProgress(const Eigen::Vector2d& normal, const Eigen::Vector2d& dire
   return progress;
 }
 
-double borderOffset(const std::vector<Eigen::Vector2d>& core, double radius,
-                    const Eigen::Vector2d& normal) {
-  double support = normal.dot(core.front());
-  for (const Eigen::Vector2d& v : core) support = std::max(support, normal.dot(v));
-  return support + radius;
-}
-
-Eigen::Vector2d borderNormal(const std::vector<Eigen::Vector2d>& core, double radius,
-                             const Eigen::Vector2d& com, const Eigen::Vector2d& direction,
-                             int side, double clearance, const Eigen::Vector2d& facing) {
-  if (direction.norm() <= 1e-12) return facing;
-  // The arc of normals whose border passes `clearance` beside the CoM, as angles from
-  // `facing` [lo, hi]: the intersection of one arc per core point v, centred on the direction
-  // from v to the CoM, acos((radius + clearance) / |com - v|) wide on each side. When it is not
-  // empty the CoM is at least radius + clearance from the core and `facing` is inside it
-  // (facing . (com - v) >= the distance for every v): every point's arc holds 0, within a
-  // right angle of it, so no angle wraps.
-  double lo = -M_PI, hi = M_PI;
-  for (const Eigen::Vector2d& v : core) {
-    const Eigen::Vector2d away = com - v;
-    const double distance = away.norm();
-    if (distance <= radius + clearance) return facing;
-    const double centre = angleFrom(facing, away);
-    const double half_width = std::acos((radius + clearance) / distance);
-    lo = std::max(lo, centre - half_width);
-    hi = std::min(hi, centre + half_width);
-  }
-  if (lo > hi) return facing;
-  // Turn from `facing` towards d through the passing side: clockwise when passing on the left
-  // (side +1: from -d through the left normal to d), counter-clockwise on the right. The turn
-  // that brings facing to d that way is side * progress(facing) (progress 0 at d).
-  const double wanted = side * borderProgress(facing, direction, side);
-  return rotated(facing, std::clamp(wanted, lo, hi));
-}
 
 Eigen::Vector2d borderSlide(const Eigen::Vector2d& normal, const Eigen::Vector2d& direction,
                             int side) {

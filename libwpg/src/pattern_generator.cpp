@@ -193,7 +193,7 @@ const MpcIterationLog& PatternGenerator::update(double time, const Eigen::Vector
     obstacles_.borderNormals(Eigen::Vector2d(com_x_(0), com_y_(0)), feet_middle,
                              Eigen::Vector2d(problem_->velocity_x(0), problem_->velocity_y(0)),
                              w, tangentClearance(w), problem_->obstacle_slot,
-                             problem_->obstacle_normal);
+                             problem_->obstacle_normal, problem_->obstacle_offset);
     // Sideways no faster than the gait walks (in the robot's frame, where its reach is), or
     // than the command itself asks.
     const double sideways_limit = std::max(w.gaitSidewaysSpeed(), std::abs(command.y()));

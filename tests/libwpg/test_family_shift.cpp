@@ -87,6 +87,7 @@ Walk walkTransitions(WalkingParameters w) {
       NmpcProblem previous_slots = generator.problem();
       previous_slots.obstacle_slot = previous.problem.obstacle_slot;
       previous_slots.obstacle_normal = previous.problem.obstacle_normal;
+      previous_slots.obstacle_offset = previous.problem.obstacle_offset;
       transitions.push_back({previous, evaluate(model, generator.problem(), warm_start),
                              previous_completes, evaluate(model, previous_slots, warm_start)});
     }

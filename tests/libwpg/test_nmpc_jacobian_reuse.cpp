@@ -37,6 +37,7 @@ NmpcProblem randomFullProblem(const NmpcModel& model, const wpg::ObstacleSet& ob
     if (rng.chance(0.5)) {
       const double angle = rng.uniform(-3.0, 3.0);
       problem.obstacle_normal.col(k) = Eigen::Vector2d(std::cos(angle), std::sin(angle));
+      problem.obstacle_offset(k) = rng.uniform(-1.0, 1.0);
     }
   }
   problem.landing_bounded = rng.chance(0.7);

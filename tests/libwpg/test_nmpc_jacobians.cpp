@@ -227,6 +227,9 @@ TEST(NmpcJacobian, CommandTangentObstacleRowsMatchFiniteDifferences) {
       problem.obstacle_slot << 0, 1, 2;
       const double angle = rng.uniform(-3.0, 3.0);
       problem.obstacle_normal.col(0) = Vector2d(std::cos(angle), std::sin(angle));
+      // the circle's supporting half-plane n.F >= n.c + r (borderOffset of its one-point core)
+      const double r = obstacles[0].radius + obstacles[0].margin + w.obstacle_foot_radius;
+      problem.obstacle_offset(0) = problem.obstacle_normal.col(0).dot(obstacles[0].center) + r;
       VectorXd U = randomU(model, problem, rng);
       placeStepsClearOf(L, distance, {1, 2}, rng, U);  // the box and polygon: non-smooth inside
       const JacobianCheck check = compareWithFiniteDifferences(model, problem, U);
@@ -237,7 +240,6 @@ TEST(NmpcJacobian, CommandTangentObstacleRowsMatchFiniteDifferences) {
       VectorXd g(model.inequalityCount());
       MatrixXd J(model.inequalityCount(), L.variableCount());
       wpg::evaluateConstraints(model, problem, U, g, &J);
-      const double r = obstacles[0].radius + obstacles[0].margin + w.obstacle_foot_radius;
       for (int i = 0; i < L.steps; ++i) {
         if (problem.phase.step_fixed(i)) continue;
         const Vector2d F(U(L.stepX() + i), U(L.stepY() + i));

@@ -104,6 +104,7 @@ TEST(ObstacleTangent, ReferenceIntoABorderSlidesAlongItAtTheCommandedSpeed) {
 // the speed is the command's.
 TEST(ObstacleTangent, ReferenceAlongABorderCrossesTheCommandNoFasterThanTheGaitWalksSideways) {
   Eigen::Matrix2Xd normals(2, 1);
+  Eigen::VectorXd offsets(1);
   normals.col(0) = Vector2d(-1.0, 1.0).normalized();
   Eigen::VectorXd vx = Eigen::VectorXd::Constant(2, 0.3), vy = Eigen::VectorXd::Zero(2);
   vx(1) = -0.3;
@@ -141,26 +142,27 @@ TEST(ObstacleTangent, SelectorBorderOnlyTurnsTowardsTheCommand) {
   selector.set({obstacle});
   Eigen::VectorXi slots(1);
   Eigen::Matrix2Xd normals(2, 1);
+  Eigen::VectorXd offsets(1);
   wpg::WalkingParameters parameters;
   parameters.obstacle_foot_radius = kRadius - 0.5;
   selector.select({0.0, 0.0}, 1.5, slots);
   ASSERT_EQ(slots(0), 0);
-  selector.borderNormals({0.0, 0.0}, {0.0, 0.0}, {0.2, 0.0}, parameters, kClearance, slots, normals);
+  selector.borderNormals({0.0, 0.0}, {0.0, 0.0}, {0.2, 0.0}, parameters, kClearance, slots, normals, offsets);
   const Vector2d first = normals.col(0);
-  selector.borderNormals({0.1, 0.0}, {0.1, 0.0}, {0.2, 0.0}, parameters, kClearance, slots, normals);
+  selector.borderNormals({0.1, 0.0}, {0.1, 0.0}, {0.2, 0.0}, parameters, kClearance, slots, normals, offsets);
   EXPECT_EQ(normals.col(0), first);  // straight on: kept
   // further on, the CoM has crossed the kept border: given up
   const Vector2d closer(0.6, 0.0);
   ASSERT_LT(first.dot(closer - kCenter) - kRadius, 0.0);
-  selector.borderNormals(closer, closer, {0.2, 0.0}, parameters, kClearance, slots, normals);
+  selector.borderNormals(closer, closer, {0.2, 0.0}, parameters, kClearance, slots, normals, offsets);
   EXPECT_NE(normals.col(0), first);
   EXPECT_GE(normals.col(0).dot(closer - kCenter) - kRadius, 0.0);
-  selector.borderNormals({0.3, 0.6}, {0.3, 0.6}, {0.2, 0.0}, parameters, kClearance, slots, normals);
+  selector.borderNormals({0.3, 0.6}, {0.3, 0.6}, {0.2, 0.0}, parameters, kClearance, slots, normals, offsets);
   EXPECT_GT(normals(1, 0), first.y());  // to the left: turned towards +y (border along +x)
   // out of reach: forgotten, chosen afresh
   selector.select({-5.0, 0.0}, 1.5, slots);
   selector.select({0.0, 0.0}, 1.5, slots);
-  selector.borderNormals({0.0, 0.0}, {0.0, 0.0}, {0.2, 0.0}, parameters, kClearance, slots, normals);
+  selector.borderNormals({0.0, 0.0}, {0.0, 0.0}, {0.2, 0.0}, parameters, kClearance, slots, normals, offsets);
   EXPECT_NEAR((normals.col(0) - first).norm(), 0.0, 1e-12);
 }
 
@@ -284,6 +286,7 @@ TEST(ObstacleTangent, ReferenceBetweenTwoBordersSlidesAlongTheCorridor) {
 // slides towards the passing side, no faster sideways than the gait walks.
 TEST(ObstacleTangent, ReferenceSquareIntoABorderSlidesTowardsThePassingSide) {
   Eigen::Matrix2Xd normals(2, 1);
+  Eigen::VectorXd offsets(1);
   normals.col(0) = Vector2d(-1.0, 0.0);
   const auto heading = straight(1);
   for (int side : {+1, -1}) {
@@ -300,6 +303,7 @@ TEST(ObstacleTangent, ReferenceSquareIntoABorderSlidesTowardsThePassingSide) {
 // heading (world x), not across world y.
 TEST(ObstacleTangent, SidewaysLimitIsAcrossTheRobotsHeading) {
   Eigen::Matrix2Xd normals(2, 1);
+  Eigen::VectorXd offsets(1);
   normals.col(0) = Vector2d(1.0, -1.0).normalized();  // a border across the way ahead
   Eigen::VectorXd vx = Eigen::VectorXd::Zero(1), vy = Eigen::VectorXd::Constant(1, 0.3);
   const Eigen::VectorXd c = Eigen::VectorXd::Zero(1), s = Eigen::VectorXd::Ones(1);  // h = pi/2
@@ -318,18 +322,19 @@ TEST(ObstacleTangent, SelectorGivesEveryObstacleInReachItsBorder) {
   b = a;
   b.center = {2.4, -0.25};
   box.type = wpg::ObstacleType::kBox;
-  box.center = {1.8, 0.9};
+  box.center = {1.8, 1.4};  // 0.25 m from a's grown circle: room for a step between them
   box.size = {0.5, 0.3};
   box.margin = 0.2;
   wpg::ObstacleSelector selector;
   selector.set({a, b, box});
   Eigen::VectorXi slots(4);
   Eigen::Matrix2Xd normals(2, 4);
+  Eigen::VectorXd offsets(4);
   selector.select({0.3, -0.1}, 3.0, slots);
   ASSERT_GE(slots(2), 0);
   wpg::WalkingParameters parameters;
   selector.borderNormals({0.4, -0.1}, {0.3, -0.1}, {0.2, 0.0}, parameters, kClearance, slots,
-                         normals);
+                         normals, offsets);
   for (int k = 0; k < 3; ++k) EXPECT_NEAR(normals.col(k).norm(), 1.0, 1e-12) << k;
   EXPECT_EQ(normals.col(3).norm(), 0.0);
   // the rows keep the steps out: the CoM's own clearance from each border is positive
@@ -342,6 +347,102 @@ TEST(ObstacleTangent, SelectorGivesEveryObstacleInReachItsBorder) {
                   wpg::borderOffset(selector.distance()->core(index), radius, normals.col(k)),
               0.0)
         << k;
+    // a lone obstacle's row is its own supporting half-plane
+    EXPECT_NEAR(offsets(k),
+                wpg::borderOffset(selector.distance()->core(index), radius, normals.col(k)), 1e-12);
+  }
+}
+
+// Two boxes staggered across the path with a gap no step fits through (0.15 m between their
+// grown shapes, the least step width being 0.1755 m): one obstacle for the border rule. The
+// slot of the first carries a border that keeps every step out of both; the second's slot is
+// emptied; both are passed on the side of the first, here the right (the feet right of its
+// centre line). A gap a step fits through (0.2 m) leaves two obstacles.
+TEST(ObstacleTangent, SelectorJoinsObstaclesWithNoWayBetween) {
+  wpg::WalkingParameters parameters;
+  const double grown = 0.2 + parameters.obstacle_foot_radius;  // margin + foot radius
+  ASSERT_NEAR(parameters.leastStepWidth(), 0.1755, 5e-5);
+  for (const double gap : {0.15, 0.2}) {
+    wpg::Obstacle first, second;
+    first.type = second.type = wpg::ObstacleType::kBox;
+    first.size = second.size = {0.4, 1.0};
+    first.margin = second.margin = 0.2;
+    first.center = {2.0, 0.45};
+    // the boxes' facing corners (2.2, -0.05) and (x, 0.05): 0.1 m apart across
+    const double across = 2.0 * grown + gap;
+    second.center = {2.2 + std::sqrt(across * across - 0.01) + 0.2, -0.45};
+    wpg::ObstacleSelector selector;
+    selector.set({first, second});
+    Eigen::VectorXi slots(4);
+    Eigen::Matrix2Xd normals(2, 4);
+    Eigen::VectorXd offsets(4);
+    const Vector2d com(0.5, -0.1);
+    selector.select(com, 3.0, slots);
+    ASSERT_GE(slots(1), 0);
+    selector.borderNormals(com, com, {0.2, 0.0}, parameters, kClearance, slots, normals, offsets);
+    const int kept = (slots.array() >= 0).count();
+    if (gap < parameters.leastStepWidth()) {
+      ASSERT_EQ(kept, 1) << gap;
+      const int k = slots(0) >= 0 ? 0 : 1;
+      const Vector2d n = normals.col(k);
+      for (int index = 0; index < 2; ++index) {
+        const double radius = selector.distance()->coreRadius(index) +
+                              wpg::stepCentreMargin(selector.obstacles()[index], parameters);
+        EXPECT_GE(offsets(k) + 1e-12,
+                  wpg::borderOffset(selector.distance()->core(index), radius, n))
+            << index;
+      }
+      EXPECT_GE(n.dot(com) - offsets(k), kClearance - 1e-9);  // the CoM with its clearance
+      EXPECT_LT(n.y(), 0.0);  // turned towards the right, the passing side
+    } else {
+      EXPECT_EQ(kept, 2) << gap;
+    }
+  }
+}
+
+// The distance between convex cores: apart, crossing, one inside the other, point cores.
+TEST(ObstacleTangent, CoreDistance) {
+  const std::vector<Vector2d> square{{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  const std::vector<Vector2d> apart{{2, 0.5}, {3, 0.5}, {3, 2}};
+  const std::vector<Vector2d> crossing{{0.5, -1}, {0.6, -1}, {0.6, 2}, {0.5, 2}};
+  const std::vector<Vector2d> inside{{0.2, 0.2}, {0.4, 0.2}, {0.3, 0.4}};
+  EXPECT_NEAR(wpg::coreDistance(square, apart), 1.0, 1e-12);
+  EXPECT_NEAR(wpg::coreDistance(apart, square), 1.0, 1e-12);
+  EXPECT_EQ(wpg::coreDistance(square, crossing), 0.0);
+  EXPECT_EQ(wpg::coreDistance(square, inside), 0.0);
+  EXPECT_EQ(wpg::coreDistance(inside, square), 0.0);
+  EXPECT_NEAR(wpg::coreDistance({{3, 4}}, {{0, 0}}), 5.0, 1e-12);
+  EXPECT_NEAR(wpg::coreDistance({{-1, 0.5}}, square), 1.0, 1e-12);
+}
+
+// The facing normal of a hull of discs is the gradient of the distance to it: checked against
+// the distance sampled on a fine circle of directions (max over n of n.p - h(n)).
+TEST(ObstacleTangent, HullFacingIsTheDistanceGradient) {
+  std::mt19937 random(91);
+  const auto uniform = [&](double low, double high) {
+    return std::uniform_real_distribution<double>(low, high)(random);
+  };
+  for (int trial = 0; trial < 200; ++trial) {
+    std::vector<Vector2d> points;
+    std::vector<double> radii;
+    const int count = 1 + trial % 7;
+    for (int i = 0; i < count; ++i) {
+      points.emplace_back(uniform(-1.0, 1.0), uniform(-1.0, 1.0));
+      radii.push_back(uniform(0.05, 0.5));
+    }
+    const double angle = uniform(-M_PI, M_PI);
+    const Vector2d p = 3.0 * Vector2d(std::cos(angle), std::sin(angle));
+    const Vector2d n = wpg::hullFacing(points, radii, p);
+    EXPECT_NEAR(n.norm(), 1.0, 1e-12);
+    const double found = n.dot(p) - wpg::borderOffset(points, radii, n);
+    double sampled = -1e9;
+    for (int j = 0; j < 20000; ++j) {
+      const double a = 2.0 * M_PI * j / 20000.0;
+      const Vector2d m(std::cos(a), std::sin(a));
+      sampled = std::max(sampled, m.dot(p) - wpg::borderOffset(points, radii, m));
+    }
+    EXPECT_GE(found, sampled - 1e-6) << trial;  // no sampled direction does better
+    EXPECT_LE(found, sampled + 1e-6) << trial;  // and it is a direction: no better than the best
   }
 }
 

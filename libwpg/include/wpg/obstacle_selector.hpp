@@ -28,19 +28,23 @@ class ObstacleSelector {
   // margin) within `reach` of `support` [m], -1 for the rest. Does not allocate.
   void select(const Eigen::Vector2d& support, double reach, Eigen::Ref<Eigen::VectorXi> slots);
 
-  // command_tangent linearization (obstacle_tangent.hpp): column k of `normals` <- the border
-  // normal of the obstacle in slot k (any shape, grown by its step-centre margin,
-  // stepCentreMargin of `parameters`), from the CoM, the command's world `direction` and the
-  // obstacle's passing side; zero for an empty slot. Every obstacle in the slots gets a border
-  // the same way, taken in the order the robot meets them along the command: each keeps the
-  // point where the robot will pass the one before it clear (the route round them). The side is chosen from `feet_middle` when the obstacle comes
-  // within reach (select()) and kept while it stays there, so that the robot does not change
-  // its mind half-way round; the border only turns towards the command while it stays
-  // (borderProgress). Does not allocate.
+  // command_tangent linearization (obstacle_tangent.hpp): column k of `normals` and entry k
+  // of `offsets` <- the border n.F >= offset of the obstacle in slot k (any shape, grown by its
+  // step-centre margin, stepCentreMargin of `parameters`), from the CoM, the command's world
+  // `direction` and the obstacle's passing side; zero for an empty slot. Every obstacle in the
+  // slots gets a border the same way, taken in the order the robot meets them along the
+  // command: each keeps the point where the robot will pass the one before it clear (the route
+  // round them). Obstacles whose gap is narrower than the robot's least step width
+  // (WalkingParameters::leastStepWidth: no walk fits between them) are one obstacle for this
+  // rule, the convex hull of their grown shapes: the slot of the first one met carries the
+  // group's border, the others' slots are emptied (set to -1). The side is chosen from
+  // `feet_middle` when the obstacle (the group's first) comes within reach (select()) and kept
+  // while it stays there, so that the robot does not change its mind half-way round; the
+  // border only turns towards the command while it stays (borderProgress). Does not allocate.
   void borderNormals(const Eigen::Vector2d& com, const Eigen::Vector2d& feet_middle,
                      const Eigen::Vector2d& direction, const WalkingParameters& parameters,
-                     double clearance, const Eigen::Ref<const Eigen::VectorXi>& slots,
-                     Eigen::Ref<Eigen::Matrix2Xd> normals);
+                     double clearance, Eigen::Ref<Eigen::VectorXi> slots,
+                     Eigen::Ref<Eigen::Matrix2Xd> normals, Eigen::Ref<Eigen::VectorXd> offsets);
   // Column k: the unit tangent of slot k's border towards its passing side (borderSlide), as
   // the last borderNormals left them; zero for an empty slot.
   const Eigen::Matrix2Xd& slides() const { return slides_; }
@@ -54,6 +58,11 @@ class ObstacleSelector {
   std::vector<int> side_;  // per obstacle: passing side +1 / -1, 0 = not chosen (out of reach)
   Eigen::Matrix2Xd slides_;  // per slot, sized at the first borderNormals of a slot count
   std::vector<Eigen::Vector2d> normal_;  // per obstacle: its border so far (valid when side_ != 0)
+  // scratch, sized once per set(): the route position of each slot's group's first member, and
+  // the points and radii of the group whose border is being computed
+  std::vector<int> leader_;
+  std::vector<Eigen::Vector2d> group_points_;
+  std::vector<double> group_radii_;
 };
 
 }  // namespace wpg

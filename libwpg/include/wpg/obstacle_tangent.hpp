@@ -66,6 +66,20 @@ Eigen::Vector2d borderNormal(const std::vector<Eigen::Vector2d>& core, double ra
                              const Eigen::Vector2d& com, const Eigen::Vector2d& direction,
                              int side, double clearance, const Eigen::Vector2d& facing);
 
+// The same for a group of obstacles taken as one (ObstacleSelector: a gap between them that no
+// step fits through): the convex hull of the discs (points[i], radii[i]), every member's core
+// points with its own radius. Its support h(n) is the largest of the members', so the border
+// keeps every step out of every member, and the way between them is closed.
+Eigen::Vector2d borderNormal(const std::vector<Eigen::Vector2d>& points,
+                             const std::vector<double>& radii, const Eigen::Vector2d& com,
+                             const Eigen::Vector2d& direction, int side, double clearance,
+                             const Eigen::Vector2d& facing);
+
+// The unit normal of the hull of the discs (points[i], radii[i]) facing `point`: the gradient
+// of the point's distance to it (the `facing` of a group). Does not allocate.
+Eigen::Vector2d hullFacing(const std::vector<Eigen::Vector2d>& points,
+                           const std::vector<double>& radii, const Eigen::Vector2d& point);
+
 // The unit tangent of the border of `normal` that points to the passing `side` (+1 left of the
 // command's `direction`, -1 right): the way J1's reference slides along it.
 Eigen::Vector2d borderSlide(const Eigen::Vector2d& normal, const Eigen::Vector2d& direction,
@@ -75,6 +89,14 @@ Eigen::Vector2d borderSlide(const Eigen::Vector2d& normal, const Eigen::Vector2d
 // grown by `radius`, for a unit n.
 double borderOffset(const std::vector<Eigen::Vector2d>& core, double radius,
                     const Eigen::Vector2d& normal);
+double borderOffset(const std::vector<Eigen::Vector2d>& points, const std::vector<double>& radii,
+                    const Eigen::Vector2d& normal);
+
+// The distance between two convex cores (a circle's centre, a polygon's vertices in order):
+// the least distance between their edges (a one-point core is one degenerate edge), 0 when
+// they cross or one holds the other. The gap between the two obstacles grown by radii r_a and
+// r_b is this minus r_a + r_b.
+double coreDistance(const std::vector<Eigen::Vector2d>& a, const std::vector<Eigen::Vector2d>& b);
 
 // J1's world reference per sample (vx, vy), turned into the directions that drive into none of
 // the borders of `normals` (columns; zero columns ignored; a border is driven into when n.v <

@@ -187,6 +187,8 @@ void NmpcModel::checkProblem(const NmpcProblem& problem) const {
           problem.obstacle_slot.size());
   require(problem.obstacle_normal.cols() == obstacle_slots_, "obstacle_normal (columns)",
           obstacle_slots_, problem.obstacle_normal.cols());
+  require(problem.obstacle_offset.size() == obstacle_slots_, "obstacle_offset", obstacle_slots_,
+          problem.obstacle_offset.size());
   if (phase.pattern < 0 || phase.pattern >= patternCount()) {
     throw std::invalid_argument("NMPC problem: 'phase.pattern': expected 0 to " +
                                 std::to_string(patternCount() - 1) + ", got " +
@@ -234,6 +236,7 @@ NmpcProblem NmpcModel::makeProblem() const {
   problem.yaw_reference = Eigen::VectorXd::Zero(layout_.steps);
   problem.obstacle_slot = Eigen::VectorXi::Constant(obstacle_slots_, -1);
   problem.obstacle_normal = Eigen::Matrix2Xd::Zero(2, obstacle_slots_);
+  problem.obstacle_offset = Eigen::VectorXd::Zero(obstacle_slots_);
   return problem;
 }
 

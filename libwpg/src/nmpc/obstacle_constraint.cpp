@@ -11,7 +11,6 @@
 #include "nmpc_internal.hpp"
 #include "wpg/nmpc/builtin_families.hpp"
 #include "wpg/nmpc/model.hpp"
-#include "wpg/obstacle_tangent.hpp"
 
 namespace wpg {
 namespace {
@@ -44,12 +43,11 @@ class ObstacleConstraint final : public NamedConstraintFamily {
         const auto normal = problem.obstacle_normal.col(k);
         if (!normal.isZero()) {
           // command_tangent linearization (wpg/obstacle_tangent.hpp): the supporting
-          // half-plane n.F >= h(n) + radius of the obstacle grown by the step-centre margin, n
-          // fixed for the sample: g = h(n) + radius - n.F <= 0, linear in F (metres, the
-          // distance missing to the border), inside eq. (18)'s set, for every shape.
-          const double radius =
-              problem.obstacles->coreRadius(index) + stepCentreMargin(obstacle, w);
-          g(row) = borderOffset(problem.obstacles->core(index), radius, normal) - normal.dot(F);
+          // half-plane n.F >= h(n) + radius of the obstacle (or group) grown by the
+          // step-centre margin, n and the offset fixed for the sample: g = offset - n.F <= 0,
+          // linear in F (metres, the distance missing to the border), inside eq. (18)'s set,
+          // for every shape.
+          g(row) = problem.obstacle_offset(k) - normal.dot(F);
           dg = -normal;
         } else if (obstacle.type == ObstacleType::kCircle) {
           // r^2 is R^2 + m^2 in the paper's form (eq. 18 as written, the step a point),

@@ -44,12 +44,14 @@ struct NmpcProblem {
   // planning/ serves the route planner and the post-run checks, not the NMPC's loop).
   const ObstacleSet* obstacles = nullptr;
   Eigen::VectorXi obstacle_slot;
-  // obstacle_linearization: command_tangent: column k = the unit normal n of slot k's row, the
-  // supporting half-plane n.F >= h(n) + radius of the obstacle grown by its step-centre margin
-  // (wpg/obstacle_tangent.hpp), chosen before the solve and fixed during it. A zero column
-  // (empty slots, the `step` linearization, a problem built without normals) = the row
-  // linearized at the step.
+  // obstacle_linearization: command_tangent: slot k's row is the supporting half-plane
+  // n.F >= obstacle_offset(k), n = column k of obstacle_normal (unit), offset h(n) + radius of
+  // the obstacle grown by its step-centre margin, or of the group of obstacles it stands for
+  // (wpg/obstacle_tangent.hpp, ObstacleSelector::borderNormals), chosen before the solve and
+  // fixed during it. A zero column (empty slots, the `step` linearization, a problem built
+  // without normals) = the row linearized at the step.
   Eigen::Matrix2Xd obstacle_normal;
+  Eigen::VectorXd obstacle_offset;  // [m]
   Eigen::Vector3d com_x = Eigen::Vector3d::Zero();  // [c, c', c''] along world x
   Eigen::Vector3d com_y = Eigen::Vector3d::Zero();
   // N: world reference velocity per sample (J1): the command turned by the sample's heading,
