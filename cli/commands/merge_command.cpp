@@ -50,7 +50,7 @@ int mergeCommand(const MergeOptions& options) {
     const engine::ComparisonLayout comparison = engine::readComparisonLayout(shards.front());
     std::vector<datasets::PlannedOutput> outputs = {{options.output, datasets::OutputKind::kHdf5}};
     for (datasets::PlannedOutput& output :
-         comparisonSideOutputs(options.output, comparison.worlds, options.plot)) {
+         engine::comparisonSideOutputs(options.output, comparison.worlds, options.plot)) {
       outputs.push_back(std::move(output));
     }
     datasets::checkOutputPaths(outputs, shards);
@@ -58,7 +58,10 @@ int mergeCommand(const MergeOptions& options) {
     datasets::writeBatchIndex(options.output, shards, layout, [&](const std::string& index) {
       cells = engine::writeComparisonSummary(index, comparison);
     });
-    finishComparisonFiles(options.output, comparison, cells, options.plot);
+    const fs::path folder = fs::path(options.output).parent_path();
+    reportComparisonFiles(options.output, comparison.runs, cells,
+                          engine::writeComparisonTableFiles(comparison, cells, folder.string()),
+                          options.plot);
     std::cout << "\n";
     return kExitSuccess;  // runs that miss the goal are results of the comparison
   }
@@ -66,7 +69,8 @@ int mergeCommand(const MergeOptions& options) {
   // ... and so are the summary files beside the index (a shard named OUT.summary.csv).
   datasets::checkOutputPaths(engine::batchOutputs(options.output, options.plot), shards);
   datasets::writeBatchIndex(options.output, shards, layout);
-  return finishBatchFile(options.output, options.plot);
+  return reportBatchFile(options.output, engine::writeBatchSummaryFiles(options.output),
+                         options.plot);
 }
 
 }  // namespace wpg::cli

@@ -273,7 +273,7 @@ void bindOnline(py::module_& m) {
 
 void bindRun(py::module_& m) {
   py::class_<RunSession, std::shared_ptr<RunSession>>(m, "RunCore")
-      .def_property_readonly("name", [](const RunSession& r) { return r.scenario.name; })
+      .def_property_readonly("name", [](const RunSession& r) { return r.loaded.scenario.name; })
       .def_property_readonly("success",
                              [](const RunSession& r) { return r.result.exitStatus() == 0; })
       .def_property_readonly("exit_code", [](const RunSession& r) { return r.result.exitStatus(); })
@@ -297,9 +297,9 @@ void bindRun(py::module_& m) {
                                                      walk.blocked_position.y());
                              })
       .def_property_readonly("scenario_yaml",
-                             [](const RunSession& r) { return r.scenario.resolved_yaml; })
-      .def_property_readonly("warnings", [](const RunSession& r) { return r.scenario.warnings; })
-      .def_property_readonly("scenario_path", [](const RunSession& r) { return r.scenario_path; })
+                             [](const RunSession& r) { return r.loaded.scenario.resolved_yaml; })
+      .def_property_readonly("warnings", [](const RunSession& r) { return r.loaded.scenario.warnings; })
+      .def_property_readonly("scenario_path", [](const RunSession& r) { return r.loaded.path; })
       .def_property_readonly("stored_file", [](const RunSession& r) { return r.stored_file; })
       .def_property_readonly("replayed",
                              [](const RunSession& r) { return r.result.replay.has_value(); })
@@ -335,25 +335,28 @@ PYBIND11_MODULE(_wpg, m) {
         py::call_guard<py::gil_scoped_release>());
   m.def("run_names", &storedRunNames, py::arg("path"));
   m.def("batch",
-        [](const std::string& study, const std::string& output, int jobs, bool resume) {
+        [](const std::string& study, const std::string& output, int jobs, bool resume,
+           bool figure) {
           StudyFiles files;
           {
             py::gil_scoped_release release;
-            files = runBatch(study, output, jobs, resume);
+            files = runBatch(study, output, jobs, resume, figure);
           }
           return py::make_tuple(files.batch_file, files.runs, files.failed_runs);
         },
-        py::arg("study"), py::arg("output"), py::arg("jobs"), py::arg("resume"));
+        py::arg("study"), py::arg("output"), py::arg("jobs"), py::arg("resume"),
+        py::arg("figure"));
   m.def("compare",
-        [](const std::string& study, const std::string& folder, int jobs) {
+        [](const std::string& study, const std::string& folder, int jobs, bool figures) {
           StudyFiles files;
           {
             py::gil_scoped_release release;
-            files = runCompare(study, folder, jobs);
+            files = runCompare(study, folder, jobs, figures);
           }
           return py::make_tuple(files.batch_file, files.runs);
         },
-        py::arg("study"), py::arg("folder"), py::arg("jobs"));
+        py::arg("study"), py::arg("folder"), py::arg("jobs"),
+        py::arg("figures"));
   m.def("scenarios", &shippedScenarioNames);
   m.def("resolve_scenario", &resolveScenarioPath, py::arg("scenario"));
   m.def("data_directory", &dataDirectory);
