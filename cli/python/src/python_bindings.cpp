@@ -1,5 +1,5 @@
 // The extension module wpg._wpg: the engine's runs, studies and stored runs, and libwpg's online
-// generator, for the Python package analysis/python/wpg/ (which builds the public API on it).
+// generator, for the Python package cli/python/wpg/ (which builds the public API on it).
 // The one file that includes pybind11 (a heavy header). Arrays of a run are numpy views of the
 // C++ result's buffers (read-only, the run's core object as their base: nothing copied); the
 // small tables (footsteps, NMPC log) are copied once into columns. Walks, studies and saves
