@@ -7,15 +7,13 @@
 // draws the figure and prints.
 #include <filesystem>
 #include <iostream>
-#include <optional>
 
 #include "analysis_scripts.hpp"
 #include "batch_summary.hpp"
 #include "command_options.hpp"
 #include "error_messages.hpp"
 #include "exit_codes.hpp"
-#include "shard_option.hpp"
-#include "study_option_names.hpp"
+#include "study_request_options.hpp"
 #include "study_progress.hpp"
 #include "wpg/datasets/storage/batch_index.hpp"
 #include "wpg/engine/batch_study_run.hpp"
@@ -51,16 +49,7 @@ int reportBatchFile(const std::string& batch_file, const engine::BatchSummaryFil
 }
 
 int batchCommand(const BatchOptions& options) {
-  engine::StudyRequest request;
-  request.study = options.study;
-  request.output = options.output;
-  request.jobs = options.threads;
-  request.jobs_given = options.threads_given;
-  request.resume = options.resume;
-  if (!options.shard.empty()) request.shard = parseShardOption(options.shard);
-  request.figures = options.plot;
-  request.use_mpi = true;
-  request.names = studyOptionNames();
+  engine::StudyRequest request = studyRequestOf(options);
   StudyProgress progress;
   const engine::BatchStudyResult result = engine::runBatchStudy(request, progress);
   if (result.complete) return reportBatchFile(options.output, result.summary, options.plot);

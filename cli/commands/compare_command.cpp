@@ -19,8 +19,7 @@
 #include "comparison_files.hpp"
 #include "error_messages.hpp"
 #include "exit_codes.hpp"
-#include "shard_option.hpp"
-#include "study_option_names.hpp"
+#include "study_request_options.hpp"
 #include "study_progress.hpp"
 #include "wpg/datasets/storage/batch_index.hpp"
 #include "wpg/engine/comparison_study_run.hpp"
@@ -77,17 +76,8 @@ void reportComparisonFiles(const std::string& study_file, std::size_t runs,
 }
 
 int compareCommand(const CompareOptions& options) {
-  engine::StudyRequest request;
-  request.study = options.study;
-  request.output = options.output;
-  request.jobs = options.threads;
-  request.jobs_given = options.threads_given;
-  request.resume = options.resume;
-  if (!options.shard.empty()) request.shard = parseShardOption(options.shard);
-  request.figures = options.plot;
+  engine::StudyRequest request = studyRequestOf(options);
   request.ompl_log = options.ompl_log;
-  request.use_mpi = true;
-  request.names = studyOptionNames();
   StudyProgress progress;
   const engine::ComparisonStudyResult result = engine::runComparisonStudy(request, progress);
   if (request.shard) {
