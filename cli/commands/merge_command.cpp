@@ -14,6 +14,7 @@
 #include "comparison_files.hpp"
 #include "exit_codes.hpp"
 #include "wpg/datasets/storage/batch_index.hpp"
+#include "wpg/datasets/storage/input_file.hpp"
 #include "wpg/datasets/storage/output_file.hpp"
 #include "wpg/engine/comparison_run.hpp"
 #include "wpg/engine/study_summary.hpp"
@@ -38,9 +39,10 @@ int mergeCommand(const MergeOptions& options) {
       if (files.empty()) throw UsageError("merge: " + argument + ": no *.h5 shard file in the folder");
       std::sort(files.begin(), files.end());
       shards.insert(shards.end(), files.begin(), files.end());
-    } else if (!fs::is_regular_file(argument, ec)) {
+    } else if (!fs::exists(argument, ec)) {
       throw UsageError("merge: " + argument + ": no such shard file");
     } else {
+      datasets::checkInputFile(argument);
       shards.push_back(argument);
     }
   }
