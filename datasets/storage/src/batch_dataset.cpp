@@ -14,6 +14,7 @@
 
 #include <H5Cpp.h>
 
+#include "external_link_guard.hpp"
 #include "hdf5_bounded_reading.hpp"
 #include "hdf5_writing.hpp"
 #include "provenance_attributes.hpp"
@@ -402,8 +403,7 @@ bool isBatchFile(const std::string& path) {
   std::lock_guard<std::mutex> lock(hdf5Mutex());
   H5::Exception::dontPrint();
   try {
-    if (!H5::H5File::isHdf5(path)) throw InputError(path + ": not an HDF5 file");
-    const H5::H5File file(path, H5F_ACC_RDONLY);
+    const H5::H5File file = detail::openFileForReading(path);
     return file.attrExists("study_name");
   } catch (const H5::Exception& error) {
     throw InputError(path + ": cannot read the file (" + error.getDetailMsg() + ")");
@@ -457,7 +457,7 @@ BatchSummaryTable readBatchSummary(const std::string& path) {
   H5::Exception::dontPrint();
   BatchSummaryTable summary;
   try {
-    const H5::H5File file(path, H5F_ACC_RDONLY);
+    const H5::H5File file = detail::openFileForReading(path);
     summary.study = detail::readStringAttribute(file, "study_name", path, "/:");
     const H5::Group table = file.openGroup(kSummaryPath);
     summary.column_names =
@@ -497,6 +497,7 @@ BatchSummaryTable readBatchSummary(const std::string& path) {
       summary.cells.push_back(std::move(cells));
     }
   } catch (const H5::Exception& error) {
+    if (std::string why = detail::takeExternalLinkRefusal(); !why.empty()) throw InputError(why);
     throw InputError(path + ": cannot read /batch/summary (" + error.getDetailMsg() + ")");
   }
   return summary;
