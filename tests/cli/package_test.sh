@@ -39,9 +39,9 @@ version="$(sed -n 's/^#define WPG_VERSION_STRING "\(.*\)"$/\1/p' "$prefix/includ
   || { cat "$WORKDIR/core-configure.log"; fail "configuring the core-only downstream project"; }
 "$cmake" --build "$WORKDIR/core" -j2 >"$WORKDIR/core-build.log" 2>&1 \
   || { cat "$WORKDIR/core-build.log"; fail "building the core-only downstream project"; }
-if grep -Eil 'hdf5|simbody|simtk|fcl|ompl|yaml|urdf|deflate|mpi' \
-     "$WORKDIR/core/CMakeFiles/wpg_downstream_core.dir/flags.make" \
-     "$WORKDIR/core/CMakeFiles/wpg_downstream_core.dir/link.txt"; then
+if cat <(grep -E '^CXX_(INCLUDES|DEFINES)' "$WORKDIR/core/CMakeFiles/wpg_downstream_core.dir/flags.make") \
+       "$WORKDIR/core/CMakeFiles/wpg_downstream_core.dir/link.txt" \
+     | grep -Ei 'hdf5|simbody|simtk|fcl|ompl|yaml|urdf|deflate|libmpi|openmpi'; then
   fail "the core-only project compiles or links against a dependency of another component"
 fi
 "$WORKDIR/core/wpg_downstream_core" "$version" || fail "the core-only downstream executable failed"

@@ -30,7 +30,9 @@ using namespace detail;  // NOLINT: the image of the file
 
 PreparedRun prepareWalkDatasets(const Scenario& scenario, const wpg::WalkResult& result) {
   checkRunInputs(scenario, result, nullptr, nullptr);
-  return PreparedRun{buildWalkPart(scenario, result)};
+  const WalkTrajectory& walk = result.trajectory;
+  return PreparedRun{buildWalkPart(scenario, result), walk.size(), walk.mpc.size(),
+                     walk.footsteps.size(), scenario.request.obstacles.size()};
 }
 
 void writeRunDataset(const std::string& path, const Scenario& scenario,
@@ -40,6 +42,12 @@ void writeRunDataset(const std::string& path, const Scenario& scenario,
   checkRunInputs(scenario, result, clearances, multibody);
   if (goal && !scenario.goal.enabled) {
     throw std::invalid_argument("writeRunDataset: a goal outcome for a scenario without a goal");
+  }
+  const WalkTrajectory& walk = result.trajectory;
+  if (prepared && (prepared->samples != walk.size() || prepared->iterations != walk.mpc.size() ||
+                   prepared->footsteps != walk.footsteps.size() ||
+                   prepared->obstacles != scenario.request.obstacles.size())) {
+    throw std::logic_error("writeRunDataset: the prepared walk is not the one written");
   }
   if (path.empty() || !fs::path(path).has_filename()) {
     throw std::invalid_argument("writeRunDataset: '" + path + "' is not a file path");

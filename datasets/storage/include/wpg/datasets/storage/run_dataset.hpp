@@ -1,5 +1,6 @@
 #pragma once
 // One run, written to HDF5 (layout: datasets/SCHEMA.md, a contract with every reader).
+#include <cstddef>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -92,6 +93,9 @@ class GroupImage;  // datasets/storage/src/hdf5_image.hpp
 // spare; the writer only commits it to the file, under the HDF5 lock.
 struct PreparedRun {
   std::shared_ptr<const detail::GroupImage> image;
+  // The walk's part (prepareWalkDatasets): the sizes of what it was built from, so that
+  // writeRunDataset refuses the part of another walk (std::logic_error).
+  std::size_t samples = 0, iterations = 0, footsteps = 0, obstacles = 0;
 };
 
 // Writes `result` of `scenario` to `path` (group /runs/<scenario.name>), atomically: the file
