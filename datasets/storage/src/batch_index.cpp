@@ -301,7 +301,8 @@ IndexReport writeBatchIndex(const std::string& output, const std::vector<std::st
     std::lock_guard<std::mutex> lock(hdf5Mutex());
     H5::Exception::dontPrint();
     try {
-      H5::H5File index = detail::createHdf5File(temporary.path());
+      H5::H5File index(temporary.path(), H5F_ACC_TRUNC);
+      forgoWriteOutOnClose(temporary.path());  // a copied index is a study's size
       std::vector<std::string> names;
       {
         const H5::H5File source(first.path, H5F_ACC_RDONLY);
