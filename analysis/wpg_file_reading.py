@@ -97,12 +97,18 @@ def import_h5py(script):
 
 
 def open_file(path):
-    """The HDF5 file `path`, open for reading."""
+    """The HDF5 file `path`, open for reading: checked first to be a regular file, as wpg's
+    checkInputFile (input_file.hpp) does (h5py would wait forever in a FIFO)."""
     import h5py
-    if not os.path.exists(path):
+    try:
+        mode = os.stat(path).st_mode
+    except (OSError, ValueError):
         raise BadFile("%s: cannot read: no such file" % path)
-    if os.path.isdir(path):
+    if stat.S_ISDIR(mode):
         raise BadFile("%s: cannot read: it is a directory" % path)
+    if not stat.S_ISREG(mode):
+        raise BadFile("%s: cannot read: expected a regular file, got %s"
+                      % (path, _file_type_name(mode)))
     if not os.access(path, os.R_OK):
         raise BadFile("%s: cannot read: permission denied" % path)
     try:

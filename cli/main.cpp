@@ -14,10 +14,10 @@
 #include "data_paths.hpp"
 #include "error_messages.hpp"
 #include "exit_codes.hpp"
-#include "hdf5_destructor_reports.hpp"
 #include "registration.hpp"
 #include "wpg/datasets/input/input_error.hpp"
 #include "wpg/engine/mpi_executor.hpp"
+#include "wpg/version.hpp"
 
 namespace {
 
@@ -31,26 +31,6 @@ namespace {
   std::_Exit(wpg::cli::kExitIncomplete);
 }
 
-// The command's status, once its outputs are closed and written, without the libraries'
-// exit-time teardown: HDF5's termination (emptying its free lists) and the destructors of what
-// the process keeps for its lifetime (the Hessian factors' memo) only hand memory back that
-// the kernel takes back anyway, and were ~7 ms at the end of a 0.6 s batch, on one thread.
-// Under a sanitizer the normal exit, so that the leak check still runs.
-int leave(int status) {
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
-  return status;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer) || \
-    __has_feature(memory_sanitizer)
-  return status;
-#endif
-#endif
-  std::cout.flush();
-  std::cerr.flush();
-  std::fflush(nullptr);  // C streams too: _Exit flushes nothing
-  std::_Exit(status);
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -59,8 +39,6 @@ int main(int argc, char** argv) {
   // temporary file left behind: ignored, the write fails with EFBIG instead, an I/O error like
   // a full disk (exit 3, the temporary file removed). Inherited by the plot scripts too.
   std::signal(SIGXFSZ, SIG_IGN);
-  // A failed write is one line on stderr, not one more per HDF5 object unwound.
-  dropHdf5DestructorReports();
 
   CLI::App app{
       "wpg: walking pattern generator for humanoid robots, after Naveau et al., \"A Reactive "
@@ -100,7 +78,7 @@ int main(int argc, char** argv) {
   }
 
   try {
-    return leave(command());
+    return command();
   } catch (const UsageError& e) {
     printError(e.what());
     return kExitBadInput;

@@ -9,7 +9,10 @@
 #   code the targets exercise, the libraries of wpg_datasets, gets libFuzzer's coverage instrumentation
 #   (-fsanitize=fuzzer-no-link): on libwpg's numeric loops it would slow the sanitizer test
 #   suite, which runs in the same tree, for no coverage the targets can use.
+# WPG_TSAN: ThreadSanitizer on every target of the tree (scripts/test-tsan.sh: the threaded
+#   tests and CLI runs only), -O1 -g1 as above. Not with WPG_SANITIZE (one runtime per process).
 option(WPG_SANITIZE "Build with AddressSanitizer + UndefinedBehaviorSanitizer" OFF)
+option(WPG_TSAN "Build with ThreadSanitizer" OFF)
 option(WPG_FUZZ "Build the libFuzzer targets in tests/fuzz (clang, with WPG_SANITIZE)" OFF)
 
 set(WPG_SANITIZER_FLAGS -fsanitize=address,undefined -fno-sanitize-recover=undefined
@@ -19,6 +22,13 @@ if(WPG_SANITIZE)
   add_link_options(-fsanitize=address,undefined)
   # The tests and the downstream package test see this (tests/CMakeLists.txt).
   add_compile_definitions(WPG_SANITIZED_BUILD=1)
+endif()
+if(WPG_TSAN)
+  if(WPG_SANITIZE)
+    message(FATAL_ERROR "WPG_TSAN and WPG_SANITIZE cannot be on together")
+  endif()
+  add_compile_options(-fsanitize=thread -fno-omit-frame-pointer -O1 -g1)
+  add_link_options(-fsanitize=thread)
 endif()
 if(WPG_FUZZ)
   if(NOT CMAKE_CXX_COMPILER_ID STREQUAL "Clang" OR NOT WPG_SANITIZE)

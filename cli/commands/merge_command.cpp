@@ -14,6 +14,7 @@
 #include "comparison_files.hpp"
 #include "exit_codes.hpp"
 #include "wpg/datasets/storage/batch_index.hpp"
+#include "wpg/datasets/storage/input_file.hpp"
 #include "wpg/datasets/storage/output_file.hpp"
 #include "wpg/engine/comparison_run.hpp"
 #include "wpg/engine/study_summary.hpp"
@@ -38,9 +39,10 @@ int mergeCommand(const MergeOptions& options) {
       if (files.empty()) throw UsageError("merge: " + argument + ": no *.h5 shard file in the folder");
       std::sort(files.begin(), files.end());
       shards.insert(shards.end(), files.begin(), files.end());
-    } else if (!fs::is_regular_file(argument, ec)) {
+    } else if (!fs::exists(argument, ec)) {
       throw UsageError("merge: " + argument + ": no such shard file");
     } else {
+      datasets::checkInputFile(argument);
       shards.push_back(argument);
     }
   }
@@ -50,7 +52,7 @@ int mergeCommand(const MergeOptions& options) {
     const engine::ComparisonLayout comparison = engine::readComparisonLayout(shards.front());
     std::vector<datasets::PlannedOutput> outputs = {{options.output, datasets::OutputKind::kHdf5}};
     for (datasets::PlannedOutput& output :
-         comparisonSideOutputs(options.output, comparison.worlds, options.plot)) {
+         engine::comparisonSideOutputs(options.output, comparison.worlds, options.plot)) {
       outputs.push_back(std::move(output));
     }
     datasets::checkOutputPaths(outputs, shards);
@@ -58,7 +60,10 @@ int mergeCommand(const MergeOptions& options) {
     datasets::writeBatchIndex(options.output, shards, layout, [&](const std::string& index) {
       cells = engine::writeComparisonSummary(index, comparison);
     });
-    finishComparisonFiles(options.output, comparison, cells, options.plot);
+    const fs::path folder = fs::path(options.output).parent_path();
+    reportComparisonFiles(options.output, comparison.runs, cells,
+                          engine::writeComparisonTableFiles(comparison, cells, folder.string()),
+                          options.plot);
     std::cout << "\n";
     return kExitSuccess;  // runs that miss the goal are results of the comparison
   }
@@ -66,7 +71,8 @@ int mergeCommand(const MergeOptions& options) {
   // ... and so are the summary files beside the index (a shard named OUT.summary.csv).
   datasets::checkOutputPaths(engine::batchOutputs(options.output, options.plot), shards);
   datasets::writeBatchIndex(options.output, shards, layout);
-  return finishBatchFile(options.output, options.plot);
+  return reportBatchFile(options.output, engine::writeBatchSummaryFiles(options.output),
+                         options.plot);
 }
 
 }  // namespace wpg::cli

@@ -1,7 +1,6 @@
 // `wpg plot RUN.h5 [-o FIG.png] [--run NAME]`: the figure of a run dataset, or of one run of a
 // batch file (analysis/plot_run.py, the figure `wpg run` draws too).
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <system_error>
 
@@ -9,6 +8,7 @@
 #include "command_options.hpp"
 #include "exit_codes.hpp"
 #include "wpg/datasets/input/input_error.hpp"
+#include "wpg/datasets/storage/input_file.hpp"
 #include "wpg/datasets/storage/output_file.hpp"
 
 namespace fs = std::filesystem;
@@ -20,9 +20,7 @@ int plotCommand(const PlotOptions& options) {
   if (!fs::exists(options.input, ec)) {
     throw UsageError("cannot read run file '" + options.input + "': no such file");
   }
-  if (!fs::is_regular_file(options.input, ec) || !std::ifstream(options.input).good()) {
-    throw UsageError("cannot read run file '" + options.input + "'");
-  }
+  datasets::checkInputFile(options.input);  // the script would block in a FIFO
   fs::path figure = options.output;
   if (figure.empty()) {
     figure = fs::path(options.input).replace_extension(options.run.empty() ? ".png" : "." + options.run + ".png");

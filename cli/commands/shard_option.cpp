@@ -2,7 +2,6 @@
 #include "shard_option.hpp"
 
 #include "exit_codes.hpp"
-#include "wpg/engine/mpi_executor.hpp"
 
 namespace wpg::cli {
 
@@ -21,13 +20,6 @@ engine::ShardSlice parseShardOption(const std::string& text) {
   const int shard = std::stoi(k), count = std::stoi(n);
   if (count < 1 || shard >= count) throw bad();
   return {shard, count};
-}
-
-void refuseShardUnderMpi() {
-  if (engine::mpiLaunched()) {
-    throw UsageError("--shard: a slice runs without MPI (one task of a job array); under an MPI "
-                     "launcher the ranks share the study among themselves");
-  }
 }
 
 }  // namespace wpg::cli

@@ -10,7 +10,4 @@ namespace wpg::cli {
 // "K/N" -> slice K of N with 0 <= K < N; UsageError otherwise.
 engine::ShardSlice parseShardOption(const std::string& text);
 
-// UsageError when a slice is asked for under an MPI launcher (the ranks share the study).
-void refuseShardUnderMpi();
-
 }  // namespace wpg::cli

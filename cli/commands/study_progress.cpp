@@ -8,6 +8,11 @@
 
 namespace wpg::cli {
 
+void StudyProgress::accepted(const std::string& name, const std::vector<std::string>& warnings) {
+  study_ = name;
+  printWarnings(warnings);
+}
+
 void StudyProgress::movedDamagedFile(const std::string& file, const std::string& aside,
                                      bool shard) {
   std::cerr << study_ << ": " << file << " cannot be read by HDF5 ("

@@ -1,10 +1,12 @@
 #pragma once
 // What `wpg batch` and `wpg compare` print while a study runs (the engine's StudyObserver): the
-// progress on stderr (batch_progress.hpp), and one line for a resume, a damaged file moved aside,
-// the MPI ranks' statistics or a rank's error.
+// runs' scenario warnings once the study is accepted, the progress on stderr
+// (batch_progress.hpp), and one line for a resume, a damaged file moved aside, the MPI ranks'
+// statistics or a rank's error.
 #include <cstddef>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "batch_progress.hpp"
 #include "wpg/engine/study_executor.hpp"
@@ -13,8 +15,7 @@ namespace wpg::cli {
 
 class StudyProgress : public engine::StudyObserver {
  public:
-  explicit StudyProgress(std::string study_name) : study_(std::move(study_name)) {}
-
+  void accepted(const std::string& name, const std::vector<std::string>& warnings) override;
   void movedDamagedFile(const std::string& file, const std::string& aside, bool shard) override;
   void resuming(std::size_t already, std::size_t total, const std::string& where) override;
   void started(std::size_t runs_to_do) override;

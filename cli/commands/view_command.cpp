@@ -12,6 +12,7 @@
 #include "exit_codes.hpp"
 #include "wpg/datasets/input/input_error.hpp"
 #include "wpg/datasets/storage/batch_dataset.hpp"
+#include "wpg/datasets/storage/input_file.hpp"
 #include "wpg/datasets/storage/output_file.hpp"
 #include "wpg/viewer/run_scene.hpp"
 #include "wpg/viewer/study_dashboard.hpp"
@@ -51,12 +52,13 @@ int viewCommand(const ViewOptions& options) {
   if (folder) {
     // The folder of `wpg compare`: its study.h5.
     input /= "study.h5";
-    if (!fs::is_regular_file(input, ec)) {
+    if (!fs::exists(input, ec)) {
       throw UsageError("'" + options.input + "' is a folder without study.h5: expected the output "
                        "folder of `wpg compare`, a run file or a batch file");
     }
   }
   const std::string file = input.string();
+  datasets::checkInputFile(file);
   const bool batch = datasets::isBatchFile(file);
   const bool dashboard = batch && options.run.empty();
   std::string page = options.output;

@@ -15,8 +15,9 @@ namespace wpg {
 namespace {
 
 NmpcModel makeModel(const WalkingParameters& parameters, const GeneratorSettings& settings,
-                    const ConstraintFamilies& extra_families) {
-  NmpcModel model(parameters, settings.max_obstacles_in_qp);
+                    const ConstraintFamilies& extra_families,
+                    qp::HessianFactorCache& hessian_factors) {
+  NmpcModel model(parameters, settings.max_obstacles_in_qp, &hessian_factors);
   for (const auto& family : extra_families) model.addConstraintFamily(family);
   return model;
 }
@@ -31,8 +32,9 @@ double tangentClearance(const WalkingParameters& w) { return 1.5 * w.stop_foot_s
 
 PatternGenerator::Cadence::Cadence(const WalkingParameters& parameters,
                                    const GeneratorSettings& settings,
-                                   const ConstraintFamilies& extra_families)
-    : model(makeModel(parameters, settings, extra_families)),
+                                   const ConstraintFamilies& extra_families,
+                                   qp::HessianFactorCache& hessian_factors)
+    : model(makeModel(parameters, settings, extra_families, hessian_factors)),
       solver(model),
       problem(model.makeProblem()),
       planned_velocity_x(Eigen::VectorXd::Zero(parameters.horizon_length)),
@@ -42,6 +44,9 @@ PatternGenerator::PatternGenerator(const WalkingParameters& parameters,
                                    const GeneratorSettings& settings,
                                    const ConstraintFamilies& extra_families)
     : settings_(settings),
+      hessian_factors_(settings.hessian_factors
+                           ? settings.hessian_factors
+                           : std::make_shared<qp::HessianFactorCache>()),
       gait_(parameters),
       references_(parameters),
       cadence_choice_(parameters),
@@ -49,7 +54,7 @@ PatternGenerator::PatternGenerator(const WalkingParameters& parameters,
   for (int c = 0; c < parameters.cadenceCount(); ++c) {
     cadences_.push_back(std::make_unique<Cadence>(
         c == 0 ? parameters : parameters.withSingleSupport(parameters.cadenceSingleSupport(c)),
-        settings, extra_families));
+        settings, extra_families, *hessian_factors_));
   }
   reset();
 }
@@ -101,20 +106,40 @@ int PatternGenerator::pushStepCadence(double capture_offset, double previous_off
                   p.cadenceCount() - 1);
 }
 
+// One NMPC sample, concern by concern: the command, the step timing and the phase, the
+// problem's references and state, the obstacles, then the solve.
 const MpcIterationLog& PatternGenerator::update(double time, const Eigen::Vector3d& raw_command,
                                                 const SwingFootTrajectory* swing) {
   const auto start = std::chrono::steady_clock::now();
+  const Eigen::Vector3d command = takeCommand(time, raw_command);
+  const GaitScheduler::SampleStart phase_start = beginSample(command);
+  fillProblem(time, command, phase_start, swing);
+  placeObstacles(command);
+  references_.addSway(*problem_);
+
+  solve();
+  readPlan(time);
+
+  const NmpcSolveResult& r = last_solve_;
+  log_ = MpcIterationLog{time,          0.0,    r.qp_iterations,      r.sqp_iterations,
+                         r.status,      r.cost, r.relaxed_families,   r.slack};
+  log_.solve_time =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return log_;
+}
+
+Eigen::Vector3d PatternGenerator::takeCommand(double time, const Eigen::Vector3d& raw_command) {
   const Eigen::Vector3d command = clampCommand(raw_command);
   held_samples_ = command == command_ ? held_samples_ + 1 : 0;
   // The previous command held since the previous sample.
   if (!gait_.standing()) references_.integrateHeading(command_.z(), time - time_);
   time_ = time;
   command_ = command;
+  return command;
+}
 
-  // The capture point c + c'/omega0 of the LIPM (eq. 3): where the CoP would have to be to
-  // bring the CoM to rest; out of a standing robot's reach it must step.
-  const Eigen::Vector2d capture_point(com_x_(0) + com_x_(1) / omega0_,
-                                      com_y_(0) + com_y_(1) / omega0_);
+int PatternGenerator::wantedCadence(const Eigen::Vector3d& command,
+                                    const Eigen::Vector2d& capture_point) {
   // Step timing: the cadence of the steps from the next landing on, for a steady command, one
   // held for the whole step before that landing: the reach is that of a periodic gait, and a
   // command that changes every sample (a path follower's) keeps the cadence in force. A
@@ -136,21 +161,35 @@ const MpcIterationLog& PatternGenerator::update(double time, const Eigen::Vector
     wanted = std::max(wanted, pushStepCadence(offset, previous_capture_offset_));
     previous_capture_offset_ = offset;
   }
+  return wanted;
+}
+
+GaitScheduler::SampleStart PatternGenerator::beginSample(const Eigen::Vector3d& command) {
+  // The capture point c + c'/omega0 of the LIPM (eq. 3): where the CoP would have to be to
+  // bring the CoM to rest; out of a standing robot's reach it must step.
+  const Eigen::Vector2d capture_point(com_x_(0) + com_x_(1) / omega0_,
+                                      com_y_(0) + com_y_(1) / omega0_);
+  const int wanted = wantedCadence(command, capture_point);
   gait_.requestStepSamples(parameters().cadenceSingleSupport(wanted) +
                            parameters().double_support_samples);
   const GaitScheduler::SampleStart phase_start = gait_.beginSample(command, capture_point);
   if (phase_start.cadence_changed) {
     switchCadence(parameters().stepSamples() - gait_.stepSamples());
   }
-  const WalkingParameters& w = model_->parameters();  // the cadence in force's
   if (phase_start.started) {
     references_.restartHeading(gait_.feetMeanYaw());
     seedPlanFromStanding(command, phase_start.first_swing);
   }
   if (phase_start.structure_changed || obstacles_changed_) dropWarmStart();
   obstacles_changed_ = false;
+  return phase_start;
+}
 
-  // The problem of this sample: phase structure, cost references, CoM state, obstacles.
+void PatternGenerator::fillProblem(double time, const Eigen::Vector3d& command,
+                                   const GaitScheduler::SampleStart& phase_start,
+                                   const SwingFootTrajectory* swing) {
+  const WalkingParameters& w = model_->parameters();  // the cadence in force's
+  // The problem of this sample: phase structure, cost references, CoM state.
   gait_.fillPhase(*model_, problem_->phase);
   if (gait_.standing() || gait_.starting()) references_.forgetWalkedSamples();
   // The CoM velocities the warm start (the previous plan, shifted) predicts: J1's window
@@ -175,6 +214,10 @@ const MpcIterationLog& PatternGenerator::update(double time, const Eigen::Vector
   problem_->landing_time_left =
       (w.stepSamples() - 1 - gait_.phaseSample()) * w.sampling_period;
   boundSwingReach(time, swing);
+}
+
+void PatternGenerator::placeObstacles(const Eigen::Vector3d& command) {
+  const WalkingParameters& w = model_->parameters();
   problem_->obstacles = obstacles_.distance();
   if (gait_.standing()) {
     problem_->obstacle_slot.setConstant(-1);
@@ -183,36 +226,25 @@ const MpcIterationLog& PatternGenerator::update(double time, const Eigen::Vector
                       problem_->obstacle_slot);
   }
   problem_->obstacle_normal.setZero();
-  if (w.obstacle_linearization == ObstacleLinearization::kCommandTangent && !gait_.standing()) {
-    // The obstacles' half-planes of this sample (wpg/obstacle_tangent.hpp): from the CoM, the
-    // command's direction at this sample (J1's world reference) and each obstacle's passing
-    // side, chosen from the point between the feet; then J1's reference turned along the
-    // borders it drives into, so that sliding round is what the cost asks for.
-    const Eigen::Vector2d feet_middle =
-        0.5 * (gait_.footPose(FootSide::kLeft) + gait_.footPose(FootSide::kRight)).head<2>();
-    obstacles_.borderNormals(Eigen::Vector2d(com_x_(0), com_y_(0)), feet_middle,
-                             Eigen::Vector2d(problem_->velocity_x(0), problem_->velocity_y(0)),
-                             w, tangentClearance(w), problem_->obstacle_slot,
-                             problem_->obstacle_normal, problem_->obstacle_offset);
-    // Sideways no faster than the gait walks (in the robot's frame, where its reach is), or
-    // than the command itself asks.
-    const double sideways_limit = std::max(w.gaitSidewaysSpeed(), std::abs(command.y()));
-    turnReferenceAlongBorders(problem_->obstacle_normal, obstacles_.slides(),
-                              references_.headingCos(),
-                              references_.headingSin(), sideways_limit, problem_->velocity_x,
-                              problem_->velocity_y);
+  if (w.obstacle_linearization != ObstacleLinearization::kCommandTangent || gait_.standing()) {
+    return;
   }
-  references_.addSway(*problem_);
-
-  solve();
-  readPlan(time);
-
-  const NmpcSolveResult& r = last_solve_;
-  log_ = MpcIterationLog{time,          0.0,    r.qp_iterations,      r.sqp_iterations,
-                         r.status,      r.cost, r.relaxed_families,   r.slack};
-  log_.solve_time =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return log_;
+  // The obstacles' half-planes of this sample (wpg/obstacle_tangent.hpp): from the CoM, the
+  // command's direction at this sample (J1's world reference) and each obstacle's passing
+  // side, chosen from the point between the feet; then J1's reference turned along the
+  // borders it drives into, so that sliding round is what the cost asks for.
+  const Eigen::Vector2d feet_middle =
+      0.5 * (gait_.footPose(FootSide::kLeft) + gait_.footPose(FootSide::kRight)).head<2>();
+  obstacles_.borderNormals(Eigen::Vector2d(com_x_(0), com_y_(0)), feet_middle,
+                           Eigen::Vector2d(problem_->velocity_x(0), problem_->velocity_y(0)),
+                           w, tangentClearance(w), problem_->obstacle_slot,
+                           problem_->obstacle_normal, problem_->obstacle_offset);
+  // Sideways no faster than the gait walks (in the robot's frame, where its reach is), or
+  // than the command itself asks.
+  const double sideways_limit = std::max(w.gaitSidewaysSpeed(), std::abs(command.y()));
+  turnReferenceAlongBorders(problem_->obstacle_normal, obstacles_.slides(),
+                            references_.headingCos(), references_.headingSin(), sideways_limit,
+                            problem_->velocity_x, problem_->velocity_y);
 }
 
 bool PatternGenerator::advance(const Eigen::Vector3d& com_x, const Eigen::Vector3d& com_y) {

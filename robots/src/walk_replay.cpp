@@ -140,12 +140,9 @@ MultibodyValidation replayWalk(const RobotModel& model, const WalkingParameters&
     out.com_filtered.leftCols<2>() += correction;
     const double filter_time = seconds(start);
     out.q = solveIk(ik, model, walk, out.com_filtered, per_iteration, out, true);
-    if (building.valid()) {
-      try {
-        building.get();
-      } catch (...) {  // run() builds what is missing, and reports its own errors
-      }
-    }
+    // Its errors (out of memory, Simbody's) are run()'s: they stop the replay as run()'s
+    // would.
+    if (building.valid()) building.get();
     out.zmp_multibody_filtered = replay.run(out.q, dt, com_force).zmp;
     out.after = detail::zmpErrorStatistics(walk, out.zmp_multibody_filtered);
     // The whole-walk stages are spread evenly over the iterations (per-sample costs). The

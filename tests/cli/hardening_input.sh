@@ -173,6 +173,44 @@ messages)
   refused 2 "batch_schema_version is 2, this wpg writes 1" batch study.yaml -o future.h5 --resume --no-plot
   [[ "$(md5sum <future.h5)" == "$sum" ]] || fail "the file of a later layout was modified"
   ;;
+fifo_inputs)
+  # Every input file is checked to be a regular file before anything opens it: a FIFO given
+  # to any command that reads a dataset is refused at once, naming it (opening it would wait
+  # for a writer forever).
+  mkfifo pipe.h5
+  "$wpg" run walk_forward --set duration=1 -o real.h5 --no-plot >/dev/null
+  expected="pipe.h5: cannot read: expected a regular file, got a FIFO (pipe)"
+  refused 2 "$expected" analyze pipe.h5
+  refused 2 "$expected" diff pipe.h5 real.h5
+  refused 2 "$expected" diff real.h5 pipe.h5
+  refused 2 "$expected" replay pipe.h5 -o replayed.h5 --no-plot
+  refused 2 "$expected" view pipe.h5 -o page.html
+  refused 2 "$expected" view pipe.h5 --run x -o page.html
+  refused 2 "$expected" plot pipe.h5 -o figure.png
+  refused 2 "$expected" merge idx.h5 pipe.h5 --no-plot
+  mkdir compared && mkfifo compared/study.h5
+  refused 2 "compared/study.h5: cannot read: expected a regular file, got a FIFO (pipe)" \
+    view compared -o page.html
+  [[ ! -e replayed.h5 && ! -e page.html && ! -e figure.png && ! -e idx.h5 ]] ||
+    fail "an output was written"
+  ;;
+long_folder)
+  # A working folder whose absolute name is over PATH_MAX (4096 bytes): merge works there as
+  # every other command does, both layouts, the links found from the index's folder.
+  name="$(printf 'd%.0s' $(seq 250))"
+  for _ in $(seq 18); do mkdir "$name" && cd "$name"; done
+  [[ ${#PWD} -gt 4096 ]] || fail "the folder's name is ${#PWD} bytes, not over 4096"
+  cp "$WORKDIR/study.yaml" . && mkdir shards
+  "$wpg" batch study.yaml -o shards/s0.h5 --shard 0/2 --no-plot >/dev/null 2>&1
+  "$wpg" batch study.yaml -o shards/s1.h5 --shard 1/2 --no-plot >/dev/null 2>&1
+  "$wpg" merge idx.h5 shards --no-plot >stdout 2>stderr || fail "merge: $(cat stderr)"
+  "$wpg" merge copy.h5 shards/s0.h5 shards/s1.h5 --copy --no-plot >stdout 2>stderr ||
+    fail "merge --copy: $(cat stderr)"
+  "$wpg" analyze idx.h5 --format csv >links.csv 2>stderr || fail "analyze idx.h5: $(cat stderr)"
+  "$wpg" analyze copy.h5 --format csv >copies.csv 2>stderr || fail "analyze copy.h5: $(cat stderr)"
+  [[ "$(wc -l <links.csv)" == 3 ]] || fail "the index does not give 2 runs: $(cat links.csv)"
+  cmp -s links.csv copies.csv || fail "the two layouts differ"
+  ;;
 *) fail "unknown case $case_name" ;;
 esac
 echo ok

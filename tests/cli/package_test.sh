@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # package_test.sh CMAKE BUILD_DIR DOWNSTREAM_SOURCE [CMAKE_ARG...]: installs the existing build
 # tree into a temporary prefix (no rebuild), then configures, builds and runs a downstream
-# project that uses find_package(wpg); finally checks that the installed wpg finds its installed
-# data. The CMAKE_ARGs go to the downstream configure (an instrumented build passes its compiler
+# project that uses find_package(wpg), and one beside it (downstream_core/) that asks for the
+# core component only with every other dependency of wpg unfindable; finally checks that the
+# installed wpg finds its installed data. The CMAKE_ARGs go to the downstream configure (an instrumented build passes its compiler
 # and sanitizer flags: its libraries need the same runtime in the downstream executable).
 set -euo pipefail
 # shellcheck source=common.sh
@@ -21,6 +22,29 @@ prefix="$WORKDIR/prefix"
 "$cmake" --build "$WORKDIR/build" -j2 >"$WORKDIR/build.log" 2>&1 \
   || { cat "$WORKDIR/build.log"; fail "building the downstream project"; }
 "$WORKDIR/build/wpg_downstream" || fail "the downstream executable failed"
+
+# find_package(wpg COMPONENTS core) needs Eigen alone: configured with HDF5, yaml-cpp, FCL,
+# OMPL, Simbody, urdfdom and MPI unfindable (CMAKE_DISABLE_FIND_PACKAGE_<name>: find_package
+# fails for them as on a machine without them), built, linked and run; its compile and link
+# lines name none of them.
+hidden=()
+for package in HDF5 yaml-cpp fcl ompl Simbody urdfdom MPI; do
+  hidden+=("-DCMAKE_DISABLE_FIND_PACKAGE_$package=ON")
+done
+version="$(sed -n 's/^#define WPG_VERSION_STRING "\(.*\)"$/\1/p' "$prefix/include/wpg/version.hpp")"
+[[ -n "$version" ]] || fail "no WPG_VERSION_STRING in the installed wpg/version.hpp"
+"$cmake" -S "$(dirname "$downstream")/downstream_core" -B "$WORKDIR/core" \
+  -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$prefix" "${hidden[@]}" "$@" \
+  >"$WORKDIR/core-configure.log" 2>&1 \
+  || { cat "$WORKDIR/core-configure.log"; fail "configuring the core-only downstream project"; }
+"$cmake" --build "$WORKDIR/core" -j2 >"$WORKDIR/core-build.log" 2>&1 \
+  || { cat "$WORKDIR/core-build.log"; fail "building the core-only downstream project"; }
+if cat <(grep -E '^CXX_(INCLUDES|DEFINES)' "$WORKDIR/core/CMakeFiles/wpg_downstream_core.dir/flags.make") \
+       "$WORKDIR/core/CMakeFiles/wpg_downstream_core.dir/link.txt" \
+     | grep -Ei 'hdf5|simbody|simtk|fcl|ompl|yaml|urdf|deflate|libmpi|openmpi'; then
+  fail "the core-only project compiles or links against a dependency of another component"
+fi
+"$WORKDIR/core/wpg_downstream_core" "$version" || fail "the core-only downstream executable failed"
 
 # The installed executable with the installed data (robots, scenarios, plot script).
 data="$(dirname "$(find "$prefix" -path '*/wpg/robots' -not -path '*/doc/*' -type d | head -n1)")"

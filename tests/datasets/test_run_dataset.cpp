@@ -19,6 +19,7 @@
 
 #include "wpg/datasets/storage/provenance.hpp"
 #include "wpg/datasets/storage/run_dataset.hpp"
+#include "wpg/version.hpp"
 
 namespace fs = std::filesystem;
 using wpg::datasets::Scenario;

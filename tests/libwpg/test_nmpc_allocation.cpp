@@ -6,9 +6,8 @@
 // period, CoM and feet interpolation, command and push set every period), without and with
 // obstacles (circle, box, polygon measured by libwpg's AnalyticObstacleDistance).
 //
-// And for the walk loop (runWalkLoop, walk_loop.hpp) that generateWalk and the walk to a goal
-// run: whole warmed-up NMPC iterations with their control periods, a push, obstacles, the fall
-// check, and the recording of the samples, logs and landed steps.
+// The walk loop's (test_walk_loop_allocation.cpp) counts with the counter of this file
+// (allocation_counter.hpp).
 //
 // The counter interposes the C allocator of the executable with definitions forwarding to
 // glibc's __libc_* entry points (malloc to __libc_memalign with malloc's own alignment) (operator new of libstdc++ and Eigen's aligned_malloc go
@@ -37,6 +36,7 @@
 
 #include "../common/obstacle_fields.hpp"
 #include "../common/paper_gait.hpp"
+#include "allocation_counter.hpp"
 #include "wpg/lipm_prediction.hpp"
 #include "wpg/online_walking_generator.hpp"
 #include "wpg/pattern_generator.hpp"
@@ -118,19 +118,7 @@ const int g_hook_installed =
 #endif
 #endif
 
-namespace {
-
-using Eigen::Vector3d;
-using wpg::GeneratorAlgorithm;
-using wpg::GeneratorSettings;
-using wpg::PatternGenerator;
-using wpg::WalkingParameters;
-
-struct Counts {
-  long allocations = 0;  // malloc / calloc / realloc calls
-};
-
-void startCounting() {
+void wpg_test::startCounting() {
 #ifdef EIGEN_RUNTIME_NO_MALLOC
   Eigen::internal::set_is_malloc_allowed(false);
 #endif
@@ -140,7 +128,7 @@ void startCounting() {
 #endif
 }
 
-Counts stopCounting() {
+wpg_test::Counts wpg_test::stopCounting() {
   Counts counts;
 #if WPG_ALLOCATION_COUNTER
   g_counting = false;
@@ -151,6 +139,28 @@ Counts stopCounting() {
 #endif
   return counts;
 }
+
+bool wpg_test::counterAvailable() {
+#if WPG_ALLOCATION_COUNTER && !defined(WPG_ALLOCATION_COUNTER_INTERPOSED)
+  return g_hook_installed != 0;
+#elif WPG_ALLOCATION_COUNTER
+  return true;
+#else
+  return false;
+#endif
+}
+
+namespace {
+
+using Eigen::Vector3d;
+using wpg::GeneratorAlgorithm;
+using wpg::GeneratorSettings;
+using wpg::PatternGenerator;
+using wpg::WalkingParameters;
+using wpg_test::Counts;
+using wpg_test::counterAvailable;
+using wpg_test::startCounting;
+using wpg_test::stopCounting;
 
 // One NMPC sample: solve, integrate the CoM over the sampling period at the control period
 // with the planned jerk, end the period.
@@ -262,16 +272,6 @@ LoopResult countOverLoop(const WalkingParameters& w, GeneratorAlgorithm algorith
   GeneratorSettings settings;
   settings.algorithm = algorithm;
   return countOverLoop(w, settings, warmup, counted, [](PatternGenerator&, int&) {});
-}
-
-bool counterAvailable() {
-#if WPG_ALLOCATION_COUNTER && !defined(WPG_ALLOCATION_COUNTER_INTERPOSED)
-  return g_hook_installed != 0;
-#elif WPG_ALLOCATION_COUNTER
-  return true;
-#else
-  return false;
-#endif
 }
 
 void expectNoAllocation(const LoopResult& r, const char* what) {
@@ -499,119 +499,6 @@ TEST(NmpcAllocation, OnlineStepWithCommandTangentObstacleOnThePath) {
   const LoopResult r = countOverOnlineLoop(w, {circle}, {{30, forward}}, {{100, forward}});
   EXPECT_EQ(r.obstacles_in_qp, 1);
   expectNoAllocation(r, "OnlineWalkingGenerator::step() with a command_tangent circle");
-}
-
-// --- The walk loop: whole NMPC iterations, recording included ------------------------------
-
-// The request's schedule (as ScheduledCommands); counts the allocations of the iterations
-// [first_counted, end) and ends the walk at `end`, so that each counted iteration runs whole:
-// its command, its control periods with push and fall check, and the recording.
-class CountingCommands final : public wpg::CommandSource {
- public:
-  CountingCommands(const wpg::WalkRequest& request, int first_counted, int end)
-      : request_(request), first_counted_(first_counted), end_(end) {}
-  bool nextCommand(int iteration, double time, wpg::OnlineWalkingGenerator&,
-                   Vector3d& command) override {
-    if (iteration == first_counted_) startCounting();
-    if (iteration == end_) {
-      counts = stopCounting();
-      return false;
-    }
-    command = request_.commandAt(time);
-    return true;
-  }
-  Counts counts;
-
- private:
-  const wpg::WalkRequest& request_;
-  int first_counted_, end_;
-};
-
-// A walk that calls an observer too (the hooks robots/ uses), without allocating itself.
-class CountingObserver final : public wpg::ControlLoopObserver {
- public:
-  void beforeStep(wpg::OnlineWalkingGenerator&) override { ++before; }
-  void afterStep(wpg::OnlineWalkingGenerator&, const wpg::ControlSample&) override { ++after; }
-  long before = 0, after = 0;
-};
-
-TEST(NmpcAllocation, WalkLoopIterations) {
-  if (!counterAvailable()) GTEST_SKIP() << "no allocation counter (needs glibc or ASan)";
-  WalkingParameters w;
-  w.max_step_yaw_change = 0.17;
-  wpg::WalkRequest request;
-  request.duration = 20.0;
-  request.reference = {{0.0, Vector3d(0.2, 0.0, 0.0)}, {7.0, Vector3d(0.2, 0.0, 0.2)},
-                       {10.0, Vector3d(0.2, 0.0, 0.0)}};
-  wpg::Push push;
-  push.t = 8.0;
-  push.force = Eigen::Vector2d(0.0, 30.0);
-  push.duration = 0.1;
-  request.pushes = {push};
-  wpg::Obstacle circle;
-  circle.center = Eigen::Vector2d(2.0, 0.9);
-  circle.radius = 0.2;
-  circle.margin = 0.1;
-  request.obstacles = {circle};
-  request.validate();
-  wpg::OnlineWalkingGenerator generator(w, request.generator);
-  generator.setObstacles(request.obstacles);
-  const int first_counted = 30, end = 130;  // 3 s of warm-up, 10 s counted
-  CountingCommands commands(request, first_counted, end);
-  CountingObserver observer;
-  const wpg::WalkResult result = wpg::runWalkLoop(generator, request, commands, &observer);
-
-  EXPECT_EQ(commands.counts.allocations, 0)
-      << "malloc/calloc/realloc calls in the walk loop (run under gdb, break "
-         "wpg_test_allocation_seen)";
-  // The counted iterations did what a walk does: NMPC iterations logged, feet landed, a push.
-  EXPECT_TRUE(result.success) << result.message;
-  const int periods = static_cast<int>(std::lround(w.sampling_period / w.control_period));
-  EXPECT_EQ(result.trajectory.mpc.size(), static_cast<std::size_t>(end));
-  EXPECT_EQ(result.trajectory.size(), static_cast<std::size_t>(end * periods + 1));
-  EXPECT_EQ(observer.after, static_cast<long>(end) * periods);
-  EXPECT_EQ(observer.before, observer.after);
-  int landed_while_counted = 0;
-  for (const wpg::Footstep& step : result.trajectory.footsteps)
-    if (step.landing_time > first_counted * w.sampling_period) ++landed_while_counted;
-  EXPECT_GE(landed_while_counted, 10);
-  // The push is the part of the CoM acceleration the CoP does not explain (eq. 3:
-  // z = c - h/g c'' of the controlled acceleration).
-  const wpg::WalkTrajectory& out = result.trajectory;
-  const double push_acceleration = push.force.y() / request.robot_mass;
-  bool pushed = false;
-  for (std::size_t i = 0; i < out.size(); ++i) {
-    const double controlled = (out.com[i].y() - out.cop[i].y()) * w.gravity / w.com_height;
-    if (out.time[i] > first_counted * w.sampling_period && out.time[i] < end * w.sampling_period)
-      pushed = pushed || std::abs(out.com_acc[i].y() - controlled - push_acceleration) < 1e-6;
-  }
-  EXPECT_TRUE(pushed) << "the push must act inside the counted iterations";
-}
-
-// The progress monitor (wpg/progress_monitor.hpp) fed at every NMPC sample while the robot
-// is blocked: walking into a wall with no way round, counted from 10 s to 25 s (found blocked
-// at 13.7 s), the windows judged and the stretch kept without allocating.
-TEST(NmpcAllocation, WalkLoopIterationsWhileBlocked) {
-  if (!counterAvailable()) GTEST_SKIP() << "no allocation counter (needs glibc or ASan)";
-  WalkingParameters w;
-  wpg::WalkRequest request;
-  request.duration = 30.0;
-  request.reference = {{0.0, Vector3d::Zero()}, {1.0, Vector3d(0.2, 0.0, 0.0)}};
-  wpg::Obstacle wall;
-  wall.type = wpg::ObstacleType::kBox;
-  wall.center = Eigen::Vector2d(2.0, 0.0);
-  wall.size = Eigen::Vector2d(0.3, 6.0);
-  wall.margin = 0.2;
-  request.obstacles = {wall};
-  request.validate();
-  wpg::OnlineWalkingGenerator generator(w, request.generator);
-  generator.setObstacles(request.obstacles);
-  CountingCommands commands(request, 100, 250);
-  const wpg::WalkResult result = wpg::runWalkLoop(generator, request, commands);
-  EXPECT_EQ(commands.counts.allocations, 0)
-      << "malloc/calloc/realloc calls in the walk loop while blocked";
-  EXPECT_TRUE(result.blocked) << result.message;
-  EXPECT_LT(result.blocked_since + 4.8, 25.0);  // found inside the counted iterations
 }
 
 }  // namespace

@@ -99,3 +99,39 @@ def test_reset():
     s = gen.step()
     assert gen.time == pytest.approx(0.005)
     assert s.com[:2] == pytest.approx([1.0, 2.0])
+
+
+@pytest.mark.parametrize("call, message", [
+    (lambda g: g.push((50.0, 0.0), duration=1e17),
+     "push: duration: expected a positive number of seconds, at most 3600 (the longest walk), "
+     "got 1e+17"),
+    (lambda g: g.push((50.0, 0.0), duration=0.0),
+     "push: duration: expected a positive number of seconds, at most 3600 (the longest walk), "
+     "got 0"),
+    (lambda g: g.push((1e30, 0.0)),
+     "push: force: expected 2 finite numbers of at most 100000 N in magnitude, got (1e+30, 0)"),
+    (lambda g: g.reset(pose=(1e300, 0.0, 0.0)),
+     "reset: pose: expected (x, y, yaw) with x and y of at most 10000 m and yaw of at most "
+     "10000 rad in magnitude, got (1e+300, 0, 0)"),
+    (lambda g: g.reset(pose=(0.0, 0.0, float("nan"))),
+     "reset: pose: expected (x, y, yaw) with x and y of at most 10000 m and yaw of at most "
+     "10000 rad in magnitude, got (0, 0, nan)"),
+])
+def test_bad_online_arguments_are_one_clear_error(call, message):
+    """Bad input: one line naming the argument and what was expected, the generator unchanged."""
+    gen = wpg.OnlineGenerator("walk_forward")
+    for _ in range(10):
+        gen.step(command=(0.2, 0, 0))
+    with pytest.raises(wpg.InputError) as error:
+        call(gen)
+    assert str(error.value) == message
+    assert gen.time == pytest.approx(0.05)
+
+
+def test_a_long_push_acts_until_it_ends():
+    """A push of the longest walk's duration is not dropped: it still pushes after 1 s."""
+    pushed, free = wpg.OnlineGenerator("walk_forward"), wpg.OnlineGenerator("walk_forward")
+    pushed.push((30.0, 0.0), duration=3600.0)
+    for _ in range(200):
+        a, b = pushed.step(), free.step()
+    assert a.com[0] - b.com[0] > 1e-3

@@ -240,6 +240,22 @@ ComparisonOutcome runComparison(const datasets::ComparisonStudy& comparison,
   return runComparison(comparison, output, executor, observer);
 }
 
+std::vector<datasets::PlannedOutput> comparisonSideOutputs(const std::string& study_file,
+                                                           const std::vector<std::string>& worlds,
+                                                           bool figures) {
+  const fs::path folder = fs::path(study_file).parent_path();
+  std::vector<datasets::PlannedOutput> outputs = {
+      {(folder / "summary.csv").string(), datasets::OutputKind::kText},
+      {(folder / "summary.md").string(), datasets::OutputKind::kText}};
+  if (figures) {
+    for (const std::string& name : {std::string("success_rates"), std::string("time_to_goal")})
+      outputs.push_back({(folder / (name + ".png")).string(), datasets::OutputKind::kPng});
+    for (const std::string& name : worlds)
+      outputs.push_back({(folder / ("top_" + name + ".png")).string(), datasets::OutputKind::kPng});
+  }
+  return outputs;
+}
+
 ComparisonTableFiles writeComparisonTableFiles(const ComparisonLayout& layout,
                                                const std::vector<analysis::ComparisonCell>& cells,
                                                const std::string& folder) {

@@ -161,12 +161,9 @@ WalkAndReplay runWalkAndReplay(const robots::RobotModel* model,
     } catch (const std::runtime_error& e) {
       replay_failure = e.what();
     }
-    if (preparing.valid()) {
-      try {
-        run.prepared_walk = preparing.get();
-      } catch (...) {  // the writer compresses them itself, and reports its own errors
-      }
-    }
+    // Its errors are the writer's (bad input, out of memory): they stop the run as the
+    // writer's would.
+    if (preparing.valid()) run.prepared_walk = preparing.get();
     // After the preparation has read the result: a failed replay changes its message.
     if (replay_failure) recordReplayFailure(run, *replay_failure);
     return run;

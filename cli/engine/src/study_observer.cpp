@@ -3,6 +3,7 @@
 
 namespace wpg::engine {
 
+void StudyObserver::accepted(const std::string&, const std::vector<std::string>&) {}
 void StudyObserver::movedDamagedFile(const std::string&, const std::string&, bool) {}
 void StudyObserver::resuming(std::size_t, std::size_t, const std::string&) {}
 void StudyObserver::started(std::size_t) {}

@@ -14,16 +14,16 @@
 
 #include <H5Cpp.h>
 
+#include "external_link_guard.hpp"
 #include "hdf5_bounded_reading.hpp"
 #include "hdf5_writing.hpp"
+#include "wpg/datasets/storage/output_file.hpp"
 #include "provenance_attributes.hpp"
 #include "run_group_writing.hpp"
 #include "wpg/datasets/storage/read_limits.hpp"
 #include "wpg/datasets/input/yaml_input.hpp"
+#include "wpg/version.hpp"
 
-#ifndef WPG_VERSION_STRING
-#error "WPG_VERSION_STRING must be defined (libwpg's CMake target gives it)"
-#endif
 
 namespace wpg::datasets {
 namespace {
@@ -67,8 +67,22 @@ std::vector<std::string> columnNames(const Study& study, const std::vector<Summa
   return names;
 }
 
+// A column of the summary table and its dataspace, kept: the table never changes size, and
+// asking HDF5 for the dataspace and making the one-cell memory space for each of a run's ~16
+// cells was ~5 % of the batch writer's serial work.
+// Its last reference is closed quietly after a failure (QuietLastReference).
+struct Column {
+  QuietLastReference last_reference;
+  H5::DataSet dataset;
+  H5::DataSpace space;
+  explicit Column(H5::DataSet set = {})
+      : last_reference(set.getId() > 0 ? set.getId() : -1), dataset(std::move(set)) {
+    if (dataset.getId() > 0) space = dataset.getSpace();
+  }
+};
+
 // A fixed-size 1-D column of `rows`, contiguous, allocated and filled with `fill` at creation.
-H5::DataSet createColumn(H5::Group& table, const std::string& name, hsize_t rows,
+Column createColumn(H5::Group& table, const std::string& name, hsize_t rows,
                          const H5::DataType& file_type, const H5::DataType& memory_type,
                          const void* fill, const char* units, const std::string& description) {
   H5::DSetCreatPropList properties;
@@ -79,22 +93,11 @@ H5::DataSet createColumn(H5::Group& table, const std::string& name, hsize_t rows
     properties.setFillTime(H5D_FILL_TIME_ALLOC);
   }
   const H5::DataSpace space(1, &rows);
-  H5::DataSet dataset = table.createDataSet(name, file_type, space, properties);
-  writeStringAttribute(dataset, "units", units);
-  writeStringAttribute(dataset, "description", description);
-  return dataset;
+  Column column(table.createDataSet(name, file_type, space, properties));
+  writeStringAttribute(column.dataset, "units", units);
+  writeStringAttribute(column.dataset, "description", description);
+  return column;
 }
-
-// A column of the summary table and its dataspace, kept: the table never changes size, and
-// asking HDF5 for the dataspace and making the one-cell memory space for each of a run's ~16
-// cells was ~5 % of the batch writer's serial work.
-struct Column {
-  H5::DataSet dataset;
-  H5::DataSpace space;
-  explicit Column(H5::DataSet set = {}) : dataset(std::move(set)) {
-    if (dataset.getId() > 0) space = dataset.getSpace();
-  }
-};
 
 void writeCell(Column& column, hsize_t row, const H5::DataType& memory_type, const void* value) {
   static const hsize_t count = 1;
@@ -170,18 +173,21 @@ std::unique_ptr<BatchDatasetWriter> BatchDatasetWriter::create(
   H5::Exception::dontPrint();
   try {
     Handles& h = *writer->handles_;
-    h.file = createHdf5File(path, smallMetadataCache());
-    writeIntAttribute(h.file, "schema_version", kRunDatasetSchemaVersion);
-    writeIntAttribute(h.file, "batch_schema_version", kBatchDatasetSchemaVersion);
-    writeStringAttribute(h.file, "wpg_version", WPG_VERSION_STRING);
-    writeProvenanceAttributes(h.file);
-    writeStringAttribute(h.file, "created_by", study.created_by);
-    writeStringAttribute(h.file, "study", study.text);
-    writeStringAttribute(h.file, "study_name", study.name);
-    writeStringAttribute(h.file, "study_fingerprint", study.fingerprint);
-    writeIntAttribute(h.file, "run_count", static_cast<int>(study.runs.size()));
-    writeStringListAttribute(h.file, "swept_keys", study.keys);
-    if (!shard_label.empty()) writeStringAttribute(h.file, "shard", shard_label);
+    h.file = H5::H5File(path, H5F_ACC_TRUNC, H5::FileCreatPropList::DEFAULT, smallMetadataCache());
+    forgoWriteOutOnClose(path);
+    GroupImage root;  // the file's attributes
+    writeIntAttribute(root, "schema_version", kRunDatasetSchemaVersion);
+    writeIntAttribute(root, "batch_schema_version", kBatchDatasetSchemaVersion);
+    writeStringAttribute(root, "wpg_version", WPG_VERSION_STRING);
+    writeProvenanceAttributes(root);
+    writeStringAttribute(root, "created_by", study.created_by);
+    writeStringAttribute(root, "study", study.text);
+    writeStringAttribute(root, "study_name", study.name);
+    writeStringAttribute(root, "study_fingerprint", study.fingerprint);
+    writeIntAttribute(root, "run_count", static_cast<int>(study.runs.size()));
+    writeStringListAttribute(root, "swept_keys", study.keys);
+    if (!shard_label.empty()) writeStringAttribute(root, "shard", shard_label);
+    commit(root, h.file.getId());
     h.runs = h.file.createGroup("runs");
     H5::Group batch = h.file.createGroup("batch");
     H5::Group table = batch.createGroup("summary");
@@ -199,10 +205,10 @@ std::unique_ptr<BatchDatasetWriter> BatchDatasetWriter::create(
     }
     createColumn(table, "index", rows, H5::PredType::STD_I32LE, H5::PredType::NATIVE_INT, nullptr,
                  "1", "index of the run in the study's expansion")
-        .write(indices.data(), H5::PredType::NATIVE_INT);
-    H5::DataSet name_set = createColumn(table, "name", rows, stringType(), stringType(), nullptr,
-                                        "1", "group of the run under /runs");
-    writeStrings(name_set, names);
+        .dataset.write(indices.data(), H5::PredType::NATIVE_INT);
+    Column name_set = createColumn(table, "name", rows, stringType(), stringType(), nullptr,
+                                   "1", "group of the run under /runs");
+    writeStrings(name_set.dataset, names);
     for (std::size_t k = 0; k < study.keys.size(); ++k) {
       const std::string description = "swept value of '" + study.keys[k] + "'";
       if (sweptKeyIsNumeric(study, k)) {
@@ -210,23 +216,23 @@ std::unique_ptr<BatchDatasetWriter> BatchDatasetWriter::create(
         for (const StudyRun& run : study.runs) values.push_back(run.swept[k].number);
         createColumn(table, sweepColumn(study.keys[k]), rows, H5::PredType::IEEE_F64LE,
                      H5::PredType::NATIVE_DOUBLE, nullptr, "as the scenario key", description)
-            .write(values.data(), H5::PredType::NATIVE_DOUBLE);
+            .dataset.write(values.data(), H5::PredType::NATIVE_DOUBLE);
       } else {
         std::vector<std::string> values;
         for (const StudyRun& run : study.runs) values.push_back(run.swept[k].value);
-        H5::DataSet set = createColumn(table, sweepColumn(study.keys[k]), rows, stringType(),
-                                       stringType(), nullptr, "as the scenario key",
-                                       description + " (YAML flow text)");
-        writeStrings(set, values);
+        Column set = createColumn(table, sweepColumn(study.keys[k]), rows, stringType(),
+                                  stringType(), nullptr, "as the scenario key",
+                                  description + " (YAML flow text)");
+        writeStrings(set.dataset, values);
       }
     }
     const unsigned char not_done = 0;
-    h.done = Column(createColumn(table, "done", rows, H5::PredType::STD_U8LE, H5::PredType::NATIVE_UCHAR,
-                          &not_done, "1", "1 when the run is in the file"));
+    h.done = createColumn(table, "done", rows, H5::PredType::STD_U8LE, H5::PredType::NATIVE_UCHAR,
+                          &not_done, "1", "1 when the run is in the file");
     const int no_status = -1;
-    h.exit_status = Column(createColumn(table, "exit_status", rows, H5::PredType::STD_I32LE,
-                                        H5::PredType::NATIVE_INT, &no_status, "1",
-                                        "as `wpg run`: 0 the walk succeeded, 1 it failed; -1 not run"));
+    h.exit_status = createColumn(table, "exit_status", rows, H5::PredType::STD_I32LE,
+                                 H5::PredType::NATIVE_INT, &no_status, "1",
+                                 "as `wpg run`: 0 the walk succeeded, 1 it failed; -1 not run");
     const double nan = std::numeric_limits<double>::quiet_NaN();
     for (const SummaryColumn& column : columns) {
       if (column.integer) {
@@ -320,15 +326,24 @@ std::unique_ptr<BatchDatasetWriter> BatchDatasetWriter::resume(
 
 PreparedRun BatchDatasetWriter::prepare(const BatchRunRecord& record) {
   const StudyRun& run = *record.run;
-  checkRunInputs(run.scenario, *record.result, record.clearances, record.multibody);
-  auto recording = std::make_shared<ChunkRecording>();
-  {
-    const RecordingScope scope(recording.get(), RecordingMode::kRecord);
-    H5::Group placeholder;  // never used by HDF5 while recording
-    writeRunGroup(placeholder, run.name, run.scenario, *record.result, record.clearances,
-                  record.multibody, record.goal, record.checks);
+  auto runs = std::make_shared<GroupImage>();  // the image of /runs, this run's group in it
+  RunGroupParts parts;
+  parts.checks = record.checks;
+  GroupImage& group = buildRunGroup(*runs, run.name, run.scenario, *record.result,
+                                    record.clearances, record.multibody, record.goal, parts);
+  writeStringAttribute(group, "scenario", run.scenario.resolved_yaml);
+  writeIntAttribute(group, "batch_index", static_cast<int>(run.index));
+  std::vector<std::string> keys;
+  for (const SweptValue& value : run.swept) {
+    keys.push_back(value.key);
+    if (value.numeric) {
+      writeDoubleAttribute(group, sweepColumn(value.key), value.number);
+    } else {
+      writeStringAttribute(group, sweepColumn(value.key), value.value);
+    }
   }
-  return PreparedRun{recording};
+  writeStringListAttribute(group, "swept_keys", keys);
+  return PreparedRun{std::move(runs)};
 }
 
 void BatchDatasetWriter::write(const BatchRunRecord& record, const PreparedRun* prepared) {
@@ -337,39 +352,19 @@ void BatchDatasetWriter::write(const BatchRunRecord& record, const PreparedRun* 
     throw std::invalid_argument("BatchDatasetWriter::write: " + std::to_string(record.values.size()) +
                                 " values for " + std::to_string(columns_.size()) + " columns");
   }
-  checkRunInputs(run.scenario, *record.result, record.clearances, record.multibody);
+  // Built here, off the lock, when the caller has not built it.
+  const PreparedRun built = prepared && prepared->image ? PreparedRun{} : prepare(record);
+  const GroupImage& image = prepared && prepared->image ? *prepared->image : *built.image;
   std::lock_guard<std::mutex> lock(hdf5Mutex());
   H5::Exception::dontPrint();
   try {
     Handles& h = *handles_;
-    H5::Group group;
-    if (prepared && prepared->recording) {
-      auto* recording = static_cast<ChunkRecording*>(prepared->recording.get());
-      recording->replayed = 0;
-      const RecordingScope scope(recording, RecordingMode::kReplay);
-      group = writeRunGroup(h.runs, run.name, run.scenario, *record.result, record.clearances,
-                            record.multibody, record.goal, record.checks);
-      if (recording->replayed != recording->datasets.size()) {
-        throw std::logic_error("BatchDatasetWriter::write: the prepared run " + run.name +
-                               " has other datasets than the one written");
-      }
-    } else {
-      group = writeRunGroup(h.runs, run.name, run.scenario, *record.result, record.clearances,
-                            record.multibody, record.goal, record.checks);
+    try {
+      commit(image, h.runs.getId());
+    } catch (const std::runtime_error& error) {
+      throw std::runtime_error(path_ + ": cannot write run " + run.name + " (" + error.what() +
+                               ")");
     }
-    writeStringAttribute(group, "scenario", run.scenario.resolved_yaml);
-    writeIntAttribute(group, "batch_index", static_cast<int>(run.index));
-    std::vector<std::string> keys;
-    for (const SweptValue& value : run.swept) {
-      keys.push_back(value.key);
-      if (value.numeric) {
-        writeDoubleAttribute(group, sweepColumn(value.key), value.number);
-      } else {
-        writeStringAttribute(group, sweepColumn(value.key), value.value);
-      }
-    }
-    writeStringListAttribute(group, "swept_keys", keys);
-    group.close();
     // One flush per run, after the group, its row and `done`: until it, the file on disk is the
     // one of the last flush (the metadata lives in HDF5's cache; the summary is written in
     // place). Should the cache spill a new group's metadata earlier, the group has no `done`
@@ -402,8 +397,7 @@ bool isBatchFile(const std::string& path) {
   std::lock_guard<std::mutex> lock(hdf5Mutex());
   H5::Exception::dontPrint();
   try {
-    if (!H5::H5File::isHdf5(path)) throw InputError(path + ": not an HDF5 file");
-    const H5::H5File file(path, H5F_ACC_RDONLY);
+    const H5::H5File file = detail::openFileForReading(path);
     return file.attrExists("study_name");
   } catch (const H5::Exception& error) {
     throw InputError(path + ": cannot read the file (" + error.getDetailMsg() + ")");
@@ -457,7 +451,7 @@ BatchSummaryTable readBatchSummary(const std::string& path) {
   H5::Exception::dontPrint();
   BatchSummaryTable summary;
   try {
-    const H5::H5File file(path, H5F_ACC_RDONLY);
+    const H5::H5File file = detail::openFileForReading(path);
     summary.study = detail::readStringAttribute(file, "study_name", path, "/:");
     const H5::Group table = file.openGroup(kSummaryPath);
     summary.column_names =
@@ -497,6 +491,7 @@ BatchSummaryTable readBatchSummary(const std::string& path) {
       summary.cells.push_back(std::move(cells));
     }
   } catch (const H5::Exception& error) {
+    if (std::string why = detail::takeExternalLinkRefusal(); !why.empty()) throw InputError(why);
     throw InputError(path + ": cannot read /batch/summary (" + error.getDetailMsg() + ")");
   }
   return summary;

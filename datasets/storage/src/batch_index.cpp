@@ -101,10 +101,19 @@ bool parseSliceLabel(const std::string& label, int* shard, int* count) {
 }
 
 // The relative name HDF5 finds `shard` by from the index's folder (H5Lcreate_external: a
-// relative target is looked up in the folder of the file holding the link first).
+// relative target is looked up in the folder of the file holding the link first). Symbolic links
+// and '..' are resolved where the system can name the files absolutely; in a working folder
+// whose absolute name is over PATH_MAX it cannot, and the names are related as they are given.
 std::string relativeTo(const std::string& shard, const std::string& output) {
-  const fs::path folder = fs::weakly_canonical(fs::absolute(output)).parent_path();
-  return fs::weakly_canonical(fs::absolute(shard)).lexically_relative(folder).string();
+  std::error_code output_error, shard_error;
+  const fs::path resolved_output = fs::weakly_canonical(fs::absolute(output), output_error);
+  const fs::path resolved_shard = fs::weakly_canonical(fs::absolute(shard), shard_error);
+  if (!output_error && !shard_error) {
+    return resolved_shard.lexically_relative(resolved_output.parent_path()).string();
+  }
+  fs::path folder = fs::path(output).lexically_normal().parent_path();
+  if (folder.empty()) folder = ".";
+  return fs::path(shard).lexically_normal().lexically_relative(folder).string();
 }
 
 // An index of copies holds every run of the shards: at most their sizes added up. Throws
@@ -143,15 +152,12 @@ std::string mpiRankLabel(int rank, int ranks) {
 }
 
 ShardContents readShardContents(const std::string& path) {
-  std::error_code ec;
-  if (!fs::is_regular_file(path, ec)) throw InputError(path + ": no such file");
   std::lock_guard<std::mutex> lock(hdf5Mutex());
   H5::Exception::dontPrint();
   ShardContents shard;
   shard.path = path;
   try {
-    if (!H5::H5File::isHdf5(path)) throw InputError(path + ": not an HDF5 file");
-    const H5::H5File file(path, H5F_ACC_RDONLY);
+    const H5::H5File file = detail::openFileForReading(path);
     if (!file.attrExists("study_name") || !file.attrExists("study_fingerprint") ||
         !file.nameExists("batch") || !file.nameExists(kSummaryPath) || !file.nameExists("runs")) {
       throw InputError(path + ": not a batch or shard file (no study_name, /batch/summary, /runs)");
@@ -295,7 +301,8 @@ IndexReport writeBatchIndex(const std::string& output, const std::vector<std::st
     std::lock_guard<std::mutex> lock(hdf5Mutex());
     H5::Exception::dontPrint();
     try {
-      H5::H5File index = detail::createHdf5File(temporary.path());
+      H5::H5File index(temporary.path(), H5F_ACC_TRUNC);
+      forgoWriteOutOnClose(temporary.path());  // a copied index is a study's size
       std::vector<std::string> names;
       {
         const H5::H5File source(first.path, H5F_ACC_RDONLY);
@@ -320,7 +327,8 @@ IndexReport writeBatchIndex(const std::string& output, const std::vector<std::st
             copyRows(source_table.openDataSet(column), target, rows[s]);
           }
         }
-        const std::string link_target = relativeTo(contents[s].path, output);
+        const std::string link_target =
+            layout == IndexLayout::kLinks ? relativeTo(contents[s].path, output) : std::string();
         for (const hsize_t row : rows[s]) {
           const std::string& name = names[row];
           const std::string object = "/runs/" + name;

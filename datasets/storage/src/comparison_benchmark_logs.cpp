@@ -62,7 +62,7 @@ FileFacts readFacts(const std::string& path, const std::vector<std::string>& run
   H5::Exception::dontPrint();
   FileFacts facts;
   try {
-    const H5::H5File file(path, H5F_ACC_RDONLY);
+    const H5::H5File file = detail::openFileForReading(path);
     const auto optional = [&](const char* name) {
       return file.attrExists(name) ? detail::readStringAttribute(file, name, path, "/:") : std::string();
     };

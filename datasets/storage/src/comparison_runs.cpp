@@ -69,7 +69,7 @@ std::vector<StoredComparisonRun> readComparisonRuns(const std::string& path) {
   H5::Exception::dontPrint();
   std::vector<StoredComparisonRun> runs;
   try {
-    const H5::H5File file(path, H5F_ACC_RDONLY);
+    const H5::H5File file = detail::openFileForReading(path);
     if (!file.nameExists("batch") || !file.nameExists(kSummary) || !file.nameExists("runs")) {
       throw InputError(path + ": no /batch/summary or /runs: expected the study file of `wpg compare`");
     }

@@ -10,7 +10,6 @@
 #include <cmath>
 #include <filesystem>
 #include <fnmatch.h>
-#include <fstream>
 #include <mutex>
 #include <set>
 #include <sstream>
@@ -27,7 +26,6 @@
 namespace wpg::datasets {
 namespace {
 
-namespace fs = std::filesystem;
 
 // The contents of one dataset or attribute, as numbers or as text.
 struct Field {
@@ -364,17 +362,8 @@ class Comparison {
   }
 };
 
-void checkReadable(const std::string& path) {
-  std::error_code ec;
-  if (!fs::exists(path, ec)) throw InputError(path + ": cannot read the dataset: no such file");
-  if (fs::is_directory(path, ec)) throw InputError(path + ": cannot read the dataset: it is a directory");
-  if (!std::ifstream(path).good()) throw InputError(path + ": cannot read the dataset: permission denied");
-}
-
 H5::H5File openDataset(const std::string& path) {
-  checkReadable(path);
-  if (!H5::H5File::isHdf5(path)) throw InputError(path + ": not an HDF5 file");
-  H5::H5File file(path, H5F_ACC_RDONLY);
+  H5::H5File file = detail::openFileForReading(path);
   if (!file.attrExists("schema_version") || !file.nameExists("runs") ||
       file.childObjType("runs") != H5O_TYPE_GROUP) {
     throw InputError(path + ": not a wpg run or batch dataset (expected the root attribute "

@@ -9,14 +9,14 @@
 
 namespace wpg::datasets::detail {
 
-void writeGoalCommands(H5::Group& run, const wpg::WalkTrajectory& trajectory) {
+void writeGoalCommands(GroupImage& run, const wpg::WalkTrajectory& trajectory) {
   std::vector<double> commands;
   commands.reserve(3 * trajectory.mpc.size());
   for (const MpcIterationLog& row : trajectory.mpc) {
     if (!row.command.allFinite()) return;  // not known: nothing rather than NaN
     commands.insert(commands.end(), {row.command.x(), row.command.y(), row.command.z()});
   }
-  H5::Group mpc = openGroup(run, "mpc");
+  GroupImage& mpc = run.openGroup("mpc");
   writeDoubles(mpc, "command", commands, 3,
                {"m/s, m/s, rad/s", nullptr,
                 "velocity command of the path follower that the iteration's NMPC tracked, robot "
@@ -24,7 +24,7 @@ void writeGoalCommands(H5::Group& run, const wpg::WalkTrajectory& trajectory) {
                 "vx, vy, omega"});
 }
 
-void writeGoal(H5::Group& run, const Scenario& scenario, const GoalOutcome& goal) {
+void writeGoal(GroupImage& run, const Scenario& scenario, const GoalOutcome& goal) {
   const WalkGoal& g = scenario.goal.goal;
   const double nan = std::numeric_limits<double>::quiet_NaN();
   writeDoubleAttribute(run, "goal_x", g.position.x());
@@ -39,7 +39,7 @@ void writeGoal(H5::Group& run, const Scenario& scenario, const GoalOutcome& goal
   writeStringAttribute(run, "goal_outcome", goal.outcome);
 
   // Which obstacles the planner knew from the start (the others it learnt by sensing them).
-  H5::Group obstacles = openGroup(run, "obstacles");  // recorded by a batch worker too
+  GroupImage& obstacles = run.openGroup("obstacles");  // made by writeObstacles
   std::vector<std::uint8_t> known;
   for (std::size_t i = 0; i < scenario.request.obstacles.size(); ++i)
     known.push_back(scenario.goal.knownToPlanner(i) ? 1 : 0);
@@ -50,7 +50,7 @@ void writeGoal(H5::Group& run, const Scenario& scenario, const GoalOutcome& goal
               nullptr});
 
   const RoutePlannerSettings& settings = scenario.goal.planner;
-  H5::Group plans = createGroup(run, "plans");
+  GroupImage& plans = run.createGroup("plans");
   writeStringAttribute(plans, "description",
                        "one row per (re)plan of the global route planner (OMPL, SE(2)); "
                        "statistics named as ompl::tools::Benchmark names them");
@@ -84,11 +84,11 @@ void writeGoal(H5::Group& run, const Scenario& scenario, const GoalOutcome& goal
       waypoints.insert(waypoints.end(), w.data(), w.data() + 3);
   }
   writeDoubles(plans, "time", time, 0, {"s", nullptr, "walk time when the plan was made", nullptr});
-  H5::DataSet status_set = writeCodes(
+  DatasetImage& status_set = writeCodes(
       plans, "status", status,
       {"1", nullptr, "the planner's outcome in OMPL's terms, see the codes attribute", nullptr});
   writeStringAttribute(status_set, "codes", goal.status_codes);
-  H5::DataSet trigger_set =
+  DatasetImage& trigger_set =
       writeCodes(plans, "trigger", trigger,
                  {"1", nullptr, "why the plan was made, see the codes attribute", nullptr});
   writeStringAttribute(trigger_set, "codes", goal.trigger_codes);

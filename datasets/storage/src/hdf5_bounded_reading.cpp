@@ -2,9 +2,16 @@
 #include "hdf5_bounded_reading.hpp"
 
 #include "wpg/datasets/input/input_error.hpp"
+#include "wpg/datasets/storage/input_file.hpp"
 #include "wpg/datasets/storage/read_limits.hpp"
 
 namespace wpg::datasets::detail {
+
+H5::H5File openFileForReading(const std::string& path) {
+  checkInputFile(path);
+  if (!H5::H5File::isHdf5(path)) throw InputError(path + ": not an HDF5 file");
+  return H5::H5File(path, H5F_ACC_RDONLY);
+}
 namespace {
 
 [[noreturn]] void fail(const std::string& file, const std::string& message) {

@@ -12,6 +12,10 @@
 
 namespace wpg::datasets::detail {
 
+// The file `path` open for reading, checked first (checkInputFile: a regular file this process
+// may read), then its signature ("PATH: not an HDF5 file"). Every reader here opens its file so.
+H5::H5File openFileForReading(const std::string& path);
+
 // The dimensions of `space` (empty for a scalar; {0} for a null dataspace), after checking that
 // it is simple, that its element count is at most `max_elements` and that count x
 // `element_size` is at most kMaxReadBytes. `what` names the object in messages ("dataset

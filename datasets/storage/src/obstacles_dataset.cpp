@@ -11,8 +11,8 @@ namespace wpg::datasets::detail {
 // The scenario's obstacles as a table (one row per obstacle, in the scenario's order), so that
 // plots and analyses need nothing but the file; outlines of boxes and polygons in one ragged
 // vertex list.
-void writeObstacles(H5::Group& run, const std::vector<Obstacle>& obstacles) {
-  H5::Group group = createGroup(run, "obstacles");
+void writeObstacles(GroupImage& run, const std::vector<Obstacle>& obstacles) {
+  GroupImage& group = run.createGroup("obstacles");
   writeStringAttribute(group, "description",
                        "convex obstacles of the scenario (paper Sec. III-D), one row per obstacle "
                        "in the scenario's order; fields that do not apply to a type are 0");
@@ -38,7 +38,7 @@ void writeObstacles(H5::Group& run, const std::vector<Obstacle>& obstacles) {
     codes += (codes.empty() ? "" : ", ") + std::to_string(static_cast<int>(type)) + "=" +
              obstacleTypeName(type);
   }
-  H5::DataSet type_set =
+  DatasetImage& type_set =
       writeCodes(group, "type", types,
                  {"1", nullptr, "shape of each obstacle, see the codes attribute", nullptr});
   writeStringAttribute(type_set, "codes", codes);

@@ -3,13 +3,13 @@
 // obstacles as a table, so that plots and analyses need nothing but the file.
 #include <vector>
 
-#include <H5Cpp.h>
+#include "hdf5_image.hpp"
 
 #include "wpg/obstacles.hpp"
 
 namespace wpg::datasets::detail {
 
 // /runs/<name>/obstacles: one row per obstacle, in the scenario's order.
-void writeObstacles(H5::Group& run, const std::vector<Obstacle>& obstacles);
+void writeObstacles(GroupImage& run, const std::vector<Obstacle>& obstacles);
 
 }  // namespace wpg::datasets::detail

@@ -2,15 +2,13 @@
 // a compile definition of this file only (datasets/CMakeLists.txt): a new commit recompiles
 // one file, not the library.
 #include "wpg/datasets/storage/provenance.hpp"
+#include "wpg/version.hpp"
 
 #include <unistd.h>
 
 #include <climits>
 #include <ctime>
 
-#ifndef WPG_VERSION_STRING
-#error "WPG_VERSION_STRING must be defined (libwpg's CMake target gives it)"
-#endif
 #ifndef WPG_GIT_COMMIT
 #define WPG_GIT_COMMIT "unknown"
 #endif

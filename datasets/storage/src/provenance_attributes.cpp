@@ -6,7 +6,7 @@
 
 namespace wpg::datasets::detail {
 
-void writeProvenanceAttributes(H5::H5Object& file) {
+void writeProvenanceAttributes(ObjectImage& file) {
   const Provenance provenance = currentProvenance();
   writeStringAttribute(file, "wpg_commit", provenance.commit);
   writeStringAttribute(file, "created_on", provenance.machine);

@@ -11,7 +11,6 @@
 #include <limits>
 #include <optional>
 #include <filesystem>
-#include <fstream>
 #include <mutex>
 #include <string>
 #include <system_error>
@@ -28,7 +27,6 @@
 namespace wpg::datasets {
 namespace {
 
-namespace fs = std::filesystem;
 
 class Reader {
  public:
@@ -198,8 +196,7 @@ std::vector<std::string> runGroupNames(const H5::Group& runs) {
 }
 
 StoredRun readFile(const std::string& path, const std::string& run_name) {
-  if (!H5::H5File::isHdf5(path)) throw InputError(path + ": not an HDF5 file");
-  H5::H5File file(path, H5F_ACC_RDONLY);
+  H5::H5File file = detail::openFileForReading(path);
   StoredRun stored;
   // A batch file (`wpg batch`) has no root `scenario`: each run group carries its own.
   const bool root_scenario = file.attrExists("scenario");
@@ -414,28 +411,11 @@ StoredRun readFile(const std::string& path, const std::string& run_name) {
 
 }  // namespace
 
-namespace {
-
-void checkReadable(const std::string& path) {
-  std::error_code ec;
-  if (!fs::exists(path, ec)) throw InputError(path + ": cannot read the run file: no such file");
-  if (fs::is_directory(path, ec)) {
-    throw InputError(path + ": cannot read the run file: it is a directory");
-  }
-  if (!std::ifstream(path).good()) {
-    throw InputError(path + ": cannot read the run file: permission denied");
-  }
-}
-
-}  // namespace
-
 std::vector<std::string> listRuns(const std::string& path) {
-  checkReadable(path);
   std::lock_guard<std::mutex> lock(hdf5Mutex());
   H5::Exception::dontPrint();
   try {
-    if (!H5::H5File::isHdf5(path)) throw InputError(path + ": not an HDF5 file");
-    H5::H5File file(path, H5F_ACC_RDONLY);
+    H5::H5File file = detail::openFileForReading(path);
     if (!file.nameExists("runs") || file.childObjType("runs") != H5O_TYPE_GROUP) {
       throw InputError(path + ": no group /runs (not a run or batch dataset?)");
     }
@@ -450,7 +430,6 @@ std::vector<std::string> listRuns(const std::string& path) {
 }
 
 StoredRun readRunDataset(const std::string& path, const std::string& run_name) {
-  checkReadable(path);
   std::lock_guard<std::mutex> lock(hdf5Mutex());
   H5::Exception::dontPrint();
   try {

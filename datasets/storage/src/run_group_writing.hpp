@@ -1,14 +1,12 @@
 #pragma once
-// The group /runs/<name> of the run schema (datasets/SCHEMA.md), written into an open file:
-// writeRunDataset writes one into a file of its own, the batch writer (batch_dataset.cpp) one
-// per finished run of a study into the batch file.
-#include <future>
+// The group /runs/<name> of the run schema (datasets/SCHEMA.md), built as an image
+// (hdf5_image.hpp) without any HDF5 call, on any thread: writeRunDataset commits one into a
+// file of its own, the batch writer (batch_dataset.cpp) one per finished run of a study into
+// the batch file.
 #include <memory>
 #include <string>
 
-#include <H5Cpp.h>
-
-#include "hdf5_writing.hpp"
+#include "hdf5_image.hpp"
 #include "wpg/datasets/storage/dataset_checks.hpp"
 #include "wpg/datasets/storage/run_dataset.hpp"
 
@@ -18,18 +16,30 @@ namespace wpg::datasets::detail {
 void checkRunInputs(const Scenario& scenario, const wpg::WalkResult& result,
                     const FootstepClearances* clearances, const MultibodyRecord* multibody);
 
-// The multibody fields' chunks being recorded on another thread (writeRunDataset), taken where
-// the writer reaches them; an invalid future, or one that failed: compressed by the writer.
-using PendingRecording = std::future<std::unique_ptr<ChunkRecording>>;
+// The walk's part of a run group: the trajectory, the NMPC log and the obstacles, the first
+// entries buildRunGroup makes.
+std::shared_ptr<const GroupImage> buildWalkPart(const Scenario& scenario,
+                                                const wpg::WalkResult& result);
+// The multibody fields (writeMultibody) as a part of their own.
+std::shared_ptr<const GroupImage> buildMultibodyPart(const Scenario& scenario,
+                                                     const MultibodyRecord& multibody);
 
-// Creates runs/<group_name> with everything of the run schema; the caller holds hdf5Mutex().
-// `checks`: computeDatasetChecks of these inputs when the caller has them (the engine computed
-// them for its run result), else null: computed here.
-H5::Group writeRunGroup(H5::Group& runs, const std::string& group_name, const Scenario& scenario,
-                        const wpg::WalkResult& result, const FootstepClearances* clearances,
-                        const MultibodyRecord* multibody,
-                        const GoalOutcome* goal = nullptr,
-                        const DatasetChecks* checks = nullptr,
-                        PendingRecording* multibody_chunks = nullptr);
+// What buildRunGroup may be given ready.
+struct RunGroupParts {
+  // computeDatasetChecks of the inputs (the engine computed them for its run result), or null:
+  // computed here
+  const DatasetChecks* checks = nullptr;
+  std::shared_ptr<const GroupImage> walk;       // buildWalkPart of the inputs, or null
+  std::shared_ptr<const GroupImage> multibody;  // buildMultibodyPart of the inputs, or null
+};
+
+// Adds runs/<group_name> with everything of the run schema to `runs` (the image of the group
+// /runs) and returns it. The inputs are checked first (checkRunInputs).
+GroupImage& buildRunGroup(GroupImage& runs, const std::string& group_name,
+                          const Scenario& scenario, const wpg::WalkResult& result,
+                          const FootstepClearances* clearances, const MultibodyRecord* multibody,
+                          const GoalOutcome* goal, const RunGroupParts& parts = {});
+
+void writeMultibody(GroupImage& run, const Scenario& scenario, const MultibodyRecord& multibody);
 
 }  // namespace wpg::datasets::detail

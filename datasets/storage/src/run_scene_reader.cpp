@@ -200,7 +200,7 @@ std::vector<StoredRoutePlan> readPlans(const std::string& path, const H5::Group&
 }
 
 StoredRunScene readScene(const std::string& path, const std::string& run_name, std::size_t samples) {
-  const H5::H5File file(path, H5F_ACC_RDONLY);
+  const H5::H5File file = detail::openFileForReading(path);
   const std::string run_path = "/runs/" + run_name;
   if (!file.nameExists("runs") || !file.openGroup("runs").nameExists(run_name)) {
     throw InputError(path + ": no run " + run_path);
@@ -231,7 +231,7 @@ StoredRunScene readScene(const std::string& path, const std::string& run_name, s
 }
 
 std::vector<StoredRoutePlan> readPlansOf(const std::string& path, const std::string& run_name) {
-  const H5::H5File file(path, H5F_ACC_RDONLY);
+  const H5::H5File file = detail::openFileForReading(path);
   const std::string run_path = "/runs/" + run_name;
   if (!file.nameExists("runs") || !file.openGroup("runs").nameExists(run_name)) {
     throw InputError(path + ": no run " + run_path);

@@ -18,6 +18,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "wpg/datasets/input/yaml_input.hpp"
+#include "wpg/qp/hessian_factor_cache.hpp"
 
 namespace wpg::datasets {
 namespace {
@@ -200,6 +201,12 @@ void loadStudyScenarios(Study* study, int threads, const std::function<void(Stud
   char hex[17];
   std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(hash));
   study->fingerprint = hex;
+  // One cache of Hessian factors for the study: its runs mostly sweep keys that leave the
+  // NMPC's Hessians as they are (1200 factors computed for the 200 runs of
+  // speeds_weights_heights.yaml instead of 6000), and the factors are the same bits shared or
+  // not (qp/hessian_factor_cache.hpp).
+  const auto hessian_factors = std::make_shared<qp::HessianFactorCache>();
+  for (StudyRun& run : study->runs) run.scenario.request.generator.hessian_factors = hessian_factors;
 }
 
 Study loadStudy(const std::string& path, const BaseResolver& resolve_base,

@@ -120,6 +120,20 @@ class PatternGenerator {
   // foot about to lift and that of the previous landing (NaN: none): 0 (no change) unless a
   // push has carried it past push_step_capture_offset, by a jump.
   int pushStepCadence(double capture_offset, double previous_offset) const;
+  // --- update(), one concern each ----------------------------------------------------------
+  // The command clamped, how long it has been held, the heading integrated up to `time`.
+  Eigen::Vector3d takeCommand(double time, const Eigen::Vector3d& raw_command);
+  // The cadence the steps from the next landing on should have (step timing, push steps).
+  int wantedCadence(const Eigen::Vector3d& command, const Eigen::Vector2d& capture_point);
+  // The gait's phase at this sample: the cadence switched, the plan seeded or its warm start
+  // dropped as the phase asks.
+  GaitScheduler::SampleStart beginSample(const Eigen::Vector3d& command);
+  // The problem's phase, J1's references, the CoM state, the landing and swing-reach bounds.
+  void fillProblem(double time, const Eigen::Vector3d& command,
+                   const GaitScheduler::SampleStart& phase_start,
+                   const SwingFootTrajectory* swing);
+  // The obstacles of the QP (the nearest, in their slots) and the command_tangent borders.
+  void placeObstacles(const Eigen::Vector3d& command);
   // --- the NMPC's plan and its warm start, owned by the solver: the only code that touches
   //     them ---------------------------------------------------------------------------------
   void seedStep(int step, const Eigen::Vector3d& pose);
@@ -136,7 +150,7 @@ class PatternGenerator {
   // One NMPC per cadence (heap-allocated once: the solver is bound to its model's address).
   struct Cadence {
     Cadence(const WalkingParameters& parameters, const GeneratorSettings& settings,
-            const ConstraintFamilies& extra_families);
+            const ConstraintFamilies& extra_families, qp::HessianFactorCache& hessian_factors);
     NmpcModel model;
     NmpcSolver solver;
     NmpcProblem problem;
@@ -150,6 +164,8 @@ class PatternGenerator {
   NmpcSolver* solver_ = nullptr;
   NmpcProblem* problem_ = nullptr;
   GeneratorSettings settings_;
+  // The cadences' factors: settings_.hessian_factors, or this generator's own cache.
+  std::shared_ptr<qp::HessianFactorCache> hessian_factors_;
   GaitScheduler gait_;
   ReferenceBuilder references_;
   CadenceChoice cadence_choice_;

@@ -1,12 +1,17 @@
 #pragma once
 // What a walk is asked to do: a piecewise-constant velocity command, perturbations, and how
 // the pattern generator solves its problem. Plain data; datasets/ fills it from a scenario.
+#include <memory>
 #include <string>
 #include <vector>
 
 #include <Eigen/Core>
 
 #include "wpg/obstacles.hpp"
+
+namespace wpg::qp {
+class HessianFactorCache;  // wpg/qp/hessian_factor_cache.hpp
+}
 
 namespace wpg {
 
@@ -52,6 +57,10 @@ struct GeneratorSettings {
   int blocked_window_cycles = 3;
   double blocked_progress = 0.25;
   bool stop_when_blocked = false;
+  // Where the generator's NMPC models take their Hessians' factors: a cache shared with other
+  // generators (the runs of a study share one, loadStudyScenarios), or null: the generator
+  // makes its own. Not a setting of the walk: the results are the same bits either way.
+  std::shared_ptr<qp::HessianFactorCache> hessian_factors;
 
   // Throws std::invalid_argument naming the bad field ("generator.<field>") and what was
   // expected.

@@ -10,7 +10,6 @@
 
 #include "nmpc_internal.hpp"
 #include "wpg/nmpc/builtin_families.hpp"
-#include "wpg/qp/shared_hessian_factor.hpp"
 
 namespace wpg {
 
@@ -20,7 +19,8 @@ const char* relaxationGroupName(RelaxationGroup group) {
   return index < 3 ? kNames[index] : "unknown";
 }
 
-NmpcModel::NmpcModel(const WalkingParameters& parameters, int obstacle_slots)
+NmpcModel::NmpcModel(const WalkingParameters& parameters, int obstacle_slots,
+                     qp::HessianFactorCache* hessian_factors)
     : parameters_(parameters) {
   if (obstacle_slots < 0) throw std::invalid_argument("obstacle slots: expected >= 0");
   parameters_.validate();
@@ -101,7 +101,11 @@ NmpcModel::NmpcModel(const WalkingParameters& parameters, int obstacle_slots)
     Q.block(layout_.stepYaw(), layout_.stepYaw(), nf, nf) =
         parameters_.weight_yaw * Eigen::MatrixXd::Identity(nf, nf);  // Q^theta of eq. (8)
     hessians_[pattern] = Q;
-    factors_[pattern] = qp::sharedHessianFactor(Q);
+    if (hessian_factors) {
+      factors_[pattern] = hessian_factors->factor(Q);
+    } else if (auto factor = std::make_shared<qp::HessianFactor>(); factor->compute(Q)) {
+      factors_[pattern] = std::move(factor);
+    }
     if (!factors_[pattern])
       throw std::invalid_argument("NMPC Hessian is not positive definite (check the weights)");
   }

@@ -5,9 +5,10 @@
 // element-wise across rows: every row's result is the same sequence of IEEE multiplications and
 // additions whatever the vector width. Compiled twice, for AVX2 and for the baseline x86-64
 // (SSE2), and chosen when the program loads, they run twice as wide where the processor can,
-// with the same bits. Only multiplications and additions are used (the build does not contract
-// them into FMAs: ISO C++, -ffp-contract=off), so no clone rounds differently. GCC only (Clang's
-// sanitizer build takes the baseline).
+// with the same bits. Only multiplications and additions are used, and libwpg is compiled with
+// -ffp-contract=off (libwpg/CMakeLists.txt: GCC would otherwise contract them into FMAs in any
+// clone whose target has FMA), so no clone rounds differently. GCC only (Clang's sanitizer
+// build takes the baseline).
 #if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
 #define WPG_QP_KERNEL_CLONES __attribute__((target_clones("avx2", "default")))
 #else

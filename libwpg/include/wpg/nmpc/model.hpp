@@ -15,6 +15,7 @@
 #include "wpg/nmpc/layout.hpp"
 #include "wpg/nmpc/problem.hpp"
 #include "wpg/qp/dense_qp_solver.hpp"
+#include "wpg/qp/hessian_factor_cache.hpp"
 #include "wpg/walking_parameters.hpp"
 
 namespace wpg {
@@ -23,7 +24,10 @@ class NmpcModel {
  public:
   // Registers the paper's families (builtin_families.hpp): CoP, step feasibility, yaw bound,
   // obstacles (with `obstacle_slots` obstacles at most in the QP at once), landing bounds.
-  explicit NmpcModel(const WalkingParameters& parameters, int obstacle_slots = 0);
+  // The Hessians' factors come from `hessian_factors` when given (shared with the other
+  // models that use that cache, qp/hessian_factor_cache.hpp), else are computed here.
+  explicit NmpcModel(const WalkingParameters& parameters, int obstacle_slots = 0,
+                     qp::HessianFactorCache* hessian_factors = nullptr);
 
   // Appends a family after the registered ones: its rows start where theirs end. Call it before
   // building a solver on this model. Throws std::invalid_argument beyond
@@ -89,8 +93,8 @@ class NmpcModel {
   Eigen::MatrixXd tracked_velocity_jerk_;
   ConvexPolygon feasibility_left_, feasibility_right_;
   std::vector<Eigen::MatrixXd> hessians_;
-  // Shared with the other models of the process that have the same Hessian
-  // (qp/shared_hessian_factor.hpp): the runs of a study build the same ones again.
+  // Shared with the other models of the cache given at construction that have the same
+  // Hessian (qp/hessian_factor_cache.hpp): the runs of a study build the same ones again.
   std::vector<std::shared_ptr<const qp::HessianFactor>> factors_;
   // Families are stateless (const): models share them when copied.
   std::vector<std::shared_ptr<const ConstraintFamily>> families_;

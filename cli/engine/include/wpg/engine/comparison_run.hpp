@@ -9,6 +9,7 @@
 
 #include "wpg/analysis/comparison_summary.hpp"
 #include "wpg/datasets/storage/batch_dataset.hpp"
+#include "wpg/datasets/storage/output_file.hpp"
 #include "wpg/datasets/study_design/comparison_study.hpp"
 #include "wpg/engine/study_executor.hpp"
 
@@ -60,6 +61,14 @@ ComparisonOutcome runComparison(const datasets::ComparisonStudy& comparison,
 ComparisonOutcome runComparison(const datasets::ComparisonStudy& comparison,
                                 const std::string& batch_file, StudyExecutor& executor,
                                 StudyObserver& observer);
+
+// The files written beside a comparison's study file, in its folder: summary.csv, summary.md
+// and, with `figures`, those of analysis/plot_compare.py (success_rates.png, time_to_goal.png,
+// top_<world>.png per world): the outputs checked with the study file before any work
+// (datasets::checkOutputPaths), by `wpg compare` and by `wpg merge` of a comparison's shards.
+std::vector<datasets::PlannedOutput> comparisonSideOutputs(const std::string& study_file,
+                                                           const std::vector<std::string>& worlds,
+                                                           bool figures);
 
 // summary.csv (10 significant digits) and summary.md (4) of the table, in `folder`.
 struct ComparisonTableFiles {

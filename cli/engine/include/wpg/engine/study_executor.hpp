@@ -63,6 +63,10 @@ struct RankStatistics {
 class StudyObserver {
  public:
   virtual ~StudyObserver() = default;
+  // The study `name` is loaded and every input and output checked, nothing written yet;
+  // `warnings`: what its runs' scenarios warn about (a clamped command, ...), run by run.
+  // Called by runBatchStudy and runComparisonStudy, on the process that reports (rank 0).
+  virtual void accepted(const std::string& name, const std::vector<std::string>& warnings);
   // `file`, which HDF5 cannot read (a process killed inside a write), was moved to `aside`;
   // `shard`: a rank's shard, whose runs are run again (else the batch file: all start again).
   virtual void movedDamagedFile(const std::string& file, const std::string& aside, bool shard);

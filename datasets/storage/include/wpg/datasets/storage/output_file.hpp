@@ -51,13 +51,15 @@ void checkOutputPaths(const std::vector<PlannedOutput>& outputs,
 // leaving neither the temporary file nor a partial `path`.
 void writeFileAtomically(const std::string& path, const std::string& content);
 
-// Call right after HDF5 has created `path` (H5F_ACC_TRUNC, an open with O_TRUNC). ext4 (its
-// default auto_da_alloc) marks a file truncated to zero for writing out at its next close, a
-// heuristic for programs that rewrite a file without fsync; closing a 47 MB batch file then
-// spent 2-8 ms in close() allocating and queueing all of it, on the one thread that finishes
-// the study. The mark is the inode's and the first close of any descriptor takes it, so an
-// open and a close now, while the file holds nothing, leave the data to the kernel's usual
-// writeback. Elsewhere an open and a close, nothing more; errors are ignored (an optimisation).
+// Call right after HDF5 has created `path` (H5F_ACC_TRUNC, an open with O_TRUNC), for the
+// files that hold a whole study (the batch file, a copied index) only. ext4 (its default
+// auto_da_alloc) marks a file truncated to zero for writing out at its next close, a heuristic
+// for programs that rewrite a file without fsync; closing a 47 MB batch file then spent 2-8 ms
+// in close() allocating and queueing all of it (strace of 9 `wpg batch -j 2` runs), on the one
+// thread that finishes the study. The mark is the inode's and the first close of any
+// descriptor takes it, so an open and a close now, while the file holds nothing, leave the
+// data to the kernel's usual writeback. A run file (a few hundred kB) is not worth it.
+// Elsewhere an open and a close, nothing more; errors are ignored (an optimisation).
 void forgoWriteOutOnClose(const std::string& path);
 
 // An exclusive claim on an output file that is written in place for a long time (a batch file,

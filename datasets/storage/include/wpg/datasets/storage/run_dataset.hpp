@@ -1,5 +1,6 @@
 #pragma once
 // One run, written to HDF5 (layout: datasets/SCHEMA.md, a contract with every reader).
+#include <cstddef>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -82,11 +83,19 @@ struct MultibodyRecord {
   ChainTimeSummary chain_time;
 };
 
-// A run's datasets compressed ahead of writing (BatchDatasetWriter::prepare, or the walk's
-// part by prepareWalkDatasets): the compression (most of the writing time) then runs where
-// there is a core to spare instead of inside the writer, which HDF5 serializes.
+namespace detail {
+class GroupImage;  // datasets/storage/src/hdf5_image.hpp
+}
+
+// A run built ahead of writing (BatchDatasetWriter::prepare: its whole group; or the walk's
+// datasets, prepareWalkDatasets): its attributes and groups, and its datasets' chunks
+// compressed (most of the writing time), without any HDF5 call, where there is a core to
+// spare; the writer only commits it to the file, under the HDF5 lock.
 struct PreparedRun {
-  std::shared_ptr<void> recording;  // the chunks, in the writer's order (detail::ChunkRecording)
+  std::shared_ptr<const detail::GroupImage> image;
+  // The walk's part (prepareWalkDatasets): the sizes of what it was built from, so that
+  // writeRunDataset refuses the part of another walk (std::logic_error).
+  std::size_t samples = 0, iterations = 0, footsteps = 0, obstacles = 0;
 };
 
 // Writes `result` of `scenario` to `path` (group /runs/<scenario.name>), atomically: the file
@@ -122,9 +131,9 @@ void writeRunDataset(const std::string& path, const Scenario& scenario,
                      const GoalOutcome* goal = nullptr, const PreparedRun* prepared = nullptr);
 
 // The walk's datasets of a run file (the trajectory, the NMPC log, the obstacles: the first
-// the writer writes), compressed without the file and without an HDF5 call, so that any
-// thread may compute them at any time: `wpg run` does it on a second core while the replay
-// runs, and writeRunDataset then only writes them. The same bytes as compressed there.
+// the writer writes), built without the file and without an HDF5 call, so that any thread may
+// build them at any time: `wpg run` does it on a second core while the replay runs, and
+// writeRunDataset then commits them as they are. The same bytes as built there.
 PreparedRun prepareWalkDatasets(const Scenario& scenario, const wpg::WalkResult& result);
 
 // Debian's HDF5 is built without thread safety: every use of the HDF5 library in this process

@@ -8,6 +8,7 @@ import os
 import re
 
 from . import _wpg
+from ._figure import analysis_folder
 from ._wpg import InputError
 
 
@@ -42,40 +43,32 @@ def run_names(path):
     return _wpg.run_names(os.fspath(path))
 
 
-def _open(path):
-    import h5py
-    path = os.fspath(path)
-    if not os.path.isfile(path):
-        raise InputError("%s: cannot read: no such file" % path)
-    try:
-        return h5py.File(path, "r")
-    except OSError as error:
-        raise InputError("%s: cannot read it as HDF5 (%s)" % (path, " ".join(str(error).split())))
-
-
-def _text(values):
-    return [value.decode() if isinstance(value, bytes) else str(value) for value in values]
-
-
 def _table(path, group_name):
-    """The columns of a table group (one 1-D dataset per column, `columns` in order)."""
+    """The columns of a table group (one 1-D dataset per column, `columns` in order), read as
+    `wpg` and its figure scripts read (analysis/wpg_file_reading.py): the file checked to be a
+    regular file, every link checked before it is followed, every size before it is loaded."""
     import numpy as np
-    with _open(path) as handle:
-        if group_name not in handle:
-            raise InputError("%s: /%s: expected a table, missing (not a %s file)"
-                             % (os.fspath(path), group_name,
-                                "batch" if group_name == "batch/summary" else "comparison"))
-        group = handle[group_name]
-        names = _text(group.attrs["columns"]) if "columns" in group.attrs else sorted(group)
-        columns, units = {}, {}
-        for name in names:
-            dataset = group[name]
-            if dataset.dtype.kind in "SOU":
-                columns[name] = np.array(_text(dataset[()]), dtype=object)
-            else:
-                columns[name] = dataset[()]
-            unit = dataset.attrs.get("units", "")
-            units[name] = unit.decode() if isinstance(unit, bytes) else str(unit)
+    analysis_folder()
+    import wpg_file_reading as reading
+    path = os.fspath(path)
+    try:
+        with reading.open_file(path) as handle:
+            reader = reading.Reader(path, handle)
+            group = reader.group(handle, group_name, optional=True)
+            if group is None:
+                raise InputError("%s: /%s: expected a table, missing (not a %s file)"
+                                 % (path, group_name,
+                                    "batch" if group_name == "batch/summary" else "comparison"))
+            names = reader.attribute(group, "columns", kind="texts", optional=True)
+            columns, units = {}, {}
+            for name in names if names is not None else sorted(group):
+                values = reader.dataset(group, name, kind="auto", finite=False,
+                                        max_rows=reading.MAX_READ_ELEMENTS)
+                columns[name] = values.astype(object) if values.dtype.kind == "U" else values
+                units[name] = reader.attribute(group[name], "units", kind="text", default="",
+                                               optional=True)
+    except reading.BadFile as error:
+        raise InputError(str(error)) from None
     return columns, units
 
 

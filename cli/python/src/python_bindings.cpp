@@ -1,10 +1,10 @@
 // The extension module wpg._wpg: the engine's runs, studies and stored runs, and libwpg's online
-// generator, for the Python package analysis/python/wpg/ (which builds the public API on it).
+// generator, for the Python package cli/python/wpg/ (which builds the public API on it).
 // The one file that includes pybind11 (a heavy header). Arrays of a run are numpy views of the
 // C++ result's buffers (read-only, the run's core object as their base: nothing copied); the
 // small tables (footsteps, NMPC log) are copied once into columns. Walks, studies and saves
 // run without the GIL.
-#include <chrono>
+#include <optional>
 #include <cstdint>
 #include <stdexcept>
 #include <string>
@@ -192,29 +192,23 @@ py::list metricRows(const analysis::RunMetrics* metrics) {
 }
 
 // A control sample with the status of the last NMPC iteration, copied out of the generator.
-struct OnlineState {
-  ControlSample sample;
-  IterationStatus status = IterationStatus::kSolved;
-  bool fallen = false, landed = false;
-};
-
 py::array vectorCopy(const double* data, py::ssize_t n) { return py::array_t<double>(n, data); }
 
 void bindOnline(py::module_& m) {
-  py::class_<OnlineState>(m, "OnlineState")
-      .def_property_readonly("time", [](const OnlineState& s) { return s.sample.time; })
-      .def_property_readonly("com", [](const OnlineState& s) { return vectorCopy(s.sample.com_position.data(), 3); })
-      .def_property_readonly("com_vel", [](const OnlineState& s) { return vectorCopy(s.sample.com_velocity.data(), 3); })
-      .def_property_readonly("com_acc", [](const OnlineState& s) { return vectorCopy(s.sample.com_acceleration.data(), 3); })
-      .def_property_readonly("cop", [](const OnlineState& s) { return vectorCopy(s.sample.cop.data(), 2); })
-      .def_property_readonly("left_foot", [](const OnlineState& s) { return vectorCopy(s.sample.left_foot.data(), 4); })
-      .def_property_readonly("right_foot", [](const OnlineState& s) { return vectorCopy(s.sample.right_foot.data(), 4); })
-      .def_property_readonly("support", [](const OnlineState& s) { return supportName(s.sample.support); })
-      .def_property_readonly("free_flyer_yaw", [](const OnlineState& s) { return s.sample.free_flyer_yaw; })
-      .def_property_readonly("nmpc_sample", [](const OnlineState& s) { return s.sample.nmpc_sample; })
-      .def_property_readonly("status", [](const OnlineState& s) { return iterationStatusName(s.status); })
-      .def_property_readonly("fallen", [](const OnlineState& s) { return s.fallen; })
-      .def_property_readonly("landed", [](const OnlineState& s) { return s.landed; });
+  py::class_<OnlineStep>(m, "OnlineState")
+      .def_property_readonly("time", [](const OnlineStep& s) { return s.sample.time; })
+      .def_property_readonly("com", [](const OnlineStep& s) { return vectorCopy(s.sample.com_position.data(), 3); })
+      .def_property_readonly("com_vel", [](const OnlineStep& s) { return vectorCopy(s.sample.com_velocity.data(), 3); })
+      .def_property_readonly("com_acc", [](const OnlineStep& s) { return vectorCopy(s.sample.com_acceleration.data(), 3); })
+      .def_property_readonly("cop", [](const OnlineStep& s) { return vectorCopy(s.sample.cop.data(), 2); })
+      .def_property_readonly("left_foot", [](const OnlineStep& s) { return vectorCopy(s.sample.left_foot.data(), 4); })
+      .def_property_readonly("right_foot", [](const OnlineStep& s) { return vectorCopy(s.sample.right_foot.data(), 4); })
+      .def_property_readonly("support", [](const OnlineStep& s) { return supportName(s.sample.support); })
+      .def_property_readonly("free_flyer_yaw", [](const OnlineStep& s) { return s.sample.free_flyer_yaw; })
+      .def_property_readonly("nmpc_sample", [](const OnlineStep& s) { return s.sample.nmpc_sample; })
+      .def_property_readonly("status", [](const OnlineStep& s) { return iterationStatusName(s.status); })
+      .def_property_readonly("fallen", [](const OnlineStep& s) { return s.fallen; })
+      .def_property_readonly("landed", [](const OnlineStep& s) { return s.landed; });
 
   py::class_<OnlineSession>(m, "OnlineCore")
       .def(py::init([](const std::string& scenario, std::vector<std::string> overrides) {
@@ -223,26 +217,21 @@ void bindOnline(py::module_& m) {
                  datasets::loadScenario(path, overrides, robotsDirectory()));
            }),
            py::arg("scenario"), py::arg("overrides"))
+      // Every call of a session takes its lock with the GIL released (online_session.hpp):
+      // threads sharing one generator wait for each other's step, not for Python.
       .def("step",
            [](OnlineSession& session, py::object command) {
-             OnlineState state;
-             if (command.is_none()) {
-               state.sample = session.step(nullptr);
-             } else {
+             std::optional<Eigen::Vector3d> given;
+             if (!command.is_none()) {
                const auto values = command.cast<std::vector<double>>();
                if (values.size() != 3) {
                  throw datasets::InputError("command: expected (vx, vy, omega), 3 numbers, got " +
                                             std::to_string(values.size()));
                }
-               const Eigen::Vector3d c(values[0], values[1], values[2]);
-               py::gil_scoped_release release;
-               state.sample = session.step(&c);
+               given = Eigen::Vector3d(values[0], values[1], values[2]);
              }
-             const OnlineWalkingGenerator& g = session.generator();
-             state.status = g.lastIteration().status;
-             state.fallen = g.fallen();
-             state.landed = g.landed();
-             return state;
+             py::gil_scoped_release release;
+             return session.step(given ? &*given : nullptr);
            },
            py::arg("command") = py::none())
       // `steps` control periods with `command` entirely in C++ (what gen.step() costs without
@@ -252,28 +241,37 @@ void bindOnline(py::module_& m) {
              if (command.size() != 3) throw datasets::InputError("command: expected 3 numbers");
              const Eigen::Vector3d c(command[0], command[1], command[2]);
              py::gil_scoped_release release;
-             const auto start = std::chrono::steady_clock::now();
-             for (int i = 0; i < steps; ++i) session.step(&c);
-             return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+             return session.runSteps(c, steps);
            },
            py::arg("command"), py::arg("steps"))
-      .def("set_obstacles", &OnlineSession::setObstacles, py::arg("yaml"))
+      .def("set_obstacles", &OnlineSession::setObstacles, py::arg("yaml"),
+           py::call_guard<py::gil_scoped_release>())
       .def("push",
            [](OnlineSession& s, double fx, double fy, double duration) {
              s.push(Eigen::Vector2d(fx, fy), duration);
-           })
-      .def("reset", [](OnlineSession& s, double x, double y, double yaw) { s.reset({x, y, yaw}); })
-      .def_property_readonly("time", [](const OnlineSession& s) { return s.generator().time(); })
-      .def_property_readonly("control_period",
-                             [](const OnlineSession& s) { return s.scenario().walking.control_period; })
+           },
+           py::call_guard<py::gil_scoped_release>())
+      .def("reset",
+           [](OnlineSession& s, double x, double y, double yaw) { s.reset({x, y, yaw}); },
+           py::call_guard<py::gil_scoped_release>())
+      .def_property_readonly("time", [](const OnlineSession& s) {
+        py::gil_scoped_release release;
+        return s.time();
+      })
+      .def_property_readonly("control_period", &OnlineSession::controlPeriod)
       .def_property_readonly("command", [](const OnlineSession& s) {
-        return vectorCopy(s.generator().command().data(), 3);
+        Eigen::Vector3d command;
+        {
+          py::gil_scoped_release release;
+          command = s.command();
+        }
+        return vectorCopy(command.data(), 3);
       });
 }
 
 void bindRun(py::module_& m) {
   py::class_<RunSession, std::shared_ptr<RunSession>>(m, "RunCore")
-      .def_property_readonly("name", [](const RunSession& r) { return r.scenario.name; })
+      .def_property_readonly("name", [](const RunSession& r) { return r.loaded.scenario.name; })
       .def_property_readonly("success",
                              [](const RunSession& r) { return r.result.exitStatus() == 0; })
       .def_property_readonly("exit_code", [](const RunSession& r) { return r.result.exitStatus(); })
@@ -297,9 +295,9 @@ void bindRun(py::module_& m) {
                                                      walk.blocked_position.y());
                              })
       .def_property_readonly("scenario_yaml",
-                             [](const RunSession& r) { return r.scenario.resolved_yaml; })
-      .def_property_readonly("warnings", [](const RunSession& r) { return r.scenario.warnings; })
-      .def_property_readonly("scenario_path", [](const RunSession& r) { return r.scenario_path; })
+                             [](const RunSession& r) { return r.loaded.scenario.resolved_yaml; })
+      .def_property_readonly("warnings", [](const RunSession& r) { return r.loaded.scenario.warnings; })
+      .def_property_readonly("scenario_path", [](const RunSession& r) { return r.loaded.path; })
       .def_property_readonly("stored_file", [](const RunSession& r) { return r.stored_file; })
       .def_property_readonly("replayed",
                              [](const RunSession& r) { return r.result.replay.has_value(); })
@@ -335,25 +333,28 @@ PYBIND11_MODULE(_wpg, m) {
         py::call_guard<py::gil_scoped_release>());
   m.def("run_names", &storedRunNames, py::arg("path"));
   m.def("batch",
-        [](const std::string& study, const std::string& output, int jobs, bool resume) {
+        [](const std::string& study, const std::string& output, int jobs, bool resume,
+           bool figure) {
           StudyFiles files;
           {
             py::gil_scoped_release release;
-            files = runBatch(study, output, jobs, resume);
+            files = runBatch(study, output, jobs, resume, figure);
           }
           return py::make_tuple(files.batch_file, files.runs, files.failed_runs);
         },
-        py::arg("study"), py::arg("output"), py::arg("jobs"), py::arg("resume"));
+        py::arg("study"), py::arg("output"), py::arg("jobs"), py::arg("resume"),
+        py::arg("figure"));
   m.def("compare",
-        [](const std::string& study, const std::string& folder, int jobs) {
+        [](const std::string& study, const std::string& folder, int jobs, bool figures) {
           StudyFiles files;
           {
             py::gil_scoped_release release;
-            files = runCompare(study, folder, jobs);
+            files = runCompare(study, folder, jobs, figures);
           }
           return py::make_tuple(files.batch_file, files.runs);
         },
-        py::arg("study"), py::arg("folder"), py::arg("jobs"));
+        py::arg("study"), py::arg("folder"), py::arg("jobs"),
+        py::arg("figures"));
   m.def("scenarios", &shippedScenarioNames);
   m.def("resolve_scenario", &resolveScenarioPath, py::arg("scenario"));
   m.def("data_directory", &dataDirectory);

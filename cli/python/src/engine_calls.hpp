@@ -1,15 +1,17 @@
 #pragma once
 // What the Python package asks of the engine, in plain C++ (no pybind11 here: it is heavy, and
-// python_bindings.cpp is the one file that includes it). Each call behaves like the `wpg`
-// subcommand of the same name: the same input checks before anything is written, the same
-// files, the same exit meaning; bad input is a datasets::InputError whose one-line message
-// names the file and the key.
+// python_bindings.cpp is the one file that includes it). Each call is the engine's call that the
+// `wpg` subcommand of the same name makes (scenario_request.hpp, batch_study_run.hpp,
+// comparison_study_run.hpp), which owns every input and output check: the same refusals before
+// anything is written, the same files, the same exit meaning; bad input is a
+// datasets::InputError whose one-line message names the file and the key.
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "wpg/datasets/input/scenario.hpp"
 #include "wpg/engine/data_paths.hpp"
+#include "wpg/engine/scenario_request.hpp"
 #include "wpg/engine/scenario_run.hpp"
 
 namespace wpg::python {
@@ -23,8 +25,7 @@ using engine::shippedScenarioNames;
 // A run held for Python: the scenario it ran and its result. A run read back from a file has
 // `stored_file` set and no replay (its multibody datasets stay in the file).
 struct RunSession {
-  datasets::Scenario scenario;
-  std::string scenario_path;  // the scenario file (empty for a run read back)
+  engine::LoadedScenario loaded;  // the scenario and its file (no file for a run read back)
   engine::RunResult result;
   std::string stored_file, stored_name;
 };
@@ -45,17 +46,20 @@ void saveRun(const RunSession& run, const std::string& path);
 std::shared_ptr<RunSession> loadStoredRun(const std::string& path, const std::string& name);
 std::vector<std::string> storedRunNames(const std::string& path);
 
-// `wpg batch STUDY -o OUTPUT -j JOBS [--resume]` without the figure: OUTPUT and
-// OUTPUT.summary.csv/.md. Returns the number of failed runs (exit status 1 when not 0).
-// Call without the GIL.
+// `wpg batch STUDY -o OUTPUT -j JOBS [--resume]`: OUTPUT and OUTPUT.summary.csv/.md; with
+// `figure`, OUTPUT.summary.png is checked with them (the package draws it after). Returns the
+// number of failed runs (exit status 1 when not 0). Call without the GIL.
 struct StudyFiles {
   std::string batch_file;
   std::size_t runs = 0, failed_runs = 0;
 };
-StudyFiles runBatch(const std::string& study, const std::string& output, int jobs, bool resume);
+StudyFiles runBatch(const std::string& study, const std::string& output, int jobs, bool resume,
+                    bool figure);
 
-// `wpg compare STUDY -o FOLDER -j JOBS` without the figures: FOLDER/study.h5, summary.csv and
-// summary.md. Call without the GIL.
-StudyFiles runCompare(const std::string& study, const std::string& folder, int jobs);
+// `wpg compare STUDY -o FOLDER -j JOBS`: FOLDER/study.h5, summary.csv and summary.md; with
+// `figures`, the figures' paths are checked with them (the package draws them after). Call
+// without the GIL.
+StudyFiles runCompare(const std::string& study, const std::string& folder, int jobs,
+                      bool figures);
 
 }  // namespace wpg::python

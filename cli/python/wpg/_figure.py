@@ -7,14 +7,22 @@ import sys
 from . import _wpg
 
 
+def analysis_folder():
+    """analysis/ of the data directory (as `wpg plot` finds it), on sys.path: plot_run.py
+    imports its reading helpers (wpg_file_reading.py) from its folder, and wpg.io reads with
+    them too."""
+    folder = os.path.join(_wpg.data_directory(), "analysis")
+    if folder not in sys.path:
+        sys.path.append(folder)
+    return folder
+
+
 def _plot_module():
-    """analysis/plot_run.py of the data directory (as `wpg plot` finds it), imported once."""
+    """analysis/plot_run.py of the data directory, imported once."""
     name = "wpg_plot_run"
     if name in sys.modules:
         return sys.modules[name]
-    folder = os.path.join(_wpg.data_directory(), "analysis")
-    if folder not in sys.path:
-        sys.path.append(folder)  # plot_run.py imports its reading helpers from its folder
+    folder = analysis_folder()
     spec = importlib.util.spec_from_file_location(name, os.path.join(folder, "plot_run.py"))
     module = importlib.util.module_from_spec(spec)
     # The module selects the Agg backend for its command-line use; a caller that already

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """What driving wpg from Python costs (docs/python.md, "Speed"): a measurement, not a test.
 
-  PYTHONPATH=build/python /usr/bin/python3 analysis/python/benchmarks/bench_python_overhead.py \\
+  PYTHONPATH=build/python /usr/bin/python3 cli/python/benchmarks/bench_python_overhead.py \\
       --wpg build/cli/wpg [--study STUDY.yaml] [--pairs 5] [-j 2] [--skip-batch]
 
 1. Study throughput: `wpg.batch(study, jobs=J)` against `wpg batch STUDY -j J --no-plot`

@@ -19,7 +19,7 @@ def batch(study, output, jobs=1, resume=False, plot=False):
     raises wpg.InputError before anything is written.
     """
     study, output = os.fspath(study), os.fspath(output)
-    _file, _runs, failed = _wpg.batch(study, output, int(jobs), bool(resume))
+    _file, _runs, failed = _wpg.batch(study, output, int(jobs), bool(resume), bool(plot))
     if plot:
         _draw("plot_batch.py", [output, "-o", os.path.splitext(output)[0] + ".summary.png"])
     table = load_summary(output)
@@ -35,7 +35,7 @@ def compare(study, output, jobs=1, plot=False):
     world x variant (wpg.io.load_compare_summary); walks that miss the goal are rows, not
     errors."""
     study, output = os.fspath(study), os.fspath(output)
-    batch_file, _runs = _wpg.compare(study, output, int(jobs))
+    batch_file, _runs = _wpg.compare(study, output, int(jobs), bool(plot))
     if plot:
         _draw("plot_compare.py", [batch_file, "-o", output])
     return load_compare_summary(batch_file)

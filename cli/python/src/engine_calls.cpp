@@ -1,0 +1,82 @@
+// What the Python package asks of the engine, as the `wpg` subcommands ask it (engine_calls.hpp).
+#include "engine_calls.hpp"
+
+#include "wpg/datasets/input/input_error.hpp"
+#include "wpg/datasets/storage/run_dataset_reader.hpp"
+#include "wpg/engine/batch_study_run.hpp"
+#include "wpg/engine/comparison_study_run.hpp"
+#include "wpg/engine/stored_runs.hpp"
+
+namespace wpg::python {
+namespace {
+
+engine::StudyRequest studyRequest(const std::string& study, const std::string& output, int jobs,
+                                  bool figures) {
+  engine::StudyRequest request;
+  request.study = study;
+  request.output = output;
+  request.jobs = jobs;
+  request.jobs_given = true;
+  request.figures = figures;
+  return request;  // the field names are the keyword arguments' (the defaults)
+}
+
+}  // namespace
+
+std::shared_ptr<RunSession> runScenarioFile(const std::string& scenario,
+                                            std::vector<std::string> overrides, bool replay,
+                                            bool filter) {
+  auto run = std::make_shared<RunSession>();
+  engine::RobotModelCache models(robotsDirectory());
+  run->loaded = engine::loadScenarioRequest({scenario, std::move(overrides), replay, filter}, models);
+  run->result = engine::runScenario(run->loaded.scenario, {robotsDirectory(), &models});
+  return run;
+}
+
+void saveRun(const RunSession& run, const std::string& path) {
+  if (!run.stored_file.empty()) {
+    throw datasets::InputError("save: a run read back from '" + run.stored_file +
+                               "' is already stored there (wpg.run() gives runs to save)");
+  }
+  engine::saveRun(run.loaded, run.result, path);
+}
+
+std::vector<std::string> storedRunNames(const std::string& path) {
+  return datasets::listRuns(path);
+}
+
+std::shared_ptr<RunSession> loadStoredRun(const std::string& path, const std::string& name) {
+  auto run = std::make_shared<RunSession>();
+  // As `wpg analyze`: the walk checked against its stored scenario, the metrics recomputed
+  // from it with the stored ZMP errors.
+  engine::StoredRunAnalysis analyzed = engine::analyzeStoredRun(path, name, robotsDirectory());
+  datasets::StoredRun& stored = analyzed.stored;
+  run->stored_file = path;
+  run->stored_name = stored.name;
+  run->loaded.scenario = std::move(analyzed.scenario);
+  engine::RunResult& result = run->result;
+  result.metrics = std::move(analyzed.metrics);
+  result.outcome = engine::walkOutcome(stored.result);
+  result.failure = stored.result.message;
+  result.walk.result = std::move(stored.result);
+  return run;
+}
+
+StudyFiles runBatch(const std::string& study, const std::string& output, int jobs, bool resume,
+                    bool figure) {
+  engine::StudyRequest request = studyRequest(study, output, jobs, figure);
+  request.resume = resume;
+  engine::StudyObserver quiet;
+  const engine::BatchStudyResult result = engine::runBatchStudy(request, quiet);
+  return {output, result.summary.runs, result.summary.failed_runs};
+}
+
+StudyFiles runCompare(const std::string& study, const std::string& folder, int jobs,
+                      bool figures) {
+  engine::StudyObserver quiet;
+  const engine::ComparisonStudyResult result =
+      engine::runComparisonStudy(studyRequest(study, folder, jobs, figures), quiet);
+  return {result.study_file, result.runs, 0};
+}
+
+}  // namespace wpg::python
