@@ -1,6 +1,7 @@
 #include "wpg/obstacle_selector.hpp"
 
 #include <algorithm>
+#include <limits>
 
 #include "wpg/obstacle_tangent.hpp"
 
@@ -100,28 +101,28 @@ void ObstacleSelector::borderNormals(const Eigen::Vector2d& com,
       const double gap = coreDistance(obstacles_.core(index), obstacles_.core(other)) -
                          radiusOf(index) - radiusOf(other);
       if (gap >= least_width) continue;
-      // Not when the pair's hull comes closer to the CoM than its members do, by more than
-      // the clearance: the robot is then in the pocket between them (inside a U of walls that
-      // touch, the hull of two of them covers the room in front of the robot; measured: every
-      // enclosure of obstacle_scenes.yaml fell or failed on relaxed rows). Seen from outside (a
-      // doorway from in front, a staggered pair from its side), the hull is as near as the
-      // nearer member.
+      // Not when the joined group's hull comes closer to the CoM than its members do, by more
+      // than the clearance: the robot is then in the pocket between them (inside a U of walls
+      // that touch, the hull of two of them covers the room in front of the robot; a ring of
+      // boxes round it, their hull holds it; measured: every enclosure of obstacle_scenes.yaml
+      // fell or failed on relaxed rows). Seen from outside (a doorway from in front, a
+      // staggered pair from its side), the hull is as near as the nearest member.
+      const int joined = leader_[r], into = leader_[before];
       group_points_.clear();
       group_radii_.clear();
-      for (const int member : {index, other}) {
+      double nearest = std::numeric_limits<double>::infinity();
+      for (int m = 0; m <= r; ++m) {
+        if (leader_[m] != joined && leader_[m] != into) continue;
+        const int member = slots(route_[m].second);
         const std::vector<Eigen::Vector2d>& core = obstacles_.core(member);
         group_points_.insert(group_points_.end(), core.begin(), core.end());
         group_radii_.insert(group_radii_.end(), core.size(), radiusOf(member));
+        nearest = std::min(nearest, obstacles_.signedDistance(member, com, nullptr) -
+                                        stepCentreMargin(obstacles_.obstacle(member), parameters));
       }
       const Eigen::Vector2d facing = hullFacing(group_points_, group_radii_, com);
-      const auto memberClearance = [&](int member) {
-        return obstacles_.signedDistance(member, com, nullptr) -
-               stepCentreMargin(obstacles_.obstacle(member), parameters);
-      };
-      const double nearer = std::min(memberClearance(index), memberClearance(other));
-      if (facing.dot(com) - borderOffset(group_points_, group_radii_, facing) < nearer - clearance)
+      if (facing.dot(com) - borderOffset(group_points_, group_radii_, facing) < nearest - clearance)
         continue;
-      const int joined = leader_[r], into = leader_[before];
       for (int m = 0; m <= r; ++m)
         if (leader_[m] == joined) leader_[m] = into;
     }

@@ -102,7 +102,8 @@ INSTANTIATE_TEST_SUITE_P(Scenarios, ShippedWalk,
                                            "obstacle_box_on_path", "obstacle_box_then_circle",
                                            "obstacle_gap", "obstacle_enclosure",
                                            "obstacle_turning", "obstacle_lateral",
-                                           "obstacle_wall"));
+                                           "obstacle_wall", "obstacle_staggered_boxes",
+                                           "obstacle_narrow_doorway"));
 
 TEST(ShippedWalks, EveryShippedScenarioIsCovered) {
   int count = 0;
@@ -110,7 +111,7 @@ TEST(ShippedWalks, EveryShippedScenarioIsCovered) {
     if (entry.path().extension() == ".yaml") ++count;
   // + the four walks to a goal (goal_*.yaml), run by tests/planning/test_goal_scenarios.cpp:
   // they need the route planner.
-  EXPECT_EQ(count, 21 + 4) << "a new shipped scenario must be added to the list above";
+  EXPECT_EQ(count, 23 + 4) << "a new shipped scenario must be added to the list above";
 }
 
 TEST(ShippedWalks, WalkForwardTracksTheCommandedSpeed) {
