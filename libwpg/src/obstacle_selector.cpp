@@ -98,6 +98,16 @@ void ObstacleSelector::borderNormals(const Eigen::Vector2d& com,
     for (int before = 0; before < r; ++before) {
       if (leader_[before] == leader_[r]) continue;
       const int other = slots(route_[before].second);
+      // Far apart by their enclosing circles (each grown as the shape is): no need for the
+      // exact gap. Measured: the exact gap of every pair at every sample made the NMPC
+      // iteration among three obstacles 16 % slower than before this rule, this test 11 %.
+      const auto enclosing = [&](int member) {
+        return obstacles_.reachCircle(member).z() - obstacles_.obstacle(member).margin +
+               stepCentreMargin(obstacles_.obstacle(member), parameters);
+      };
+      const double apart = (obstacles_.reachCircle(index).head<2>() -
+                            obstacles_.reachCircle(other).head<2>()).norm();
+      if (apart - enclosing(index) - enclosing(other) >= least_width) continue;
       const double gap = coreDistance(obstacles_.core(index), obstacles_.core(other)) -
                          radiusOf(index) - radiusOf(other);
       if (gap >= least_width) continue;
