@@ -21,6 +21,18 @@ engine::StudyRequest studyRequest(const std::string& study, const std::string& o
   return request;  // the field names are the keyword arguments' (the defaults)
 }
 
+// Quiet, as the package is; asks `stop` after each run.
+class StoppableObserver : public engine::StudyObserver {
+ public:
+  explicit StoppableObserver(const StopCheck& stop) : stop_(stop) {}
+  void runFinished(bool) override {
+    if (stop_) stop_();
+  }
+
+ private:
+  const StopCheck& stop_;
+};
+
 }  // namespace
 
 std::shared_ptr<RunSession> runScenarioFile(const std::string& scenario,
@@ -63,19 +75,19 @@ std::shared_ptr<RunSession> loadStoredRun(const std::string& path, const std::st
 }
 
 StudyFiles runBatch(const std::string& study, const std::string& output, int jobs, bool resume,
-                    bool figure) {
+                    bool figure, const StopCheck& stop) {
   engine::StudyRequest request = studyRequest(study, output, jobs, figure);
   request.resume = resume;
-  engine::StudyObserver quiet;
-  const engine::BatchStudyResult result = engine::runBatchStudy(request, quiet);
+  StoppableObserver observer(stop);
+  const engine::BatchStudyResult result = engine::runBatchStudy(request, observer);
   return {output, result.summary.runs, result.summary.failed_runs};
 }
 
 StudyFiles runCompare(const std::string& study, const std::string& folder, int jobs,
-                      bool figures) {
-  engine::StudyObserver quiet;
+                      bool figures, const StopCheck& stop) {
+  StoppableObserver observer(stop);
   const engine::ComparisonStudyResult result =
-      engine::runComparisonStudy(studyRequest(study, folder, jobs, figures), quiet);
+      engine::runComparisonStudy(studyRequest(study, folder, jobs, figures), observer);
   return {result.study_file, result.runs, 0};
 }
 
