@@ -2,6 +2,7 @@
 #include "engine_calls.hpp"
 
 #include "wpg/datasets/input/input_error.hpp"
+#include "wpg/datasets/input/yaml_input.hpp"
 #include "wpg/datasets/storage/run_dataset_reader.hpp"
 #include "wpg/engine/batch_study_run.hpp"
 #include "wpg/engine/comparison_study_run.hpp"
@@ -35,12 +36,23 @@ class StoppableObserver : public engine::StudyObserver {
 
 }  // namespace
 
+datasets::Scenario loadOnlineScenario(const std::string& scenario,
+                                      const std::vector<std::string>& overrides) {
+  const std::string path = resolveScenarioPath(scenario);
+  try {
+    return datasets::loadScenario(path, overrides, robotsDirectory());
+  } catch (const datasets::InputError& e) {
+    throw datasets::InputError(datasets::detail::renameOverrides(e.what(), kOverridesName));
+  }
+}
+
 std::shared_ptr<RunSession> runScenarioFile(const std::string& scenario,
                                             std::vector<std::string> overrides, bool replay,
                                             bool filter) {
   auto run = std::make_shared<RunSession>();
   engine::RobotModelCache models(robotsDirectory());
-  run->loaded = engine::loadScenarioRequest({scenario, std::move(overrides), replay, filter}, models);
+  run->loaded = engine::loadScenarioRequest(
+      {scenario, std::move(overrides), replay, filter, kOverridesName}, models);
   run->result = engine::runScenario(run->loaded.scenario, {robotsDirectory(), &models});
   return run;
 }

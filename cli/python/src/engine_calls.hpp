@@ -53,6 +53,13 @@ std::vector<std::string> storedRunNames(const std::string& path);
 // `resume` to finish. The bindings throw when Python has a signal pending (Ctrl-C).
 using StopCheck = std::function<void()>;
 
+// What messages call the overrides of wpg.run() and OnlineGenerator (`--set` in `wpg`).
+inline constexpr const char* kOverridesName = "overrides";
+
+// The scenario of an OnlineGenerator, loaded and checked as wpg.run()'s.
+datasets::Scenario loadOnlineScenario(const std::string& scenario,
+                                      const std::vector<std::string>& overrides);
+
 // `wpg batch STUDY -o OUTPUT -j JOBS [--resume]`: OUTPUT and OUTPUT.summary.csv/.md; with
 // `figure`, OUTPUT.summary.png is checked with them (the package draws it after). Returns the
 // number of failed runs (exit status 1 when not 0). Call without the GIL.

@@ -235,9 +235,7 @@ void bindOnline(py::module_& m) {
 
   py::class_<OnlineSession>(m, "OnlineCore")
       .def(py::init([](const std::string& scenario, std::vector<std::string> overrides) {
-             const std::string path = resolveScenarioPath(scenario);
-             return std::make_unique<OnlineSession>(
-                 datasets::loadScenario(path, overrides, robotsDirectory()));
+             return std::make_unique<OnlineSession>(loadOnlineScenario(scenario, overrides));
            }),
            py::arg("scenario"), py::arg("overrides"))
       // Every call of a session takes its lock with the GIL released (online_session.hpp):
