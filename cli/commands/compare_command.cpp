@@ -21,6 +21,7 @@
 #include "exit_codes.hpp"
 #include "study_request_options.hpp"
 #include "study_progress.hpp"
+#include "summary_printing.hpp"
 #include "wpg/datasets/storage/batch_index.hpp"
 #include "wpg/engine/comparison_study_run.hpp"
 
@@ -37,10 +38,7 @@ void printComparison(const std::vector<analysis::ComparisonCell>& cells) {
   for (const analysis::ComparisonCell& cell : cells) {
     const auto shown = [](double value, const char* unit, int decimals) {
       if (std::isnan(value)) return std::string("-");
-      if (std::abs(value) < 0.5 * std::pow(10.0, -decimals)) value = 0.0;  // no "-0.000"
-      char text[32];
-      std::snprintf(text, sizeof text, "%.*f %s", decimals, value, unit);
-      return std::string(text);
+      return fixed(value, decimals) + " " + unit;  // a negative value never shown as 0
     };
     const std::string reached = std::to_string(static_cast<int>(cell.reached)) + "/" +
                                 std::to_string(static_cast<int>(cell.runs));

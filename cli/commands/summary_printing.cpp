@@ -17,10 +17,12 @@ std::string fixed(double value, int digits) {
   char buffer[64];
   std::snprintf(buffer, sizeof buffer, "%.*f", digits, value);
   std::string text = buffer;
-  // A small negative value (a clearance of -1e-5 m) prints as "-0.000": zero has no sign here.
+  // A small negative value (a clearance of -1e-5 m: a margin entered) would print as "-0.000"
+  // or be rounded to "0.000": never a failure rounded away, it prints as "-1e-05".
   if (!text.empty() && text.front() == '-' &&
       text.find_first_not_of("0.", 1) == std::string::npos) {
-    text.erase(0, 1);
+    std::snprintf(buffer, sizeof buffer, "%.2g", value);
+    text = buffer;
   }
   return text;
 }

@@ -25,6 +25,17 @@ for figure in success_rates time_to_goal top_field top_trap; do check_png "one/$
 "$PYTHON" "$HERE/compare_batch_files.py" one/study.h5 two/study.h5 || fail "-j 1 and -j 2 differ"
 [[ "$(($(wc -l <one/summary.csv) - 1))" == 4 ]] || fail "summary.csv has not 4 rows (2 worlds x 2 variants)"
 "$PYTHON" "$HERE/check_compare_table.py" one/study.h5 one/summary.csv || fail "the table disagrees with the runs"
+# The console never rounds a failure away: a clearance below zero in summary.csv is printed
+# below zero (compare_small's trap x nmpc_only ends at -9e-16 m), not as 0.000 m.
+"$PYTHON" - one/summary.csv stdout <<'PY' || fail "the table rounds a negative clearance away: $(cat stdout)"
+import csv, sys
+rows = {(r["world"], r["variant"]): float(r["clearance_min"]) for r in csv.DictReader(open(sys.argv[1]))}
+printed = {tuple(t[:2]): t[t.index("m") - 1] for t in map(str.split, open(sys.argv[2]))
+           if tuple(t[:2]) in rows}
+assert len(printed) == len(rows) and any(v < 0 for v in rows.values()), (printed, rows)
+for cell, value in rows.items():
+    assert (value < 0) == printed[cell].startswith("-"), (cell, value, printed[cell])
+PY
 "$wpg" compare "$study" -o one -j 2 --no-plot >/dev/null 2>&1 || fail "again into one/: exit $?"
 "$PYTHON" "$HERE/compare_batch_files.py" one/study.h5 two/study.h5 || fail "rerun differs"
 echo "ok"
