@@ -12,9 +12,6 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-// Below this a step centre is inside a margin (the FCL check's rounding is far smaller).
-constexpr double kMarginTolerance = 1e-9;
-
 std::vector<double> finite(const std::vector<double>& values) {
   std::vector<double> kept;
   for (const double value : values) {

@@ -235,8 +235,11 @@ RunMetrics computeRunMetrics(const WalkingParameters& walking, const WalkRequest
   metrics.swing_acceleration_max = trajectory.size() >= 3 ? swing.swing_foot_acceleration_max : kNaN;
   metrics.zmp_error_rms_before = zmp_error ? zmp_error->before.rms : kNaN;
   metrics.zmp_error_max_before = zmp_error ? zmp_error->before.max : kNaN;
-  metrics.zmp_error_rms_after = zmp_error ? zmp_error->after.rms : kNaN;
-  metrics.zmp_error_max_after = zmp_error ? zmp_error->after.max : kNaN;
+  // Absent (NaN) when the filter did not run: a copy of `before` would read as a filter that
+  // changed nothing.
+  const bool filtered = zmp_error && zmp_error->filtered;
+  metrics.zmp_error_rms_after = filtered ? zmp_error->after.rms : kNaN;
+  metrics.zmp_error_max_after = filtered ? zmp_error->after.max : kNaN;
   nmpcLog(trajectory, &metrics);
   return metrics;
 }

@@ -21,6 +21,7 @@
 #include "exit_codes.hpp"
 #include "study_request_options.hpp"
 #include "study_progress.hpp"
+#include "summary_printing.hpp"
 #include "wpg/datasets/storage/batch_index.hpp"
 #include "wpg/engine/comparison_study_run.hpp"
 
@@ -37,17 +38,16 @@ void printComparison(const std::vector<analysis::ComparisonCell>& cells) {
   for (const analysis::ComparisonCell& cell : cells) {
     const auto shown = [](double value, const char* unit, int decimals) {
       if (std::isnan(value)) return std::string("-");
-      if (std::abs(value) < 0.5 * std::pow(10.0, -decimals)) value = 0.0;  // no "-0.000"
-      char text[32];
-      std::snprintf(text, sizeof text, "%.*f %s", decimals, value, unit);
-      return std::string(text);
+      return fixed(value, decimals) + " " + unit;
     };
     const std::string reached = std::to_string(static_cast<int>(cell.reached)) + "/" +
                                 std::to_string(static_cast<int>(cell.runs));
     std::printf("%-16s %-20s %9s %8d %14s %10s %9s\n", cell.world.c_str(), cell.variant.c_str(),
                 reached.c_str(), static_cast<int>(cell.blocked),
                 shown(cell.time_to_goal_median, "s", 1).c_str(),
-                shown(cell.clearance_min, "m", 3).c_str(),
+                std::isnan(cell.clearance_min)
+                    ? "-"
+                    : (clearanceText(cell.clearance_min, 3) + " m").c_str(),
                 shown(1e3 * cell.planning_time_median, "ms", 1).c_str());
   }
   std::cout.flush();

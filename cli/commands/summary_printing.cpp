@@ -9,6 +9,7 @@
 #include "error_messages.hpp"
 #include "exit_codes.hpp"
 #include "wpg/analysis/chain_timing.hpp"
+#include "wpg/analysis/comparison_summary.hpp"
 #include "wpg/analysis/zmp_error.hpp"
 
 namespace wpg::cli {
@@ -17,10 +18,20 @@ std::string fixed(double value, int digits) {
   char buffer[64];
   std::snprintf(buffer, sizeof buffer, "%.*f", digits, value);
   std::string text = buffer;
-  // A small negative value (a clearance of -1e-5 m) prints as "-0.000": zero has no sign here.
+  // A small negative value (a clearance of -1e-16 m) prints as "-0.000": zero has no sign here.
   if (!text.empty() && text.front() == '-' &&
       text.find_first_not_of("0.", 1) == std::string::npos) {
     text.erase(0, 1);
+  }
+  return text;
+}
+
+std::string clearanceText(double value, int digits) {
+  std::string text = fixed(value, digits);
+  if (value < -analysis::kMarginTolerance && text.front() != '-') {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.2g", value);
+    text = buffer;
   }
   return text;
 }
@@ -50,8 +61,9 @@ void printObstacleClearances(std::ostream& out, const engine::ObstacleClearances
   out << "obstacles " << clearances.obstacle_count
       << "; least clearance: step centre to " << clearances.step_centre_bound
       << " (the NMPC's constraint) "
-      << fixed(clearances.step_centre, 3) << " m, sole to margin " << fixed(clearances.sole, 3)
-      << " m; sole to obstacle " << fixed(clearances.sole_to_obstacle, 3) << " m\n";
+      << clearanceText(clearances.step_centre, 3) << " m, sole to margin "
+      << clearanceText(clearances.sole, 3) << " m; sole to obstacle "
+      << clearanceText(clearances.sole_to_obstacle, 3) << " m\n";
 }
 
 void printGoalSummary(std::ostream& out, const engine::WalkOutcome& walk) {

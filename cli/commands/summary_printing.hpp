@@ -13,6 +13,9 @@ namespace wpg::cli {
 // "%.<digits>f" of value, without the sign of a value that rounds to zero ("0.000", never
 // "-0.000").
 std::string fixed(double value, int digits);
+// A clearance [m] as fixed(), but one inside a margin (below -analysis::kMarginTolerance) that
+// would round to zero in two significant digits ("-1.1e-05"): a failure is never shown as 0.
+std::string clearanceText(double value, int digits);
 
 // scenario, walked, status and solve lines of `wpg run`.
 void printRunSummary(std::ostream& out, const datasets::Scenario& scenario,

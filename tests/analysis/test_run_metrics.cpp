@@ -170,6 +170,7 @@ TEST(RunMetrics, StepsObstaclesAndZmpError) {
                  // 0.1 m ahead, 0.25 m to the left of the right foot, turned by 0.03 rad
                  step(0.8, 0.1, 0.155, 0.03, wpg::FootSide::kLeft)};
   wpg::analysis::ZmpErrorComparison zmp;
+  zmp.filtered = true;
   zmp.before = {0.02, 0.05};
   zmp.after = {0.004, 0.01};
   const RunMetrics m = computeRunMetrics(w, request, walkResult(t), &zmp);
@@ -182,6 +183,13 @@ TEST(RunMetrics, StepsObstaclesAndZmpError) {
               std::hypot(0.9, 0.155) - 0.2 - 0.05 - w.obstacle_foot_radius, 1e-12);
   EXPECT_DOUBLE_EQ(m.zmp_error_rms_before, 0.02);
   EXPECT_DOUBLE_EQ(m.zmp_error_max_after, 0.01);
+  // Replayed, never filtered: no error after the filter (absent, not a copy of before).
+  zmp.filtered = false;
+  zmp.after = zmp.before;
+  const RunMetrics replayed = computeRunMetrics(w, request, walkResult(t), &zmp);
+  EXPECT_DOUBLE_EQ(replayed.zmp_error_rms_before, 0.02);
+  EXPECT_TRUE(std::isnan(replayed.zmp_error_rms_after));
+  EXPECT_TRUE(std::isnan(replayed.zmp_error_max_after));
 }
 
 // progress_ratio (METRICS.md): the CoM's displacement along the commanded world velocity of

@@ -21,6 +21,12 @@ grep -q '"zmp_error_rms_after": [0-9]' filtered.h5.json || fail "no ZMP error af
 for metric in velocity_error_rms cop_margin_min nmpc_time_p99 zmp_error_max_before; do
   grep -q "^  $metric " table.txt || fail "table lacks $metric"
 done
+# A run replayed but never filtered has no ZMP error after the filter: absent, not "before".
+"$wpg" run walk_forward --set replay=true --set duration=4 --no-plot -o replayed.h5 >/dev/null ||
+  fail "run replay=true: exit $?"
+"$wpg" analyze replayed.h5 --format json >replayed.json || fail "analyze replayed.h5: exit $?"
+grep -q '"zmp_error_rms_before": [0-9]' replayed.json || fail "no ZMP error before: $(cat replayed.json)"
+grep -q '"zmp_error_rms_after": null' replayed.json || fail "an unfiltered run has a ZMP error after"
 echo "not hdf5" >bad.h5
 status=0; "$wpg" analyze bad.h5 2>stderr || status=$?
 [[ $status == 2 && "$(wc -l <stderr)" == 1 ]] || fail "non-HDF5 file: exit $status, $(cat stderr)"

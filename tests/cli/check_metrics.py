@@ -269,12 +269,13 @@ def recompute(run, scenario):
 
     if "zmp_multibody" in run:
         before = np.hypot(*(cop - run["zmp_multibody"][:]).T)
-        after = (np.hypot(*(cop - run["zmp_multibody_filtered"][:]).T)
-                 if "zmp_multibody_filtered" in run else before)
         m["zmp_error_rms_before"] = float(np.sqrt(np.mean(before ** 2)))
         m["zmp_error_max_before"] = float(np.max(before))
-        m["zmp_error_rms_after"] = float(np.sqrt(np.mean(after ** 2)))
-        m["zmp_error_max_after"] = float(np.max(after))
+        m["zmp_error_rms_after"] = m["zmp_error_max_after"] = math.nan  # no filter: absent
+        if "com_filtered" in run:
+            after = np.hypot(*(cop - run["zmp_multibody_filtered"][:]).T)
+            m["zmp_error_rms_after"] = float(np.sqrt(np.mean(after ** 2)))
+            m["zmp_error_max_after"] = float(np.max(after))
     else:
         for key in ("zmp_error_rms_before", "zmp_error_max_before", "zmp_error_rms_after",
                     "zmp_error_max_after"):

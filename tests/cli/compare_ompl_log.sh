@@ -18,3 +18,16 @@ status=0
 [[ $status == 2 ]] || fail "--ompl-log over a file: exit status $status, expected 2"
 grep -q -- "--ompl-log" "$WORKDIR/stderr" || fail "--ompl-log over a file: $(cat "$WORKDIR/stderr")"
 [[ ! -e "$WORKDIR/out2" ]] || fail "--ompl-log over a file: the study was run"
+
+# A log folder that cannot be made (below a folder no one may write in; as root, below /proc,
+# which makes none): refused before the study runs, nothing written.
+if [[ $(id -u) == 0 ]]; then unmakeable=/proc/wpg_ompl_logs/logs; else
+  mkdir "$WORKDIR/read_only" && chmod 555 "$WORKDIR/read_only"
+  unmakeable="$WORKDIR/read_only/logs"
+fi
+status=0
+"$wpg" compare "$study" -o "$WORKDIR/out3" --no-plot --ompl-log "$unmakeable" 2>"$WORKDIR/stderr" || status=$?
+[[ $status == 2 ]] || fail "--ompl-log below a read-only folder: exit status $status, expected 2"
+[[ "$(wc -l <"$WORKDIR/stderr")" == 1 ]] && grep -q -- "--ompl-log: cannot create '$unmakeable'" "$WORKDIR/stderr" ||
+  fail "--ompl-log below a read-only folder: $(cat "$WORKDIR/stderr")"
+[[ ! -e "$WORKDIR/out3" ]] || fail "--ompl-log below a read-only folder: the study was run"

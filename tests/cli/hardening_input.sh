@@ -162,6 +162,13 @@ PY
 messages)
   # Values as given, never rounded away: 1e-320 s is not "0.000000".
   refused 2 "got 1e-320" run walk_forward --set duration=1e-320 -o a.h5 --no-plot
+  # A value checked with others (libwpg's validate()) names the --set that set it, every key.
+  refused 2 "'duration': expected .*, got 2.2e+04 (set by --set 'duration=22000')$" \
+    run walk_forward --set duration=22000 -o a.h5 --no-plot
+  refused 2 "'duration': expected at least half a sampling period.* (set by --set 'duration=0.01')$" \
+    run walk_forward --set duration=0.01 -o a.h5 --no-plot
+  refused 2 "'single_support_samples'.* (set by --set 'walking.single_support_samples=5000')$" \
+    run walk_forward --set walking.single_support_samples=5000 -o a.h5 --no-plot
   # A `base:` naming a system file: refused without a line of it in the message.
   printf 'name: sys\nbase: /etc/passwd\nsweep: {grid: {duration: [1.0]}}\n' >sys.yaml
   refused 2 "/etc/passwd: expected a map of scenario keys" batch sys.yaml -o sys.h5 --no-plot

@@ -38,6 +38,15 @@ grep -Eq "^wpg: warning: .*walk_forward\.yaml: key 'reference\[1\]\.v\[0\]': 2\.
 if grep -q warning clamped.err; then fail "a command at the clamp warns: $(cat clamped.err)"; fi
 [[ "$(attribute fast.h5 walk_forward)" == "$(sed 's/^wpg: warning: //' fast.err)" ]] \
   || fail "warnings attribute: '$(attribute fast.h5 walk_forward)'"
+
+# A command inside the clamps that no gait reaches (0.3 m/s sideways; HRP-2's shortest steps,
+# 0.5 s, reach 0.2): warned, with what happens; one the gait reaches (0.15 m/s) is not.
+run sideways walk_forward --set duration=3 --set 'reference[1].v=[0, 0.3, 0]'
+run reachable walk_forward --set duration=3 --set 'reference[1].v=[0, 0.15, 0]'
+[[ "$(wc -l <sideways.err)" == 1 ]] || fail "beyond the reach: not one line: $(cat sideways.err)"
+grep -Eq "key 'reference\[1\]\.v': \[0\.0, 0\.3, 0\.0\] is beyond the reach of the gait \(steps of 0\.5 s inside walking\.feasibility_x/y walk [0-9]+% of it\): the robot falls behind the command and may fall \(set by --set 'reference\[1\]\.v=\[0, 0\.3, 0\]'\)$" sideways.err \
+  || fail "beyond the reach: $(cat sideways.err)"
+if grep -q warning reachable.err; then fail "a command the gait reaches warns: $(cat reachable.err)"; fi
 [[ "$(attribute clamped.h5 walk_forward)" == "(none)" ]] || fail "a run without warnings has the attribute"
 # The walk is the clamped one, bit for bit: only the stored scenario and the warning differ.
 "$wpg" diff fast.h5 clamped.h5 --rtol 0 --atol 0 --ignore '*@scenario' --ignore '*@warnings' \

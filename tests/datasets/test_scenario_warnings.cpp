@@ -39,12 +39,32 @@ TEST(ScenarioWarnings, CommandBeyondTheClampWarnsAndIsKept) {
           "0.4 m/s", "clamped", "set by --set 'reference[1].v=[2.0, 0.0, 0.0]'"});
   // The scenario says what was asked; the generator clamps (the walk is that of 0.4 m/s).
   EXPECT_DOUBLE_EQ(s.request.reference[1].velocity.x(), 2.0);
-  const Scenario lateral = loadShipped("walk_forward", {"reference[1].v=[0.1, -0.5, 0.0]"});
-  expectOneWarning(lateral, {"key 'reference[1].v[1]'", "-0.5 m/s", "max_lateral_velocity"});
+  const Scenario lateral = loadShipped("walk_forward", {"reference[1].v=[0.05, -0.5, 0.0]"});
+  // Clamped to -0.3 m/s, which the gait does not reach either: a second line says so.
+  ASSERT_EQ(lateral.warnings.size(), 2u);
+  EXPECT_NE(lateral.warnings[0].find("key 'reference[1].v[1]': -0.5 m/s is beyond walking."
+                                     "max_lateral_velocity"), std::string::npos)
+      << lateral.warnings[0];
+  EXPECT_NE(lateral.warnings[1].find("key 'reference[1].v': [0.05, -0.5, 0.0] is beyond the "
+                                     "reach of the gait"), std::string::npos)
+      << lateral.warnings[1];
   const Scenario turn = loadShipped("walk_forward", {"reference[1].v=[0.1, 0.0, 1.0]"});
   expectOneWarning(turn, {"key 'reference[1].v[2]'", "1.0 rad/s", "max_angular_velocity"});
-  // At the clamp exactly: nothing is clamped.
-  EXPECT_TRUE(loadShipped("walk_forward", {"reference[1].v=[0.4, 0.3, 0.0]"}).warnings.empty());
+  // At the clamp exactly: nothing is clamped (0.4 m/s forward, which the gait reaches).
+  EXPECT_TRUE(loadShipped("walk_forward", {"reference[1].v=[0.4, 0.0, 0.0]"}).warnings.empty());
+}
+
+TEST(ScenarioWarnings, CommandBeyondTheGaitsReachWarns) {
+  // 0.3 m/s sideways is at the clamp, but HRP-2's shortest steps (0.5 s) reach 0.2 m/s.
+  const Scenario s = loadShipped("walk_forward", {"reference[1].v=[0.0, 0.3, 0.0]"});
+  expectOneWarning(s, {"key 'reference[1].v'", "beyond the reach of the gait", "steps of 0.5 s",
+                       "66% of it", "falls behind the command and may fall",
+                       "set by --set 'reference[1].v=[0.0, 0.3, 0.0]'"});
+  EXPECT_TRUE(loadShipped("walk_forward", {"reference[1].v=[0.0, 0.15, 0.0]"}).warnings.empty());
+  // The paper's fixed timing keeps its 0.8 s steps: 0.15 m/s sideways is beyond them.
+  expectOneWarning(loadShipped("walk_forward", {"reference[1].v=[0.0, 0.15, 0.0]",
+                                                "walking.step_timing=fixed"}),
+                   {"steps of 0.8 s"});
 }
 
 TEST(ScenarioWarnings, TurnBeyondTheStepYawBoundWarns) {

@@ -8,14 +8,24 @@ import wpg
 from conftest import STUDIES, files_under
 
 
-def test_a_bad_value_names_the_key_as_the_cli_does(cli, tmp_path):
+@pytest.mark.parametrize("value", [-1, 22000])
+def test_a_bad_value_names_the_key_as_the_cli_does(cli, tmp_path, value):
+    """The CLI's line, the override named as Python's (`overrides`, not `--set`): for a value
+    its reader refuses (-1) and one a check over several keys refuses (22000 s, over 3600)."""
     with pytest.raises(wpg.InputError) as error:
-        wpg.run("walk_forward", overrides={"duration": -1})
+        wpg.run("walk_forward", overrides={"duration": value})
     message = str(error.value)
     assert "walk_forward.yaml" in message and "'duration'" in message and "\n" not in message
-    done = cli("run", "walk_forward", "--set", "duration=-1", "-o", tmp_path / "x.h5", check=False)
-    assert done.returncode == 2 and message in done.stderr
+    assert message.endswith("(set by overrides 'duration=%d')" % value), message
+    assert "--set" not in message
+    done = cli("run", "walk_forward", "--set", "duration=%d" % value, "-o", tmp_path / "x.h5",
+               check=False)
+    assert done.returncode == 2
+    assert message.replace("overrides 'duration", "--set 'duration") in done.stderr
     assert isinstance(error.value, ValueError)
+    with pytest.raises(wpg.InputError) as online:
+        wpg.OnlineGenerator("walk_forward", overrides={"duration": value})
+    assert str(online.value) == message
 
 
 @pytest.mark.parametrize("overrides, key", [

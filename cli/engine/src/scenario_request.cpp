@@ -6,6 +6,7 @@
 #include <system_error>
 
 #include "wpg/datasets/input/input_error.hpp"
+#include "wpg/datasets/input/yaml_input.hpp"
 #include "wpg/datasets/storage/output_file.hpp"
 #include "wpg/engine/data_paths.hpp"
 #include "wpg/engine/run_input_checks.hpp"
@@ -30,13 +31,17 @@ LoadedScenario loadScenarioRequest(const ScenarioRequest& request, RobotModelCac
   std::vector<std::string> overrides = request.overrides;
   if (request.replay) overrides.push_back("replay=true");
   if (request.filter) overrides.push_back("filter=true");
+  const auto named = [&](const std::string& message) {
+    return datasets::detail::renameOverrides(message, request.overrides_name);
+  };
   try {
     loaded.scenario = datasets::loadScenario(loaded.path, overrides, models.robotsDirectory());
   } catch (const datasets::InputError& e) {
-    throw datasets::InputError(aboutFile(loaded.path, e.what()));
+    throw datasets::InputError(aboutFile(loaded.path, named(e.what())));
   } catch (const std::invalid_argument& e) {
-    throw datasets::InputError(aboutFile(loaded.path, e.what()));
+    throw datasets::InputError(aboutFile(loaded.path, named(e.what())));
   }
+  for (std::string& warning : loaded.scenario.warnings) warning = named(warning);
   checkRunInput(loaded.scenario, loaded.path, models);
   return loaded;
 }

@@ -2,6 +2,7 @@
 #include "engine_calls.hpp"
 
 #include "wpg/datasets/input/input_error.hpp"
+#include "wpg/datasets/input/yaml_input.hpp"
 #include "wpg/datasets/storage/run_dataset_reader.hpp"
 #include "wpg/engine/batch_study_run.hpp"
 #include "wpg/engine/comparison_study_run.hpp"
@@ -21,14 +22,37 @@ engine::StudyRequest studyRequest(const std::string& study, const std::string& o
   return request;  // the field names are the keyword arguments' (the defaults)
 }
 
+// Quiet, as the package is; asks `stop` after each run.
+class StoppableObserver : public engine::StudyObserver {
+ public:
+  explicit StoppableObserver(const StopCheck& stop) : stop_(stop) {}
+  void runFinished(bool) override {
+    if (stop_) stop_();
+  }
+
+ private:
+  const StopCheck& stop_;
+};
+
 }  // namespace
+
+datasets::Scenario loadOnlineScenario(const std::string& scenario,
+                                      const std::vector<std::string>& overrides) {
+  const std::string path = resolveScenarioPath(scenario);
+  try {
+    return datasets::loadScenario(path, overrides, robotsDirectory());
+  } catch (const datasets::InputError& e) {
+    throw datasets::InputError(datasets::detail::renameOverrides(e.what(), kOverridesName));
+  }
+}
 
 std::shared_ptr<RunSession> runScenarioFile(const std::string& scenario,
                                             std::vector<std::string> overrides, bool replay,
                                             bool filter) {
   auto run = std::make_shared<RunSession>();
   engine::RobotModelCache models(robotsDirectory());
-  run->loaded = engine::loadScenarioRequest({scenario, std::move(overrides), replay, filter}, models);
+  run->loaded = engine::loadScenarioRequest(
+      {scenario, std::move(overrides), replay, filter, kOverridesName}, models);
   run->result = engine::runScenario(run->loaded.scenario, {robotsDirectory(), &models});
   return run;
 }
@@ -63,19 +87,19 @@ std::shared_ptr<RunSession> loadStoredRun(const std::string& path, const std::st
 }
 
 StudyFiles runBatch(const std::string& study, const std::string& output, int jobs, bool resume,
-                    bool figure) {
+                    bool figure, const StopCheck& stop) {
   engine::StudyRequest request = studyRequest(study, output, jobs, figure);
   request.resume = resume;
-  engine::StudyObserver quiet;
-  const engine::BatchStudyResult result = engine::runBatchStudy(request, quiet);
+  StoppableObserver observer(stop);
+  const engine::BatchStudyResult result = engine::runBatchStudy(request, observer);
   return {output, result.summary.runs, result.summary.failed_runs};
 }
 
 StudyFiles runCompare(const std::string& study, const std::string& folder, int jobs,
-                      bool figures) {
-  engine::StudyObserver quiet;
+                      bool figures, const StopCheck& stop) {
+  StoppableObserver observer(stop);
   const engine::ComparisonStudyResult result =
-      engine::runComparisonStudy(studyRequest(study, folder, jobs, figures), quiet);
+      engine::runComparisonStudy(studyRequest(study, folder, jobs, figures), observer);
   return {result.study_file, result.runs, 0};
 }
 

@@ -5,6 +5,7 @@
 // comparison_study_run.hpp), which owns every input and output check: the same refusals before
 // anything is written, the same files, the same exit meaning; bad input is a
 // datasets::InputError whose one-line message names the file and the key.
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -46,6 +47,19 @@ void saveRun(const RunSession& run, const std::string& path);
 std::shared_ptr<RunSession> loadStoredRun(const std::string& path, const std::string& name);
 std::vector<std::string> storedRunNames(const std::string& path);
 
+// Called after each run of a study, on the thread that delivers it; throws to stop the study
+// the way the engine stops on any error while delivering: no new run is handed out, the running
+// ones finish (a run's time at most), and the batch file holds every run delivered, for
+// `resume` to finish. The bindings throw when Python has a signal pending (Ctrl-C).
+using StopCheck = std::function<void()>;
+
+// What messages call the overrides of wpg.run() and OnlineGenerator (`--set` in `wpg`).
+inline constexpr const char* kOverridesName = "overrides";
+
+// The scenario of an OnlineGenerator, loaded and checked as wpg.run()'s.
+datasets::Scenario loadOnlineScenario(const std::string& scenario,
+                                      const std::vector<std::string>& overrides);
+
 // `wpg batch STUDY -o OUTPUT -j JOBS [--resume]`: OUTPUT and OUTPUT.summary.csv/.md; with
 // `figure`, OUTPUT.summary.png is checked with them (the package draws it after). Returns the
 // number of failed runs (exit status 1 when not 0). Call without the GIL.
@@ -54,12 +68,12 @@ struct StudyFiles {
   std::size_t runs = 0, failed_runs = 0;
 };
 StudyFiles runBatch(const std::string& study, const std::string& output, int jobs, bool resume,
-                    bool figure);
+                    bool figure, const StopCheck& stop);
 
 // `wpg compare STUDY -o FOLDER -j JOBS`: FOLDER/study.h5, summary.csv and summary.md; with
 // `figures`, the figures' paths are checked with them (the package draws them after). Call
 // without the GIL.
 StudyFiles runCompare(const std::string& study, const std::string& folder, int jobs,
-                      bool figures);
+                      bool figures, const StopCheck& stop);
 
 }  // namespace wpg::python

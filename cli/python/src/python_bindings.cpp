@@ -4,10 +4,11 @@
 // C++ result's buffers (read-only, the run's core object as their base: nothing copied); the
 // small tables (footsteps, NMPC log) are copied once into columns. Walks, studies and saves
 // run without the GIL.
-#include <optional>
 #include <cstdint>
+#include <optional>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <pybind11/pybind11.h>
@@ -192,6 +193,28 @@ py::list metricRows(const analysis::RunMetrics* metrics) {
 }
 
 // A control sample with the status of the last NMPC iteration, copied out of the generator.
+// Python's signal pending (Ctrl-C) after a run: the study stops (engine_calls.hpp, StopCheck).
+struct Interrupted {};
+
+// `study(stop)` without the GIL; a signal Python got meanwhile (its handler runs on the main
+// thread only: asked from the calling thread, which delivers the runs between its own) stops
+// it, and its exception (KeyboardInterrupt) is raised here.
+template <typename Study>
+StudyFiles interruptible(const Study& study) {
+  const std::thread::id caller = std::this_thread::get_id();
+  const StopCheck stop = [caller] {
+    if (std::this_thread::get_id() != caller) return;
+    const py::gil_scoped_acquire gil;
+    if (PyErr_CheckSignals() != 0) throw Interrupted{};
+  };
+  try {
+    const py::gil_scoped_release release;
+    return study(stop);
+  } catch (const Interrupted&) {
+    throw py::error_already_set();  // the exception PyErr_CheckSignals set
+  }
+}
+
 py::array vectorCopy(const double* data, py::ssize_t n) { return py::array_t<double>(n, data); }
 
 void bindOnline(py::module_& m) {
@@ -212,9 +235,7 @@ void bindOnline(py::module_& m) {
 
   py::class_<OnlineSession>(m, "OnlineCore")
       .def(py::init([](const std::string& scenario, std::vector<std::string> overrides) {
-             const std::string path = resolveScenarioPath(scenario);
-             return std::make_unique<OnlineSession>(
-                 datasets::loadScenario(path, overrides, robotsDirectory()));
+             return std::make_unique<OnlineSession>(loadOnlineScenario(scenario, overrides));
            }),
            py::arg("scenario"), py::arg("overrides"))
       // Every call of a session takes its lock with the GIL released (online_session.hpp):
@@ -335,22 +356,18 @@ PYBIND11_MODULE(_wpg, m) {
   m.def("batch",
         [](const std::string& study, const std::string& output, int jobs, bool resume,
            bool figure) {
-          StudyFiles files;
-          {
-            py::gil_scoped_release release;
-            files = runBatch(study, output, jobs, resume, figure);
-          }
+          const StudyFiles files = interruptible([&](const StopCheck& stop) {
+            return runBatch(study, output, jobs, resume, figure, stop);
+          });
           return py::make_tuple(files.batch_file, files.runs, files.failed_runs);
         },
         py::arg("study"), py::arg("output"), py::arg("jobs"), py::arg("resume"),
         py::arg("figure"));
   m.def("compare",
         [](const std::string& study, const std::string& folder, int jobs, bool figures) {
-          StudyFiles files;
-          {
-            py::gil_scoped_release release;
-            files = runCompare(study, folder, jobs, figures);
-          }
+          const StudyFiles files = interruptible([&](const StopCheck& stop) {
+            return runCompare(study, folder, jobs, figures, stop);
+          });
           return py::make_tuple(files.batch_file, files.runs);
         },
         py::arg("study"), py::arg("folder"), py::arg("jobs"),

@@ -159,25 +159,29 @@ Scenario loadScenarioTree(YAML::Node root, const std::string& path,
   try {
     scenario.walking.validate();
   } catch (const std::invalid_argument& error) {
-    source.failFile(std::string("invalid walking parameters (robot '") + scenario.robot +
-                    "' merged with 'walking:' and --set): " + error.what());
+    source.failChecked(std::string("invalid walking parameters (robot '") + scenario.robot +
+                           "' merged with 'walking:' of the scenario): " + error.what(),
+                       "walking.");
   }
   try {
     scenario.request.validate();
   } catch (const std::invalid_argument& error) {
-    source.failFile(std::string("invalid walk request: ") + error.what());
+    std::string message = error.what();
+    // libwpg's request calls the robot's mass 'mass'; the scenario's key is robot_mass.
+    if (message.rfind("'mass'", 0) == 0) message.replace(0, 6, "'robot_mass'");
+    source.failChecked("invalid walk request: " + message);
   }
   try {
     scenario.goal.validate();
   } catch (const std::invalid_argument& error) {
-    source.failFile(error.what());
+    source.failChecked(error.what());
   }
   // Bounded work and a walk of at least one NMPC iteration (libwpg's limits), checked here so
   // that every command (run, batch, compare, replay) refuses it before anything runs.
   try {
     checkWalkSize(scenario.walking, scenario.request);
   } catch (const std::invalid_argument& error) {
-    source.failFile(error.what());
+    source.failChecked(error.what());
   }
   if (scenario.replay) {
     // The multibody replay differentiates the motion: it needs 3 samples (2 control periods).

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "wpg/gait_reach.hpp"
+
 namespace wpg::datasets::detail {
 namespace {
 
@@ -44,6 +46,27 @@ void commandWarnings(const Scenario& scenario, const Source& source,
           formatNumber(v[c]) + " " + component.unit + " is beyond walking." + component.parameter +
               " " + formatNumber(component.limit) + " " + component.unit +
               ": the command is clamped to " + formatNumber(clamped) + " " + component.unit));
+    }
+    // Inside the clamps, a command the steps cannot reach: no gait of the shortest steps the
+    // timing allows, landing inside the feasibility polygon (gaitReach), walks it.
+    const Eigen::Vector3d clamped(
+        std::clamp(v[0], -w.max_forward_velocity, w.max_forward_velocity),
+        std::clamp(v[1], -w.max_lateral_velocity, w.max_lateral_velocity),
+        std::clamp(v[2], -w.max_angular_velocity, w.max_angular_velocity));
+    const double shortest =
+        (w.cadenceSingleSupport(w.cadenceCount() - 1) + w.double_support_samples) *
+        w.sampling_period;
+    const double turn = std::clamp(clamped.z(), -w.max_step_yaw_change / shortest,
+                                   w.max_step_yaw_change / shortest);
+    const double reach = gaitReach(clamped.head<2>(), turn, shortest, w.feasibility_x,
+                                   w.feasibility_y);
+    if (reach < 1.0) {
+      warnings->push_back(source.warning(
+          key, "[" + formatNumber(v[0]) + ", " + formatNumber(v[1]) + ", " + formatNumber(v[2]) +
+                   "] is beyond the reach of the gait (steps of " + number(shortest) +
+                   " s inside walking.feasibility_x/y walk " +
+                   std::to_string(static_cast<int>(100.0 * reach)) +
+                   "% of it): the robot falls behind the command and may fall"));
     }
     // The yaw of a step is bounded (eq. 16, walking.max_step_yaw_change): a faster turn is
     // clamped to the bound per step.

@@ -10,6 +10,8 @@
 
 #include <array>
 #include <cerrno>
+#include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstring>
@@ -133,6 +135,34 @@ void Source::failWith(const std::string& key, const std::string& message) const 
 
 void Source::failFile(const std::string& message) const {
   throw InputError(oneLine(file_ + ": " + message));
+}
+
+void Source::failChecked(const std::string& message, const std::string& prefix) const {
+  // Every text between two neighbouring quotes that is shaped as a key (an apostrophe in the
+  // prose makes its neighbours prose, with spaces: never a key).
+  const auto key_shaped = [](const std::string& text) {
+    return !text.empty() && std::all_of(text.begin(), text.end(), [](char c) {
+             return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.' ||
+                    c == '[' || c == ']' || c == '/';
+           });
+  };
+  std::string note;
+  for (std::size_t open = message.find('\''); open != std::string::npos && note.empty();) {
+    const std::size_t close = message.find('\'', open + 1);
+    if (close == std::string::npos) break;
+    const std::string names = message.substr(open + 1, close - open - 1);
+    for (std::size_t start = 0; key_shaped(names) && start < names.size() && note.empty();) {
+      const std::size_t slash = std::min(names.find('/', start), names.size());
+      const std::string name = names.substr(start, slash - start);
+      if (!name.empty()) {
+        note = overrideNote(prefix + name);
+        if (note.empty()) note = overrideNote(name);
+      }
+      start = slash + 1;
+    }
+    open = close;
+  }
+  throw InputError(oneLine(file_ + ": " + message + note));
 }
 
 std::string Source::warning(const std::string& key, const std::string& message) const {

@@ -7,6 +7,10 @@
 
 namespace wpg::analysis {
 
+// Below -kMarginTolerance [m] a step centre is inside a margin (the FCL check's rounding is far
+// smaller): counted in margin_entered, and never printed as 0.
+inline constexpr double kMarginTolerance = 1e-9;
+
 // What one run of a comparison contributes to its cell.
 struct ComparisonRunSample {
   bool goal_reached = false;

@@ -41,7 +41,7 @@ struct RunMetrics {
   double swing_acceleration_max = 0.0;  // [m/s^2] its peak acceleration
   double zmp_error_rms_before = 0.0;  // [m] multibody ZMP vs. CoP, before the filter
   double zmp_error_max_before = 0.0;
-  double zmp_error_rms_after = 0.0;   // [m] after the filter (= before when not filtered)
+  double zmp_error_rms_after = 0.0;   // [m] after the filter (NaN when it did not run)
   double zmp_error_max_after = 0.0;
   double nmpc_iterations = 0.0;      // [1]
   double qp_iterations_mean = 0.0;   // [1] per NMPC iteration

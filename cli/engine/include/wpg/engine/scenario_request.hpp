@@ -19,6 +19,9 @@ struct ScenarioRequest {
   std::vector<std::string> overrides;  // "key=value", as `--set` (the front end's syntax checked)
   bool replay = false;                 // as the scenario's `replay: true`, after every override
   bool filter = false;                 // as `filter: true` (implies the replay)
+  // What the front end calls the overrides: messages and warnings say "(set by --set '...')"
+  // in `wpg`, "(set by overrides '...')" in Python.
+  std::string overrides_name = "--set";
 };
 
 // A scenario loaded from a request and checked: ready to run (runScenario).

@@ -59,6 +59,11 @@ class Source {
                          const YAML::Node& got) const;
   [[noreturn]] void failWith(const std::string& key, const std::string& message) const;
   [[noreturn]] void failFile(const std::string& message) const;
+  // "<file>: <message>" of a check over several keys (libwpg's validate()), whose message
+  // quotes the keys it is about ("'duration': ...", "walking parameter 'weight_cop': ..."): with
+  // the note of the --set that set one of them, each quoted name tried as `prefix` + name, then
+  // as it is ("a/b" names two keys).
+  [[noreturn]] void failChecked(const std::string& message, const std::string& prefix = "") const;
   // A warning line in the errors' form: "<file>: key '<key>': <message>" (and the --set).
   std::string warning(const std::string& key, const std::string& message) const;
 
