@@ -117,7 +117,9 @@ void ObstacleSelector::borderNormals(const Eigen::Vector2d& com,
       // boxes round it, their hull holds it; measured: every enclosure of obstacle_scenes.yaml
       // fell or failed on relaxed rows). Seen from outside (a doorway from in front, a
       // staggered pair from its side), the hull is as near as the nearest member.
-      const int joined = leader_[r], into = leader_[before];
+      // the joined group keeps the leader met first (the smaller route position)
+      const int into = std::min(leader_[r], leader_[before]);
+      const int joined = std::max(leader_[r], leader_[before]);
       group_points_.clear();
       group_radii_.clear();
       double nearest = std::numeric_limits<double>::infinity();

@@ -449,3 +449,37 @@ TEST(ObstacleTangent, HullFacingIsTheDistanceGradient) {
 }
 
 }  // namespace
+
+namespace {
+
+// A group joined in two steps (the third obstacle met joins the first, then the second): the
+// group keeps the first one met as its leader, so every slot in reach either carries a border
+// or is emptied, none is left with neither.
+TEST(ObstacleTangent, SelectorGroupKeepsItsFirstMember) {
+  wpg::WalkingParameters parameters;
+  wpg::Obstacle first, second, third;
+  first.type = second.type = third.type = wpg::ObstacleType::kBox;
+  first.margin = second.margin = third.margin = 0.2;
+  first.size = second.size = {0.4, 0.4};
+  first.center = {2.0, 1.0};    // met first along +x
+  second.center = {2.3, -1.0};  // then this one, 2 m across from the first: no gap between them
+  third.size = {0.4, 1.6};      // last, its ends 0.1 m from each: a wall joining them
+  third.center = {2.8, 0.0};
+  wpg::ObstacleSelector selector;
+  selector.set({first, second, third});
+  Eigen::VectorXi slots(4);
+  Eigen::Matrix2Xd normals(2, 4);
+  Eigen::VectorXd offsets(4);
+  const Vector2d com(0.0, 0.0);
+  selector.select(com, 5.0, slots);
+  ASSERT_EQ((slots.array() >= 0).count(), 3);
+  selector.borderNormals(com, com, {0.2, 0.0}, parameters, kClearance, slots, normals, offsets);
+  EXPECT_EQ((slots.array() >= 0).count(), 1);
+  for (int k = 0; k < 4; ++k) {
+    if (slots(k) < 0) continue;
+    EXPECT_EQ(slots(k), 0) << "the first met leads the group";
+    EXPECT_NEAR(normals.col(k).norm(), 1.0, 1e-12) << k;
+  }
+}
+
+}  // namespace
