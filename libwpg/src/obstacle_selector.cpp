@@ -23,6 +23,8 @@ void ObstacleSelector::set(std::vector<Obstacle> obstacles) {
   side_.assign(obstacles_.obstacleCount(), 0);
   normal_.assign(obstacles_.obstacleCount(), Eigen::Vector2d::Zero());
   leader_.assign(obstacles_.obstacleCount(), 0);
+  route_obstacle_.assign(obstacles_.obstacleCount(), -1);
+  route_count_ = -1;
   std::size_t points = 0;
   for (int i = 0; i < obstacles_.obstacleCount(); ++i) points += obstacles_.core(i).size();
   group_points_.clear();
@@ -62,9 +64,7 @@ void ObstacleSelector::borderNormals(const Eigen::Vector2d& com,
   offsets.setZero();
   if (slides_.cols() != slots.size()) slides_.resize(2, slots.size());  // once per slot count
   slides_.setZero();
-  const auto radiusOf = [&](int index) {
-    return obstacles_.coreRadius(index) + stepCentreMargin(obstacles_.obstacle(index), parameters);
-  };
+  route_count_ = -1;
   const double length = direction.norm();
   if (length <= 1e-12) {  // no command: each border faces the CoM
     for (int k = 0; k < slots.size(); ++k) {
@@ -72,7 +72,7 @@ void ObstacleSelector::borderNormals(const Eigen::Vector2d& com,
       Eigen::Vector2d facing;
       obstacles_.signedDistance(slots(k), com, &facing);
       normals.col(k) = facing;
-      offsets(k) = borderOffset(obstacles_.core(slots(k)), radiusOf(slots(k)), facing);
+      offsets(k) = borderOffset(obstacles_.core(slots(k)), radiusOf(slots(k), parameters), facing);
     }
     return;
   }
@@ -88,6 +88,8 @@ void ObstacleSelector::borderNormals(const Eigen::Vector2d& com,
     for (; at > 0 && route_[at - 1].first > along; --at) route_[at] = route_[at - 1];
     route_[at] = {along, k};
   }
+  for (int r = 0; r < count; ++r) route_obstacle_[r] = slots(route_[r].second);
+  route_count_ = count;
   // Groups: obstacles whose grown shapes leave a gap narrower than the least step width between
   // them have no way between them; each is joined to the group of the first one met (the
   // group's leader, by route position), transitively.
@@ -109,7 +111,7 @@ void ObstacleSelector::borderNormals(const Eigen::Vector2d& com,
                             obstacles_.reachCircle(other).head<2>()).norm();
       if (apart - enclosing(index) - enclosing(other) >= least_width) continue;
       const double gap = coreDistance(obstacles_.core(index), obstacles_.core(other)) -
-                         radiusOf(index) - radiusOf(other);
+                         radiusOf(index, parameters) - radiusOf(other, parameters);
       if (gap >= least_width) continue;
       // Not when the joined group's hull comes closer to the CoM than its members do, by more
       // than the clearance: the robot is then in the pocket between them (inside a U of walls
@@ -128,7 +130,7 @@ void ObstacleSelector::borderNormals(const Eigen::Vector2d& com,
         const int member = slots(route_[m].second);
         const std::vector<Eigen::Vector2d>& core = obstacles_.core(member);
         group_points_.insert(group_points_.end(), core.begin(), core.end());
-        group_radii_.insert(group_radii_.end(), core.size(), radiusOf(member));
+        group_radii_.insert(group_radii_.end(), core.size(), radiusOf(member, parameters));
         nearest = std::min(nearest, obstacles_.signedDistance(member, com, nullptr) -
                                         stepCentreMargin(obstacles_.obstacle(member), parameters));
       }
@@ -152,17 +154,8 @@ void ObstacleSelector::borderNormals(const Eigen::Vector2d& com,
     if (leader_[r] != r) continue;  // a member of an earlier group: its slot is emptied below
     // The shape: the obstacle's core grown by its radius, or the group's members' together
     // (the convex hull of their grown shapes, through the support function).
-    group_points_.clear();
-    group_radii_.clear();
-    double furthest = route_[r].first;  // the group is passed once its last centre is
-    for (int m = r; m < count; ++m) {
-      if (leader_[m] != r) continue;
-      const int member = slots(route_[m].second);
-      const std::vector<Eigen::Vector2d>& core = obstacles_.core(member);
-      group_points_.insert(group_points_.end(), core.begin(), core.end());
-      group_radii_.insert(group_radii_.end(), core.size(), radiusOf(member));
-      furthest = std::max(furthest, route_[m].first);
-    }
+    // The group is passed once its last centre is.
+    const double furthest = gatherGroup(r, count, parameters);
     const bool grouped = group_points_.size() > obstacles_.core(index).size();
     const bool passed = furthest < 0.0;
     const bool after_another = !passed && route_started;
@@ -232,6 +225,41 @@ void ObstacleSelector::borderNormals(const Eigen::Vector2d& com,
       route_point = centre + beside * out;
       route_started = true;
     }
+  }
+}
+
+double ObstacleSelector::radiusOf(int index, const WalkingParameters& parameters) const {
+  return obstacles_.coreRadius(index) + stepCentreMargin(obstacles_.obstacle(index), parameters);
+}
+
+double ObstacleSelector::gatherGroup(int r, int count, const WalkingParameters& parameters) {
+  group_points_.clear();
+  group_radii_.clear();
+  double furthest = route_[r].first;
+  for (int m = r; m < count; ++m) {
+    if (leader_[m] != r) continue;
+    const std::vector<Eigen::Vector2d>& core = obstacles_.core(route_obstacle_[m]);
+    group_points_.insert(group_points_.end(), core.begin(), core.end());
+    group_radii_.insert(group_radii_.end(), core.size(), radiusOf(route_obstacle_[m], parameters));
+    furthest = std::max(furthest, route_[m].first);
+  }
+  return furthest;
+}
+
+void ObstacleSelector::landingRows(const Eigen::Vector2d& landing,
+                                   const WalkingParameters& parameters,
+                                   const Eigen::Ref<const Eigen::VectorXi>& slots,
+                                   Eigen::Ref<Eigen::Matrix2Xd> normals,
+                                   Eigen::Ref<Eigen::VectorXd> offsets) {
+  normals.setZero();
+  offsets.setZero();
+  for (int r = 0; r < route_count_; ++r) {
+    const int k = route_[r].second;
+    if (leader_[r] != r || slots(k) < 0) continue;  // a member of a group: no row of its own
+    gatherGroup(r, route_count_, parameters);
+    const Eigen::Vector2d facing = hullFacing(group_points_, group_radii_, landing);
+    normals.col(k) = facing;
+    offsets(k) = borderOffset(group_points_, group_radii_, facing);
   }
 }
 

@@ -226,6 +226,7 @@ void PatternGenerator::placeObstacles(const Eigen::Vector3d& command) {
                       problem_->obstacle_slot);
   }
   problem_->obstacle_normal.setZero();
+  problem_->obstacle_landing_normal.setZero();
   if (w.obstacle_linearization != ObstacleLinearization::kCommandTangent || gait_.standing()) {
     return;
   }
@@ -239,6 +240,29 @@ void PatternGenerator::placeObstacles(const Eigen::Vector3d& command) {
                            Eigen::Vector2d(problem_->velocity_x(0), problem_->velocity_y(0)),
                            w, tangentClearance(w), problem_->obstacle_slot,
                            problem_->obstacle_normal, problem_->obstacle_offset);
+  if (w.obstacle_landing_linearization == ObstacleLinearization::kStep && gait_.swinging()) {
+    // Where the robot will have to be caught when the foot in the air lands: the capture point
+    // at touchdown with the CoP held on the support foot (the LIPM's xi(T) = p + (xi - p)
+    // e^(omega0 T)). A border that keeps it out keeps the catching step out too; that landing
+    // gets its own half-plane (ObstacleSelector::landingRows). In a steady slide along a
+    // border it lies inside (measured: 0.17 m inside in docs/python.md's online example
+    // before its push, 0.06-0.09 m outside after 25-30 N); everywhere else the border stays,
+    // as a landing beyond it walks the feet into the corner of two borders (obstacle_boxes's
+    // closed loop was blocked between its first two boxes with the landing's row always on).
+    const Eigen::Vector2d support = gait_.footPose(gait_.supportSide()).head<2>();
+    const Eigen::Vector2d capture(com_x_(0) + com_x_(1) / omega0_,
+                                  com_y_(0) + com_y_(1) / omega0_);
+    const Eigen::Vector2d at_landing =
+        support + (capture - support) * std::exp(omega0_ * problem_->landing_time_left);
+    obstacles_.landingRows(plannedStep(0).head<2>(), w, problem_->obstacle_slot,
+                           problem_->obstacle_landing_normal, problem_->obstacle_landing_offset);
+    for (int k = 0; k < problem_->obstacle_slot.size(); ++k) {
+      if (problem_->obstacle_normal.col(k).dot(at_landing) >= problem_->obstacle_offset(k)) {
+        problem_->obstacle_landing_normal.col(k).setZero();
+        problem_->obstacle_landing_offset(k) = 0.0;
+      }
+    }
+  }
   // Sideways no faster than the gait walks (in the robot's frame, where its reach is), or
   // than the command itself asks.
   const double sideways_limit = std::max(w.gaitSidewaysSpeed(), std::abs(command.y()));

@@ -290,6 +290,12 @@ TEST_F(ScenarioFiles, UnknownObstacleLinearizationIsAnError) {
               {"walking.obstacle_linearization=tangent"});
 }
 
+TEST_F(ScenarioFiles, UnknownObstacleLandingLinearizationIsAnError) {
+  expectError("bad_landing_linearization.yaml", kValidScenario,
+              {"walking.obstacle_landing_linearization", "step or command_tangent"},
+              {"walking.obstacle_landing_linearization=border"});
+}
+
 TEST_F(ScenarioFiles, ValidBaseLoads) {
   const Scenario s = loadScenario(write("valid.yaml", kValidScenario), {}, kRobotsDir);
   EXPECT_EQ(s.name, "test_case");

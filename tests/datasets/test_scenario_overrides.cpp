@@ -107,3 +107,18 @@ TEST(Overrides, ObstacleLinearizationRoundTrips) {
       wpg::datasets::loadScenarioText(s.resolved_yaml, "run.h5:/scenario", {}, kRobotsDir);
   EXPECT_EQ(again.walking.obstacle_linearization, wpg::ObstacleLinearization::kStep);
 }
+
+TEST(Overrides, ObstacleLandingLinearizationRoundTrips) {
+  const Scenario defaults = loadShipped("walk_forward");
+  EXPECT_EQ(defaults.walking.obstacle_landing_linearization, wpg::ObstacleLinearization::kStep);
+  const Scenario s =
+      loadShipped("walk_forward", {"walking.obstacle_landing_linearization=command_tangent"});
+  EXPECT_EQ(s.walking.obstacle_landing_linearization,
+            wpg::ObstacleLinearization::kCommandTangent);
+  EXPECT_NE(s.resolved_yaml.find("obstacle_landing_linearization: command_tangent"),
+            std::string::npos);
+  const Scenario again =
+      wpg::datasets::loadScenarioText(s.resolved_yaml, "run.h5:/scenario", {}, kRobotsDir);
+  EXPECT_EQ(again.walking.obstacle_landing_linearization,
+            wpg::ObstacleLinearization::kCommandTangent);
+}

@@ -88,6 +88,16 @@ Walk walkTransitions(WalkingParameters w) {
       previous_slots.obstacle_slot = previous.problem.obstacle_slot;
       previous_slots.obstacle_normal = previous.problem.obstacle_normal;
       previous_slots.obstacle_offset = previous.problem.obstacle_offset;
+      // The next landing's own half-plane (obstacle_landing_linearization: step) is chosen
+      // afresh at every sample, facing the landing: what step 0 had at sample k if it is still
+      // step 0, else what step 1 had (its border), so that the rows compared are the same
+      // half-planes on the shifted steps.
+      previous_slots.obstacle_landing_normal = previous_completes
+                                                   ? previous.problem.obstacle_normal
+                                                   : previous.problem.obstacle_landing_normal;
+      previous_slots.obstacle_landing_offset = previous_completes
+                                                   ? previous.problem.obstacle_offset
+                                                   : previous.problem.obstacle_landing_offset;
       transitions.push_back({previous, evaluate(model, generator.problem(), warm_start),
                              previous_completes, evaluate(model, previous_slots, warm_start)});
     }

@@ -482,4 +482,82 @@ TEST(ObstacleTangent, SelectorGroupKeepsItsFirstMember) {
   }
 }
 
+// The next landing's row (obstacle_landing_linearization: step): the half-plane of the same
+// grown circle that faces the planned landing, the paper's linearization at the step. Pushed
+// forward while it walks along a slanted border, the robot must land beyond that border: the
+// landing's row allows it where the obstacle is not.
+TEST(ObstacleTangent, LandingRowFacesThePlannedLanding) {
+  wpg::Obstacle obstacle;
+  obstacle.center = kCenter;
+  obstacle.radius = 0.25;
+  obstacle.margin = 0.25;
+  wpg::ObstacleSelector selector;
+  selector.set({obstacle});
+  wpg::WalkingParameters parameters;
+  parameters.obstacle_foot_radius = kRadius - 0.5;
+  Eigen::VectorXi slots(2);
+  Eigen::Matrix2Xd normals(2, 2), landing_normals(2, 2);
+  Eigen::VectorXd offsets(2), landing_offsets(2);
+  selector.select({0.0, 0.0}, 3.0, slots);
+  ASSERT_EQ(slots(0), 0);
+  selector.borderNormals({0.2, 0.0}, {0.2, 0.0}, kForward, parameters, kClearance, slots,
+                         normals, offsets);
+  const Vector2d landing(0.65, -0.06);  // a catching step ahead, right foot
+  ASSERT_LT(normals.col(0).dot(landing), offsets(0)) << "the slanted border forbids it";
+  selector.landingRows(landing, parameters, slots, landing_normals, landing_offsets);
+  const Vector2d facing = (landing - kCenter).normalized();
+  EXPECT_NEAR((landing_normals.col(0) - facing).norm(), 0.0, 1e-12);
+  // the supporting half-plane of the grown circle: the circle touches it, beyond it
+  EXPECT_NEAR(landing_offsets(0), facing.dot(kCenter) + kRadius, 1e-12);
+  EXPECT_GT(landing_normals.col(0).dot(landing), landing_offsets(0)) << "allowed";
+  EXPECT_EQ(landing_normals.col(1).norm(), 0.0);  // an empty slot has no row
+  // no command: the borders face the CoM, and the landing has no row of its own
+  selector.borderNormals({0.2, 0.0}, {0.2, 0.0}, {0.0, 0.0}, parameters, kClearance, slots,
+                         normals, offsets);
+  selector.landingRows(landing, parameters, slots, landing_normals, landing_offsets);
+  EXPECT_EQ(landing_normals.norm(), 0.0);
+  EXPECT_EQ(landing_offsets.norm(), 0.0);
+}
+
+// A group's landing row is a supporting half-plane of the group's hull: every member's grown
+// box lies beyond it (the landing allowed, no member's margin), carried by the leader's slot.
+TEST(ObstacleTangent, LandingRowOfAGroupSupportsItsHull) {
+  wpg::WalkingParameters parameters;
+  wpg::Obstacle first, second;
+  first.type = second.type = wpg::ObstacleType::kBox;
+  first.margin = second.margin = 0.2;
+  first.size = second.size = {0.4, 0.4};
+  first.center = {2.0, 0.4};
+  second.center = {2.2, -0.3};  // 0.3 m apart: no step between the grown boxes
+  wpg::ObstacleSelector selector;
+  selector.set({first, second});
+  Eigen::VectorXi slots(4);
+  Eigen::Matrix2Xd normals(2, 4), landing_normals(2, 4);
+  Eigen::VectorXd offsets(4), landing_offsets(4);
+  const Vector2d com(0.5, 0.0);
+  selector.select(com, 5.0, slots);
+  ASSERT_EQ((slots.array() >= 0).count(), 2);
+  selector.borderNormals(com, com, kForward, parameters, kClearance, slots, normals, offsets);
+  ASSERT_EQ((slots.array() >= 0).count(), 1) << "one group";
+  const double grown = first.margin + parameters.obstacle_foot_radius;
+  for (const Vector2d landing : {Vector2d(1.2, 0.0), Vector2d(1.5, -0.9), Vector2d(2.1, 1.2)}) {
+    selector.landingRows(landing, parameters, slots, landing_normals, landing_offsets);
+    for (int k = 0; k < 4; ++k) {
+      if (slots(k) < 0) {
+        EXPECT_EQ(landing_normals.col(k).norm(), 0.0) << k;
+        continue;
+      }
+      const Vector2d n = landing_normals.col(k);
+      EXPECT_NEAR(n.norm(), 1.0, 1e-12);
+      double support = -1e9;  // the hull's support h(n) + radius, over both boxes' corners
+      for (const wpg::Obstacle* box : {&first, &second})
+        for (const double sx : {-0.2, 0.2})
+          for (const double sy : {-0.2, 0.2})
+            support = std::max(support, n.dot(box->center + Vector2d(sx, sy)) + grown);
+      EXPECT_NEAR(landing_offsets(k), support, 1e-12) << landing.transpose();
+      EXPECT_GT(n.dot(landing), landing_offsets(k)) << landing.transpose();
+    }
+  }
+}
+
 }  // namespace

@@ -1,4 +1,8 @@
 """wpg.OnlineGenerator: the online API, one control period per step()."""
+import os
+import pathlib
+import re
+
 import numpy as np
 import pytest
 
@@ -25,6 +29,20 @@ def test_steps_follow_the_offline_walk_of_the_same_command():
     assert {s.status for s in states} == {"solved"}
     assert sum(s.nmpc_sample for s in states) == len(offline.mpc)
     np.testing.assert_array_equal(gen.command, command)
+
+
+def test_the_online_example_of_the_docs_recovers_its_push():
+    # docs/python.md's online example, run as written: walking towards a circle and pushed
+    # forward (30 N for 0.1 s at 3 s) while it slides along the circle's border. The step that
+    # catches the push must land beyond that border (the landing's own half-plane).
+    docs = pathlib.Path(os.environ["WPG_DATA_DIR"]) / "docs" / "python.md"
+    blocks = re.findall(r"```python\n(.*?)```", docs.read_text(), re.S)
+    example = next(b for b in blocks if "gen.push(" in b)
+    assert "force=(30, 0)" in example and "set_obstacles" in example
+    names = {"wpg": wpg}
+    exec(example, names)
+    assert names["s"].status == "solved"
+    assert names["gen"].time == pytest.approx(10.0)
 
 
 def test_a_push_is_the_scenario_push_of_the_offline_walk():

@@ -67,6 +67,15 @@ const WalkingChoice kObstacleLinearization{
     },
     [](const WalkingParameters& p) { return obstacleLinearizationName(p.obstacle_linearization); }};
 
+const WalkingChoice kObstacleLandingLinearization{
+    "step or command_tangent",
+    [](const std::string& name, WalkingParameters* p) {
+      return parseObstacleLinearization(name, &p->obstacle_landing_linearization);
+    },
+    [](const WalkingParameters& p) {
+      return obstacleLinearizationName(p.obstacle_landing_linearization);
+    }};
+
 const WalkingChoice kZeroCommandGait{
     "stop or step_in_place",
     [](const std::string& name, WalkingParameters* p) {
@@ -130,6 +139,7 @@ const std::vector<WalkingField>& walkingFields() {
       numberField("obstacle_foot_radius", &P::obstacle_foot_radius),
       choiceField("obstacle_distance_form", &kObstacleDistanceForm),
       choiceField("obstacle_linearization", &kObstacleLinearization),
+      choiceField("obstacle_landing_linearization", &kObstacleLandingLinearization),
       polygonField("feasibility_x", &P::feasibility_x),
       polygonField("feasibility_y", &P::feasibility_y),
       numberField("max_step_yaw_change", &P::max_step_yaw_change),

@@ -45,6 +45,21 @@ class ObstacleSelector {
                      const Eigen::Vector2d& direction, const WalkingParameters& parameters,
                      double clearance, Eigen::Ref<Eigen::VectorXi> slots,
                      Eigen::Ref<Eigen::Matrix2Xd> normals, Eigen::Ref<Eigen::VectorXd> offsets);
+  // The row of the next landing (the previewed step 0, the foot in the air), per slot left by
+  // the last borderNormals: column k of `normals` and entry k of
+  // `offsets` <- the supporting half-plane n.F >= offset of the same shape (the obstacle, or
+  // its group's hull) whose normal faces `landing`, the landing planned at the previous
+  // sample: the paper's linearization of eq. (18) at the step (Sec. III-E), given the
+  // group's hull. Zero for an empty slot, and for every slot when borderNormals had no
+  // command. Why: the border of borderNormals slants across the robot's way to steer it round
+  // the obstacle (a half-plane kept as the CoM walks on, `clearance` beside the CoM when it
+  // was chosen, less after); the step that catches a push forward must land beyond it,
+  // where the obstacle is not (docs/obstacle_scenes.md, "Pushes while avoiding"); the
+  // generator uses it only when it must (PatternGenerator::placeObstacles). The later steps
+  // keep the border: they steer. Does not allocate.
+  void landingRows(const Eigen::Vector2d& landing, const WalkingParameters& parameters,
+                   const Eigen::Ref<const Eigen::VectorXi>& slots,
+                   Eigen::Ref<Eigen::Matrix2Xd> normals, Eigen::Ref<Eigen::VectorXd> offsets);
   // Column k: the unit tangent of slot k's border towards its passing side (borderSlide), as
   // the last borderNormals left them; zero for an empty slot.
   const Eigen::Matrix2Xd& slides() const { return slides_; }
@@ -61,8 +76,17 @@ class ObstacleSelector {
   // scratch, sized once per set(): the route position of each slot's group's first member, and
   // the points and radii of the group whose border is being computed
   std::vector<int> leader_;
+  // the obstacle of each route position, and how many the last borderNormals placed (-1: none,
+  // no command)
+  std::vector<int> route_obstacle_;
+  int route_count_ = -1;
   std::vector<Eigen::Vector2d> group_points_;
   std::vector<double> group_radii_;
+
+  double radiusOf(int index, const WalkingParameters& parameters) const;
+  // group_points_, group_radii_ <- the core points and radii of the route positions r..count-1
+  // led by route position r; returns the furthest of their positions along the command.
+  double gatherGroup(int r, int count, const WalkingParameters& parameters);
 };
 
 }  // namespace wpg

@@ -189,9 +189,16 @@ struct WalkingParameters {
   // Which bound the obstacle rows enforce: sole_clearance (wpg) or the paper's eq. (18) as
   // written (see ObstacleDistanceForm).
   ObstacleDistanceForm obstacle_distance_form = ObstacleDistanceForm::kSoleClearance;
-  // How a circle obstacle's row is linearized (see the enum). Boxes and polygons keep the
-  // signed-distance row linearized at the step in both cases.
+  // How the obstacle rows are linearized (see the enum), for every shape.
   ObstacleLinearization obstacle_linearization = ObstacleLinearization::kCommandTangent;
+  // With obstacle_linearization command_tangent: the row of the foot in the air. kStep
+  // (default): while the capture point predicted at touchdown lies beyond a border, the
+  // half-plane of the same shape that faces the landing planned at the previous sample, the
+  // paper's linearization, so that the step catching a push may land beyond the slanted
+  // border, where the obstacle is not (PatternGenerator::placeObstacles,
+  // ObstacleSelector::landingRows; docs/obstacle_scenes.md, "Pushes while avoiding");
+  // kCommandTangent: the border, as the later steps.
+  ObstacleLinearization obstacle_landing_linearization = ObstacleLinearization::kStep;
   // --- step feasibility polygon for a LEFT step, in the right (support) foot frame (Fig. 5);
   //     a right step uses the mirror image (y -> -y). Counter-clockwise order not required.
   std::array<double, 5> feasibility_x{-0.28, -0.2, 0.0, 0.2, 0.28};  // [m]

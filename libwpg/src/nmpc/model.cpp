@@ -193,6 +193,11 @@ void NmpcModel::checkProblem(const NmpcProblem& problem) const {
           obstacle_slots_, problem.obstacle_normal.cols());
   require(problem.obstacle_offset.size() == obstacle_slots_, "obstacle_offset", obstacle_slots_,
           problem.obstacle_offset.size());
+  require(problem.obstacle_landing_normal.cols() == obstacle_slots_,
+          "obstacle_landing_normal (columns)", obstacle_slots_,
+          problem.obstacle_landing_normal.cols());
+  require(problem.obstacle_landing_offset.size() == obstacle_slots_, "obstacle_landing_offset",
+          obstacle_slots_, problem.obstacle_landing_offset.size());
   if (phase.pattern < 0 || phase.pattern >= patternCount()) {
     throw std::invalid_argument("NMPC problem: 'phase.pattern': expected 0 to " +
                                 std::to_string(patternCount() - 1) + ", got " +
@@ -241,6 +246,8 @@ NmpcProblem NmpcModel::makeProblem() const {
   problem.obstacle_slot = Eigen::VectorXi::Constant(obstacle_slots_, -1);
   problem.obstacle_normal = Eigen::Matrix2Xd::Zero(2, obstacle_slots_);
   problem.obstacle_offset = Eigen::VectorXd::Zero(obstacle_slots_);
+  problem.obstacle_landing_normal = Eigen::Matrix2Xd::Zero(2, obstacle_slots_);
+  problem.obstacle_landing_offset = Eigen::VectorXd::Zero(obstacle_slots_);
   return problem;
 }
 

@@ -40,14 +40,19 @@ class ObstacleConstraint final : public NamedConstraintFamily {
         const Eigen::Vector2d F(U(L.stepX() + i), U(L.stepY() + i));
         const WalkingParameters& w = model.parameters();
         Eigen::Vector2d dg;
-        const auto normal = problem.obstacle_normal.col(k);
+        // The next landing's own half-plane, when it has one (obstacle_landing_linearization:
+        // step, facing the planned landing); else the sample's border.
+        const bool own = i == 0 && !problem.obstacle_landing_normal.col(k).isZero();
+        const auto normal =
+            own ? problem.obstacle_landing_normal.col(k) : problem.obstacle_normal.col(k);
         if (!normal.isZero()) {
           // command_tangent linearization (wpg/obstacle_tangent.hpp): the supporting
           // half-plane n.F >= h(n) + radius of the obstacle (or group) grown by the
           // step-centre margin, n and the offset fixed for the sample: g = offset - n.F <= 0,
           // linear in F (metres, the distance missing to the border), inside eq. (18)'s set,
           // for every shape.
-          g(row) = problem.obstacle_offset(k) - normal.dot(F);
+          g(row) = (own ? problem.obstacle_landing_offset(k) : problem.obstacle_offset(k)) -
+                   normal.dot(F);
           dg = -normal;
         } else if (obstacle.type == ObstacleType::kCircle) {
           // r^2 is R^2 + m^2 in the paper's form (eq. 18 as written, the step a point),

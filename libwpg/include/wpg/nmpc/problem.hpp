@@ -52,6 +52,11 @@ struct NmpcProblem {
   // without normals) = the row linearized at the step.
   Eigen::Matrix2Xd obstacle_normal;
   Eigen::VectorXd obstacle_offset;  // [m]
+  // The same for the row of step 0 (the next landing) when column k is nonzero
+  // (obstacle_landing_linearization: step, PatternGenerator::placeObstacles); a zero column =
+  // step 0 takes the row of obstacle_normal like the later steps.
+  Eigen::Matrix2Xd obstacle_landing_normal;
+  Eigen::VectorXd obstacle_landing_offset;  // [m]
   Eigen::Vector3d com_x = Eigen::Vector3d::Zero();  // [c, c', c''] along world x
   Eigen::Vector3d com_y = Eigen::Vector3d::Zero();
   // N: world reference velocity per sample (J1): the command turned by the sample's heading,
