@@ -45,9 +45,22 @@ TEST(OrderedParallel, DeliversInJobOrderWhateverTheCompletionOrder) {
     std::set<int> workers;
     std::atomic<int> delivering{0};
     bool overlapped = false;
+    // No job runs before two workers have started one: on a loaded machine one worker could
+    // otherwise run all 40 before the other is scheduled (it did once in a full suite), and
+    // the jobs would finish in order.
+    std::mutex start_mutex;
+    std::condition_variable start_signal;
+    std::set<int> starters;
+    const std::size_t together = threads > 1 ? 2 : 1;
     runOrdered<std::size_t>(
         kJobs, threads,
         [&](std::size_t job, int worker) {
+          {
+            std::unique_lock<std::mutex> lock(start_mutex);
+            starters.insert(worker);
+            start_signal.notify_all();
+            start_signal.wait(lock, [&] { return starters.size() >= together; });
+          }
           std::this_thread::sleep_for(jobDuration(job));
           std::lock_guard<std::mutex> lock(mutex);
           completed.push_back(job);
