@@ -41,11 +41,20 @@ run() {
   echo "tsan: $*"
   "$@" >"$TMPDIR/last.log" 2>&1 || { cat "$TMPDIR/last.log" >&2; status=1; }
 }
-run "$build/tests/wpg_libwpg_tests" --gtest_filter='HessianFactorCache.*'
-run "$build/tests/wpg_datasets_tests" --gtest_filter='RunDatasetFiles.APreparedWalkWritesTheSameChunks:StudyFiles.ThreadsDoNotChangeTheRunsNorTheError:ComparisonFiles.RandomFieldsAreDrawnPerSeedAndReproducible:BatchFiles.*'
-run "$build/tests/wpg_planning_tests" --gtest_filter='RoutePlanner.SameSeedGivesTheSameRouteAgainAndOnOtherThreads:World.ConcurrentQueriesAgreeWithSequentialOnes'
-run "$build/tests/wpg_robots_tests" --gtest_filter='MultibodyReplay.ThreadsGiveTheSameRows:MultibodyReplay.PreparedSystemsGiveTheSameRows'
-run "$build/tests/wpg_engine_tests" --gtest_filter='OrderedParallel.*:StudyExecution.*'
+# run_tests PROGRAM FILTER: a test program's tests that FILTER selects; a filter that selects no
+# test (a renamed test) fails too, as GoogleTest would pass it.
+run_tests() {
+  run "$build/tests/$1" --gtest_filter="$2"
+  local ran
+  ran="$(grep -c '^\[       OK \]' "$TMPDIR/last.log" || true)"
+  echo "tsan:   $ran tests passed"
+  ((ran > 0)) || { echo "tsan: error: no test of $1 matches '$2'" >&2; status=1; }
+}
+run_tests wpg_libwpg_tests 'HessianFactorCache.*'
+run_tests wpg_datasets_tests 'RunDatasetFiles.APreparedWalkWritesTheSameChunks:StudyFiles.ThreadsDoNotChangeTheRunsNorTheError:ComparisonFiles.RandomFieldsAreDrawnPerSeedAndReproducible:BatchFiles.*'
+run_tests wpg_planning_tests 'RoutePlanner.SameSeedGivesTheSameRouteAgainAndOnOtherThreads:World.ConcurrentQueriesAgreeWithSequentialOnes'
+run_tests wpg_robots_tests 'MultibodyReplay.ThreadsGiveTheSameRows:MultibodyReplay.PreparedSystemsGiveTheSameRows'
+run_tests wpg_engine_tests 'OrderedParallel.*:StudyExecution.*'
 wpg="$build/cli/wpg"
 export WPG_DATA_DIR="$repo"
 run "$wpg" batch "$repo/tests/cli/studies/tiny_batch.yaml" -j 2 --no-plot -o "$TMPDIR/batch.h5"

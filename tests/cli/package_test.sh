@@ -57,7 +57,7 @@ check_png "$WORKDIR/installed.png"
 
 # The documentation is installed, and the links between its pages hold there.
 docs="$(dirname "$(find "$prefix" -path '*/doc/wpg/docs' -type d | head -n1)")"
-for page in README.md LICENSE docs/README.md docs/commands.md datasets/SCHEMA.md; do
+for page in README.md CHANGELOG.md LICENSE docs/README.md docs/commands.md datasets/SCHEMA.md; do
   [[ -s "$docs/$page" ]] || fail "documentation not installed: $page (under $prefix/share/doc/wpg)"
 done
 "$PYTHON" "$HERE/check_doc_links.py" "$docs" --pages-only || fail "broken links in the installed documentation"

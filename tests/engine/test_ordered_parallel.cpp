@@ -25,6 +25,15 @@ std::chrono::microseconds jobDuration(std::size_t job) {
   return std::chrono::microseconds(200 * (4 - job % 4));
 }
 
+// A job's duration in the tests that stop the hand-out: 0.1 ms for the first 20 jobs, 1 ms
+// after. The thread that stops the hand-out (a job's or a delivery's exception, caught and
+// recorded under the lock) may be preempted in between on a loaded machine; the other two
+// workers meanwhile start jobs, and with 0.1 ms jobs they reached 100 once in a full suite
+// (load 8 on 2 cores). At 1 ms a hundred starts take them ~40 ms of such a delay, not ~5.
+std::chrono::microseconds stoppingJobDuration(std::size_t job) {
+  return std::chrono::microseconds(job < 20 ? 100 : 1000);
+}
+
 }  // namespace
 
 TEST(OrderedParallel, DeliversInJobOrderWhateverTheCompletionOrder) {
@@ -36,9 +45,22 @@ TEST(OrderedParallel, DeliversInJobOrderWhateverTheCompletionOrder) {
     std::set<int> workers;
     std::atomic<int> delivering{0};
     bool overlapped = false;
+    // No job runs before two workers have started one: on a loaded machine one worker could
+    // otherwise run all 40 before the other is scheduled (it did once in a full suite), and
+    // the jobs would finish in order.
+    std::mutex start_mutex;
+    std::condition_variable start_signal;
+    std::set<int> starters;
+    const std::size_t together = threads > 1 ? 2 : 1;
     runOrdered<std::size_t>(
         kJobs, threads,
         [&](std::size_t job, int worker) {
+          {
+            std::unique_lock<std::mutex> lock(start_mutex);
+            starters.insert(worker);
+            start_signal.notify_all();
+            start_signal.wait(lock, [&] { return starters.size() >= together; });
+          }
           std::this_thread::sleep_for(jobDuration(job));
           std::lock_guard<std::mutex> lock(mutex);
           completed.push_back(job);
@@ -87,7 +109,7 @@ TEST(OrderedParallel, AJobsExceptionStopsTheHandOutAndReachesTheCaller) {
                      [&](std::size_t job, int) {
                        ++started;
                        if (job == kFailing) throw std::runtime_error("job 5 failed");
-                       std::this_thread::sleep_for(std::chrono::microseconds(100));
+                       std::this_thread::sleep_for(stoppingJobDuration(job));
                        return 0;
                      },
                      [&](std::size_t job, int&&) { delivered.push_back(job); }),
@@ -106,9 +128,9 @@ TEST(OrderedParallel, ADeliverysExceptionStopsEverythingAndReachesTheCaller) {
   try {
     runOrdered<int>(
         kJobs, 3,
-        [&](std::size_t, int) {
+        [&](std::size_t job, int) {
           ++started;
-          std::this_thread::sleep_for(std::chrono::microseconds(100));
+          std::this_thread::sleep_for(stoppingJobDuration(job));
           return 0;
         },
         [&](std::size_t job, int&&) {

@@ -6,27 +6,14 @@
 
 #include <Eigen/Core>
 
+#include "../common/wall_walk.hpp"
 #include "wpg/online_walking_generator.hpp"
 #include "wpg/walk_loop.hpp"
 
 namespace {
 
-// Forward at 0.2 m/s from 1 s, into a wall 0.3 m x 6 m centred 2 m ahead (the shipped
-// obstacle_wall); the walk ends at 20 s, the robot blocked since 2.6 s (it slides along the
-// wall's border, sideways more than forward).
-wpg::WalkRequest wallRequest() {
-  wpg::WalkRequest request;
-  request.duration = 30.0;
-  request.reference = {{0.0, Eigen::Vector3d::Zero()}, {1.0, Eigen::Vector3d(0.2, 0.0, 0.0)}};
-  wpg::Obstacle wall;
-  wall.type = wpg::ObstacleType::kBox;
-  wall.center = Eigen::Vector2d(2.0, 0.0);
-  wall.size = Eigen::Vector2d(0.3, 6.0);
-  wall.margin = 0.2;
-  request.obstacles = {wall};
-  request.validate();
-  return request;
-}
+// The walk into the wall (wall_walk.hpp) ends at 20 s, the robot blocked since 2.6 s.
+using wpg_test::wallWalkRequest;
 
 // The schedule until 20 s, then the end of the walk, saying whether its target was reached.
 class EndingCommands final : public wpg::CommandSource {
@@ -47,7 +34,7 @@ class EndingCommands final : public wpg::CommandSource {
 };
 
 wpg::WalkResult walk(bool reached) {
-  const wpg::WalkRequest request = wallRequest();
+  const wpg::WalkRequest request = wallWalkRequest();
   wpg::OnlineWalkingGenerator generator(wpg::WalkingParameters(), request.generator);
   generator.setObstacles(request.obstacles);
   EndingCommands commands(request, reached);
@@ -73,7 +60,7 @@ TEST(BlockedWalkLoop, EndingStuckIsBlockedUnlessTheTargetWasReached) {
 // A fall is the walk's outcome: a robot pushed over while stuck in front of the wall is not
 // also blocked.
 TEST(BlockedWalkLoop, AFallIsNotJudgedBlocked) {
-  wpg::WalkRequest request = wallRequest();
+  wpg::WalkRequest request = wallWalkRequest();
   wpg::Push push;
   push.t = 18.0;
   push.force = Eigen::Vector2d(0.0, 600.0);

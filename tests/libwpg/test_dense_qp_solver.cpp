@@ -15,6 +15,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "../common/sanitizer_malloc.hpp"
 #include "qp_test_problems.hpp"
 #include "wpg/qp/dense_qp_solver.hpp"
 
@@ -22,17 +23,9 @@
 // Eigen allocates with std::malloc (operator new does too), so replacing malloc sees every
 // heap allocation, also in the library's translation units and in Release builds, where
 // Eigen's own EIGEN_RUNTIME_NO_MALLOC check (an eigen_assert) is compiled out. Sanitizers
-// replace malloc themselves: there (scripts/test-sanitizers.sh) the count comes from their
-// allocation hook, which their allocator calls for every allocation.
-#if defined(__has_feature)
-#if __has_feature(address_sanitizer) || __has_feature(memory_sanitizer)
-#define WPG_TEST_SANITIZED 1
-#endif
-#endif
-#if defined(__SANITIZE_ADDRESS__)
-#define WPG_TEST_SANITIZED 1
-#endif
-#if defined(__GLIBC__) && !defined(WPG_TEST_SANITIZED)
+// replace malloc themselves: there the count comes from their allocation hook
+// (sanitizer_malloc.hpp).
+#if defined(__GLIBC__) && !defined(WPG_TEST_SANITIZER_OWNS_MALLOC)
 #define WPG_TEST_COUNT_MALLOC 1
 extern "C" void* __libc_malloc(std::size_t size);
 namespace {
@@ -43,12 +36,8 @@ extern "C" void* malloc(std::size_t size) {
   if (g_count_mallocs) ++g_malloc_count;
   return __libc_malloc(size);
 }
-#elif defined(WPG_TEST_SANITIZED)
+#elif defined(WPG_TEST_SANITIZER_OWNS_MALLOC)
 #define WPG_TEST_COUNT_MALLOC 1
-// Declared in <sanitizer/allocator_interface.h> (compiler-rt and GCC's libsanitizer alike).
-extern "C" int __sanitizer_install_malloc_and_free_hooks(
-    void (*malloc_hook)(const volatile void*, std::size_t),
-    void (*free_hook)(const volatile void*));
 namespace {
 bool g_count_mallocs = false;
 long g_malloc_count = 0;

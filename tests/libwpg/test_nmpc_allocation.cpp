@@ -36,6 +36,7 @@
 
 #include "../common/obstacle_fields.hpp"
 #include "../common/paper_gait.hpp"
+#include "../common/sanitizer_malloc.hpp"
 #include "allocation_counter.hpp"
 #include "wpg/lipm_prediction.hpp"
 #include "wpg/online_walking_generator.hpp"
@@ -43,17 +44,10 @@
 #include "wpg/walk_loop.hpp"
 
 // Sanitizers replace the allocator themselves: no interposition there. Under AddressSanitizer
-// (scripts/test-sanitizers.sh) the count comes from its allocation hook instead, which its
-// allocator calls for every malloc, calloc, realloc, memalign and operator new.
-#if defined(__has_feature)
-#if __has_feature(address_sanitizer) || __has_feature(memory_sanitizer)
-#define WPG_ALLOCATION_TEST_SANITIZED 1
-#endif
-#endif
-#if defined(__SANITIZE_ADDRESS__)
-#define WPG_ALLOCATION_TEST_SANITIZED 1
-#endif
-#if defined(__GLIBC__) && !defined(WPG_ALLOCATION_TEST_SANITIZED)
+// and ThreadSanitizer the count comes from their allocation hook instead, which their
+// allocator calls for every malloc, calloc, realloc, memalign and operator new
+// (sanitizer_malloc.hpp).
+#if defined(__GLIBC__) && !defined(WPG_TEST_SANITIZER_OWNS_MALLOC)
 #define WPG_ALLOCATION_COUNTER 1
 #define WPG_ALLOCATION_COUNTER_INTERPOSED 1
 extern "C" {
@@ -62,12 +56,8 @@ void* __libc_calloc(std::size_t count, std::size_t size);
 void* __libc_realloc(void* pointer, std::size_t size);
 void* __libc_memalign(std::size_t alignment, std::size_t size);
 }
-#elif defined(WPG_ALLOCATION_TEST_SANITIZED)
+#elif defined(WPG_TEST_SANITIZER_OWNS_MALLOC)
 #define WPG_ALLOCATION_COUNTER 1
-// Declared in <sanitizer/allocator_interface.h> (compiler-rt and GCC's libsanitizer alike).
-extern "C" int __sanitizer_install_malloc_and_free_hooks(
-    void (*malloc_hook)(const volatile void*, std::size_t),
-    void (*free_hook)(const volatile void*));
 #endif
 
 #if WPG_ALLOCATION_COUNTER

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstddef>
 
+#include "../common/wall_walk.hpp"
 #include "allocation_counter.hpp"
 #include "wpg/online_walking_generator.hpp"
 #include "wpg/walk_loop.hpp"
@@ -107,21 +108,12 @@ TEST(NmpcAllocation, WalkLoopIterations) {
 }
 
 // The progress monitor (wpg/progress_monitor.hpp) fed at every NMPC sample while the robot
-// is blocked: walking into a wall with no way round, counted from 10 s to 25 s (found blocked
+// is blocked: walking into a wall with no way round (wall_walk.hpp), counted from 10 s to 25 s (found blocked
 // at 13.7 s), the windows judged and the stretch kept without allocating.
 TEST(NmpcAllocation, WalkLoopIterationsWhileBlocked) {
   if (!counterAvailable()) GTEST_SKIP() << "no allocation counter (needs glibc or ASan)";
   WalkingParameters w;
-  wpg::WalkRequest request;
-  request.duration = 30.0;
-  request.reference = {{0.0, Vector3d::Zero()}, {1.0, Vector3d(0.2, 0.0, 0.0)}};
-  wpg::Obstacle wall;
-  wall.type = wpg::ObstacleType::kBox;
-  wall.center = Eigen::Vector2d(2.0, 0.0);
-  wall.size = Eigen::Vector2d(0.3, 6.0);
-  wall.margin = 0.2;
-  request.obstacles = {wall};
-  request.validate();
+  const wpg::WalkRequest request = wpg_test::wallWalkRequest();
   wpg::OnlineWalkingGenerator generator(w, request.generator);
   generator.setObstacles(request.obstacles);
   CountingCommands commands(request, 100, 250);

@@ -2,10 +2,10 @@
 // interposed here and forwarded to glibc's __libc_* functions, so that "no allocation in the
 // hot loop" covers everything called (operator new, Eigen's aligned_malloc, Simbody).
 //
-// Under AddressSanitizer (WPG_SANITIZE, scripts/test-sanitizers.sh) the sanitizer owns malloc:
-// a second definition would not link, or would hand glibc blocks to ASan's free. There the
-// count comes from the sanitizer's own allocation hook instead, which its allocator calls for
-// every malloc, calloc, realloc, memalign and operator new: the tests keep their assertions.
+// Under AddressSanitizer and ThreadSanitizer the sanitizer owns malloc (sanitizer_malloc.hpp
+// says why nothing is interposed there). There the count comes from the sanitizer's own
+// allocation hook instead, which its allocator calls for every malloc, calloc, realloc,
+// memalign and operator new: the tests keep their assertions.
 #include <atomic>
 #include <cerrno>
 #include <cstddef>
@@ -14,23 +14,10 @@
 #include <Eigen/Core>
 #include <gtest/gtest.h>
 
+#include "../common/sanitizer_malloc.hpp"
 #include "alloc_counter.hpp"
 
-#if defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define WPG_ALLOCATION_COUNTER_SANITIZER_HOOK 1
-#endif
-#endif
-#if defined(__SANITIZE_ADDRESS__)
-#define WPG_ALLOCATION_COUNTER_SANITIZER_HOOK 1
-#endif
-
-#ifdef WPG_ALLOCATION_COUNTER_SANITIZER_HOOK
-// Declared in <sanitizer/allocator_interface.h> (compiler-rt and GCC's libsanitizer alike).
-extern "C" int __sanitizer_install_malloc_and_free_hooks(
-    void (*malloc_hook)(const volatile void*, std::size_t),
-    void (*free_hook)(const volatile void*));
-#else
+#ifndef WPG_TEST_SANITIZER_OWNS_MALLOC
 extern "C" {
 void* __libc_malloc(std::size_t size);
 void* __libc_calloc(std::size_t count, std::size_t size);
@@ -47,7 +34,7 @@ namespace wpg_test {
 long allocationCount() { return g_allocations.load(std::memory_order_relaxed); }
 }  // namespace wpg_test
 
-#ifdef WPG_ALLOCATION_COUNTER_SANITIZER_HOOK
+#ifdef WPG_TEST_SANITIZER_OWNS_MALLOC
 namespace {
 void countAllocation(const volatile void*, std::size_t) {
   g_allocations.fetch_add(1, std::memory_order_relaxed);
@@ -89,7 +76,7 @@ int posix_memalign(void** out, std::size_t alignment, std::size_t size) {
 #endif
 
 TEST(AllocationCounter, CountsAllocations) {
-#ifdef WPG_ALLOCATION_COUNTER_SANITIZER_HOOK
+#ifdef WPG_TEST_SANITIZER_OWNS_MALLOC
   ASSERT_NE(g_hook_installed, 0) << "the sanitizer refused the allocation hook";
 #endif
   const long before = wpg_test::allocationCount();

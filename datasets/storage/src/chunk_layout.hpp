@@ -6,7 +6,7 @@
 
 namespace wpg::datasets::detail {
 
-// libdeflate's level 1, chosen on the chunks of a batch (docs/performance.md): 12 M
+// libdeflate's level 1, chosen on the chunks of a batch (CHANGELOG.md, "Batch"): 12 M
 // instructions per 10 s walk and 45.1 % of the raw size, against 20 M and 43.7 % at its levels
 // 2-4 and 34 M and 44.1 % for zlib's level 4 (HDF5's filter, before).
 constexpr int kDeflateLevel = 1;
