@@ -4,6 +4,7 @@
 #include "wpg/datasets/input/input_error.hpp"
 #include "wpg/datasets/storage/input_file.hpp"
 #include "wpg/datasets/storage/read_limits.hpp"
+#include "string_heap_check.hpp"
 
 namespace wpg::datasets::detail {
 
@@ -87,6 +88,7 @@ std::string readStringAttribute(const H5::H5Object& object, const std::string& n
                    std::to_string(type.getSize()) + " bytes: expected at most " +
                    std::to_string(kMaxReadBytes));
   }
+  checkVariableData(attribute, file, "attribute " + where + name);
   std::string value;
   attribute.read(type, value);
   return value;
@@ -121,13 +123,17 @@ std::vector<std::string> copyVariableStrings(const H5::DataSpace& space, Read re
 
 }  // namespace
 
-std::vector<std::string> readVariableStrings(const H5::DataSet& dataset) {
+std::vector<std::string> readVariableStrings(const H5::DataSet& dataset, const std::string& file,
+                                             const std::string& what) {
+  checkVariableData(dataset, file, what);
   return copyVariableStrings(dataset.getSpace(), [&](const H5::StrType& type, char** pointers) {
     dataset.read(pointers, type);
   });
 }
 
-std::vector<std::string> readVariableStrings(const H5::Attribute& attribute) {
+std::vector<std::string> readVariableStrings(const H5::Attribute& attribute,
+                                             const std::string& file, const std::string& what) {
+  checkVariableData(attribute, file, what);
   return copyVariableStrings(attribute.getSpace(), [&](const H5::StrType& type, char** pointers) {
     attribute.read(type, pointers);
   });
@@ -145,7 +151,7 @@ std::vector<std::string> readStringListAttribute(const H5::H5Object& object,
       boundedExtent(space, sizeof(char*), kMaxReadElements, file, what);
   if (dims.size() > 1) fail(file, what + ": expected a list of strings, got a " +
                                       std::to_string(dims.size()) + "-D array");
-  return readVariableStrings(attribute);
+  return readVariableStrings(attribute, file, what);
 }
 
 }  // namespace wpg::datasets::detail
