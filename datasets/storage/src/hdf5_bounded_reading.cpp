@@ -109,12 +109,14 @@ double readNumberAttribute(const H5::H5Object& object, const std::string& name,
 namespace {
 
 // HDF5 hands variable-length strings over as pointers it allocated; they are copied, then
-// reclaimed. `read` reads into the pointers with the given memory type.
+// reclaimed. `read` reads into the pointers with the given memory type, of the stored
+// strings' character set (HDF5 converts none into another: ASCII strings read as UTF-8 fail).
 template <typename Read>
-std::vector<std::string> copyVariableStrings(const H5::DataSpace& space, Read read) {
+std::vector<std::string> copyVariableStrings(const H5::DataSpace& space, H5T_cset_t cset,
+                                             Read read) {
   const std::size_t count = static_cast<std::size_t>(space.getSimpleExtentNpoints());
   H5::StrType type(H5::PredType::C_S1, H5T_VARIABLE);
-  type.setCset(H5T_CSET_UTF8);
+  type.setCset(cset == H5T_CSET_ASCII ? H5T_CSET_ASCII : H5T_CSET_UTF8);
   std::vector<char*> pointers(count, nullptr);
   if (count > 0) read(type, pointers.data());
   std::vector<std::string> values;
@@ -129,17 +131,19 @@ std::vector<std::string> copyVariableStrings(const H5::DataSpace& space, Read re
 std::vector<std::string> readVariableStrings(const H5::DataSet& dataset, const std::string& file,
                                              const std::string& what) {
   checkVariableData(dataset, file, what);
-  return copyVariableStrings(dataset.getSpace(), [&](const H5::StrType& type, char** pointers) {
-    dataset.read(pointers, type);
-  });
+  return copyVariableStrings(dataset.getSpace(), H5Tget_cset(dataset.getDataType().getId()),
+                             [&](const H5::StrType& type, char** pointers) {
+                               dataset.read(pointers, type);
+                             });
 }
 
 std::vector<std::string> readVariableStrings(const H5::Attribute& attribute,
                                              const std::string& file, const std::string& what) {
   checkVariableData(attribute, file, what);
-  return copyVariableStrings(attribute.getSpace(), [&](const H5::StrType& type, char** pointers) {
-    attribute.read(type, pointers);
-  });
+  return copyVariableStrings(attribute.getSpace(), H5Tget_cset(attribute.getDataType().getId()),
+                             [&](const H5::StrType& type, char** pointers) {
+                               attribute.read(type, pointers);
+                             });
 }
 
 std::vector<std::string> readStringListAttribute(const H5::H5Object& object,

@@ -234,7 +234,6 @@ void checkDatasetData(const FileBytes& bytes, HeapChecker& heaps, hid_t dataset,
 struct SubtreeCheck {
   const FileBytes& bytes;
   HeapChecker heaps;
-  hid_t group;
   const std::string& file;
   std::string prefix;  // the group's path, for messages
   int depth;
@@ -299,7 +298,7 @@ herr_t visitLink(hid_t group, const char* name, const H5L_info_t* link, void* da
 
 void checkSubtree(hid_t group, const std::string& file, const std::string& prefix, int depth) {
   const FileBytes bytes(group);
-  SubtreeCheck check{bytes, HeapChecker(bytes), group, file, prefix, depth, ""};
+  SubtreeCheck check{bytes, HeapChecker(bytes), file, prefix, depth, ""};
   const herr_t visited =
       H5Ovisit2(group, H5_INDEX_NAME, H5_ITER_NATIVE, visitObject, &check, H5O_INFO_BASIC);
   if (!check.error.empty()) throw InputError(check.error);
