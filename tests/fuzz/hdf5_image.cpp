@@ -540,9 +540,10 @@ std::vector<std::uint8_t> encode(const FileImage& image) {
 bool writeHdf5(const FileImage& image, const std::string& path) {
   const QuietHdf5 quiet;
   // Built in memory and written out once when closed (HDF5's core driver with a backing
-  // store): a fraction of the system calls of the default driver's many small writes.
+  // store): a fraction of the system calls of the default driver's many small writes. Grown
+  // 16 MiB at a time: by 1 MiB, 65 536 strings took 12 s of reallocations under ASan.
   const hid_t access_plist = H5Pcreate(H5P_FILE_ACCESS);
-  H5Pset_fapl_core(access_plist, 1 << 20, 1);
+  H5Pset_fapl_core(access_plist, 1 << 24, 1);
   const hid_t file = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access_plist);
   H5Pclose(access_plist);
   if (file < 0) return false;
