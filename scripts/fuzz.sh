@@ -33,6 +33,33 @@ dataset_seeds="$build/fuzz/seeds/fuzz_run_dataset_reader"
 "$build/tests/fuzz/make_dataset_seeds" "$dataset_seeds" 40 \
   "$repo"/datasets/references/{walk_forward,push,goal_with_yaw,obstacle_cluttered}.h5 >/dev/null
 
+# Seeds with global heap damage (tests/fuzz/heap_damage.hpp): each seed of the two HDF5
+# targets with one damage entry appended (a zeroed collection, 0xff over its objects, a heap
+# ID's length 0xffffffff, ...), so that the fuzzer starts from the heap checks' refusals.
+heap_seeds() {  # heap_seeds OUT SEED_FOLDER...
+  /usr/bin/python3 - "$@" <<'PY'
+import os, struct, sys
+out = sys.argv[1]
+os.makedirs(out, exist_ok=True)
+# target (0 a collection, 1 a heap ID), which, offset, mode (0 zeros, 1 0xff, 2 bytes, 3 add),
+# length
+damages = [(0, 0, 16, 0, 64), (0, 0, 24, 1, 64), (1, 0, 0, 1, 4), (1, 1, 4, 0, 8),
+           (0, 1, 32, 3, 8), (1, 2, 12, 2, 4)]
+for folder in sys.argv[2:]:
+    for name in sorted(os.listdir(folder)):
+        with open(os.path.join(folder, name), "rb") as f:
+            data = f.read()
+        for k, (target, which, offset, mode, length) in enumerate(damages):
+            entry = (b"\x20" + struct.pack("<H", 0) + bytes([target]) +
+                     struct.pack("<HHBB", which, offset, mode, length - 1) +
+                     struct.pack("<H", 1) + b"\x01")
+            with open(os.path.join(out, "%s.heap%d" % (name, k)), "wb") as f:
+                f.write(data + entry)
+PY
+}
+heap_seeds "$build/fuzz/seeds/fuzz_run_dataset_reader-heaps" "$dataset_seeds"
+heap_seeds "$build/fuzz/seeds/fuzz_shard_reader-heaps" "$repo/tests/fuzz/seeds/shard_reader"
+
 status=0
 for target in "${targets[@]}"; do
   work="$build/fuzz/$target"
@@ -44,13 +71,13 @@ for target in "${targets[@]}"; do
       seeds=("$repo/datasets/scenarios" "$repo/tests/fuzz/seeds/scenario_loader")
       extra=(-dict="$repo/tests/fuzz/scenario_loader.dict") ;;
     fuzz_run_dataset_reader)
-      seeds=("$dataset_seeds") ;;
+      seeds=("$dataset_seeds" "$build/fuzz/seeds/fuzz_run_dataset_reader-heaps") ;;
     fuzz_study_loader)
       seeds=("$repo/datasets/studies" "$repo/tests/cli/studies" "$repo/tests/cli/bad_studies"
              "$repo/tests/cli/bad_compare_studies" "$repo/tests/fuzz/seeds/study_loader")
       extra=(-dict="$repo/tests/fuzz/study_loader.dict") ;;
     fuzz_shard_reader)
-      seeds=("$repo/tests/fuzz/seeds/shard_reader") ;;
+      seeds=("$repo/tests/fuzz/seeds/shard_reader" "$build/fuzz/seeds/fuzz_shard_reader-heaps") ;;
   esac
   [[ -d "$repo/tests/fuzz/regressions/$target" ]] && seeds+=("$repo/tests/fuzz/regressions/$target")
   echo "fuzz: $target for ${seconds} s (log: $work/fuzz.log)"

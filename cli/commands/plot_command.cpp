@@ -10,6 +10,7 @@
 #include "wpg/datasets/input/input_error.hpp"
 #include "wpg/datasets/storage/input_file.hpp"
 #include "wpg/datasets/storage/output_file.hpp"
+#include "wpg/datasets/storage/stored_strings_check.hpp"
 
 namespace fs = std::filesystem;
 
@@ -21,6 +22,7 @@ int plotCommand(const PlotOptions& options) {
     throw UsageError("cannot read run file '" + options.input + "': no such file");
   }
   datasets::checkInputFile(options.input);  // the script would block in a FIFO
+  datasets::checkStoredStrings(options.input);  // h5py would loop or crash on a damaged heap
   fs::path figure = options.output;
   if (figure.empty()) {
     figure = fs::path(options.input).replace_extension(options.run.empty() ? ".png" : "." + options.run + ".png");

@@ -1,7 +1,7 @@
 // libFuzzer target: the run dataset reader (datasets/run_dataset_reader.hpp), what `wpg replay`
 // and `wpg analyze` read. The input describes the content of a valid HDF5 file (hdf5_image.hpp
 // says why not raw HDF5 bytes); it is written to a temporary file, because the reader opens a
-// path, and read the way the CLI reads it:
+// path, its heap damages applied (heap_damage.hpp), and read the way the CLI reads it:
 //   wpg analyze: listRuns, then readRunDataset of each run;
 //   wpg replay:  readRunDataset of the only run, then its stored scenario through
 //                loadScenarioText with the replay overrides.
@@ -107,6 +107,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   static const std::string robots = std::string(WPG_SOURCE_DIR) + "/robots";
   const wpg_fuzz::FileImage image = wpg_fuzz::decode(data, size, g_max_rows);
   if (!wpg_fuzz::writeHdf5(image, g_path)) propertyViolated("cannot create " + g_path);
+  wpg_fuzz::applyImageDamage(image, g_path);
   readLikeReplay(robots);
   readLikeAnalyze();
   return 0;

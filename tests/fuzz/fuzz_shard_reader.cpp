@@ -1,7 +1,9 @@
 // libFuzzer target: the reader of shard files (datasets/batch_index.hpp), what `wpg merge OUT.h5
 // SHARD...` does: readShardContents of each shard, writeBatchIndex (the checks of every shard's
 // study and summary table, then the index of links or of copies), then readBatchSummary of the
-// index, from which `wpg merge` writes OUT.summary.csv/.md.
+// index, from which `wpg merge` writes OUT.summary.csv/.md; and readComparisonRuns of the
+// first shard, as `wpg view` reads a comparison's study file. The image's heap damages
+// (heap_damage.hpp) are applied to both shards.
 //
 // The input describes the content of a valid HDF5 file (hdf5_image.hpp; why not raw HDF5
 // bytes: README.md), written as two shards in a private folder:
@@ -37,6 +39,7 @@
 #include "wpg/datasets/input/input_error.hpp"
 #include "wpg/datasets/storage/batch_dataset.hpp"
 #include "wpg/datasets/storage/batch_index.hpp"
+#include "wpg/datasets/storage/comparison_runs.hpp"
 
 namespace {
 
@@ -129,6 +132,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const wpg_fuzz::FileImage image = wpg_fuzz::decode(data, size);
   if (!wpg_fuzz::writeHdf5(image, a)) propertyViolated("cannot create " + a);
   if (!wpg_fuzz::writeHdf5(evenRunsOnly(image), b)) propertyViolated("cannot create " + b);
+  wpg_fuzz::applyImageDamage(image, a);
+  wpg_fuzz::applyImageDamage(image, b);
+  // What `wpg view` of a comparison reads of its study file (the comparison file reader).
+  try {
+    (void)wpg::datasets::readComparisonRuns(a);
+  } catch (const wpg::datasets::InputError&) {
+  }
 
   try {
     (void)wpg::datasets::readShardContents(a);

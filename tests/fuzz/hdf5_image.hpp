@@ -14,6 +14,8 @@
 #include <string>
 #include <vector>
 
+#include "heap_damage.hpp"
+
 namespace wpg_fuzz {
 
 // One numeric dataset. Its rows * columns values are `values`, continued when shorter by
@@ -51,13 +53,16 @@ struct AttributeEntry {
 // as a group when missing), or a link at `path`: soft (to `target`, a path in the file) or
 // external (to `target_file`:`target`, whatever file that names: a shard, the other shard, a
 // device).
+// A heap damage (heap_damage.hpp) is applied to the written file, after every object.
 struct Entry {
-  enum class Kind : std::uint8_t { kGroup, kDataset, kAttribute, kSoftLink, kExternalLink } kind =
-      Kind::kGroup;
+  enum class Kind : std::uint8_t {
+    kGroup, kDataset, kAttribute, kSoftLink, kExternalLink, kHeapDamage
+  } kind = Kind::kGroup;
   std::string path;  // absolute, e.g. /runs/walk_forward/com
   ArrayEntry array;
   AttributeEntry attribute;
   std::string target_file, target;  // links
+  HeapDamage damage;
 };
 
 struct FileImage {
@@ -80,6 +85,8 @@ std::vector<std::uint8_t> encode(const FileImage& image);
 // that is not a valid path, a dataset where a group is, ...) are skipped. False when the file
 // itself cannot be created.
 bool writeHdf5(const FileImage& image, const std::string& path);
+// The image's heap damages applied to the file writeHdf5 wrote, in order.
+void applyImageDamage(const FileImage& image, const std::string& path);
 // Reads every group, numeric dataset and attribute of an existing HDF5 file (seeds), with at
 // most `max_rows` rows of each dataset stored explicitly (the rest continued by the step).
 FileImage readHdf5(const std::string& path, std::uint64_t max_rows);

@@ -4,6 +4,7 @@
 #include "wpg/datasets/input/input_error.hpp"
 #include "wpg/datasets/input/yaml_input.hpp"
 #include "wpg/datasets/storage/run_dataset_reader.hpp"
+#include "wpg/datasets/storage/stored_strings_check.hpp"
 #include "wpg/engine/batch_study_run.hpp"
 #include "wpg/engine/comparison_study_run.hpp"
 #include "wpg/engine/stored_runs.hpp"
@@ -63,6 +64,10 @@ void saveRun(const RunSession& run, const std::string& path) {
                                "' is already stored there (wpg.run() gives runs to save)");
   }
   engine::saveRun(run.loaded, run.result, path);
+}
+
+void checkStoredStrings(const std::string& path, const std::string& group) {
+  datasets::checkStoredStrings(path, group);
 }
 
 std::vector<std::string> storedRunNames(const std::string& path) {

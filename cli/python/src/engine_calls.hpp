@@ -46,6 +46,9 @@ void saveRun(const RunSession& run, const std::string& path);
 // checked against its stored scenario, with the metrics `wpg analyze` computes from it.
 std::shared_ptr<RunSession> loadStoredRun(const std::string& path, const std::string& name);
 std::vector<std::string> storedRunNames(const std::string& path);
+// The variable-length strings below `group` of the file checked before h5py reads them
+// (wpg/datasets/storage/stored_strings_check.hpp): HDF5 would hang or crash the interpreter.
+void checkStoredStrings(const std::string& path, const std::string& group);
 
 // Called after each run of a study, on the thread that delivers it; throws to stop the study
 // the way the engine stops on any error while delivering: no new run is handed out, the running

@@ -353,6 +353,7 @@ PYBIND11_MODULE(_wpg, m) {
   m.def("load_run", &loadStoredRun, py::arg("path"), py::arg("name"),
         py::call_guard<py::gil_scoped_release>());
   m.def("run_names", &storedRunNames, py::arg("path"));
+  m.def("check_stored_strings", &checkStoredStrings, py::arg("path"), py::arg("group") = "/");
   m.def("batch",
         [](const std::string& study, const std::string& output, int jobs, bool resume,
            bool figure) {

@@ -51,6 +51,9 @@ def _table(path, group_name):
     analysis_folder()
     import wpg_file_reading as reading
     path = os.fspath(path)
+    # HDF5 loops forever or crashes the interpreter on a damaged global heap: the table's
+    # strings are checked (in C++, with every size bounded) before h5py reads them.
+    _wpg.check_stored_strings(path, "/" + group_name)
     try:
         with reading.open_file(path) as handle:
             reader = reading.Reader(path, handle)

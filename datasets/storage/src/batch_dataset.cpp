@@ -16,6 +16,7 @@
 
 #include "external_link_guard.hpp"
 #include "hdf5_bounded_reading.hpp"
+#include "string_heap_check.hpp"
 #include "hdf5_writing.hpp"
 #include "wpg/datasets/storage/output_file.hpp"
 #include "provenance_attributes.hpp"
@@ -435,12 +436,17 @@ bool isDamagedHdf5File(const std::string& path) {
     // Every object header: a torn write shows as one HDF5 cannot decode.
     if (H5Ovisit(file.getId(), H5_INDEX_NAME, H5_ITER_NATIVE, visitNothing, nullptr) < 0)
       return true;
+    // Every variable-length string's global heap: HDF5 loops forever on a zeroed one, and
+    // aborts on one overwritten (the object headers above are fine then).
+    detail::checkVariableDataUnder(file.openGroup("/"), path);
     // A batch file killed while it was created: its summary table is not complete.
     if (file.attrExists("study_name") &&
         !(file.nameExists("batch") && file.nameExists(kSummaryPath) &&
           file.openGroup(kSummaryPath).nameExists("done")))
       return true;
   } catch (const H5::Exception&) {
+    return true;
+  } catch (const InputError&) {
     return true;
   }
   return false;
@@ -473,7 +479,7 @@ BatchSummaryTable readBatchSummary(const std::string& path) {
       std::vector<std::string> cells;
       const H5T_class_t type = dataset.getTypeClass();
       if (type == H5T_STRING) {
-        cells = detail::readVariableStrings(dataset);
+        cells = detail::readVariableStrings(dataset, path, "dataset " + where);
       } else if (type == H5T_FLOAT) {
         std::vector<double> values(rows);
         dataset.read(values.data(), H5::PredType::NATIVE_DOUBLE);

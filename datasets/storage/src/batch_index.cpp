@@ -19,6 +19,7 @@
 #include <sys/resource.h>
 
 #include "hdf5_bounded_reading.hpp"
+#include "string_heap_check.hpp"
 #include "hdf5_writing.hpp"
 #include "wpg/datasets/input/input_error.hpp"
 #include "wpg/datasets/input/input_limits.hpp"
@@ -182,7 +183,10 @@ ShardContents readShardContents(const std::string& path) {
                          std::to_string(rows) + " values");
       }
     }
-    const std::vector<std::string> names = detail::readVariableStrings(name);
+    // Then every string of the shard, once: merge copies its groups (H5Ocopy reads their strings)
+    // and --resume its names; HDF5 would loop or crash on a damaged heap.
+    detail::checkVariableDataUnder(file.openGroup("/"), path);
+    const std::vector<std::string> names = detail::readVariableStrings(name, path, "dataset /batch/summary/name");
     std::vector<unsigned char> flags(names.size());
     if (done.getSpace().getSimpleExtentNpoints() != static_cast<hssize_t>(names.size())) {
       throw InputError(path + ": /batch/summary/done and name have different lengths");
@@ -310,7 +314,8 @@ IndexReport writeBatchIndex(const std::string& output, const std::vector<std::st
         if (H5Ocopy(source.getId(), "batch", index.getId(), "batch", H5P_DEFAULT, H5P_DEFAULT) < 0) {
           throw H5::Exception("H5Ocopy", "cannot copy /batch from " + first.path);
         }
-        names = detail::readVariableStrings(source.openDataSet(std::string(kSummaryPath) + "/name"));
+        names = detail::readVariableStrings(source.openDataSet(std::string(kSummaryPath) + "/name"),
+                                            first.path, "dataset /batch/summary/name");
       }
       // The result columns: `done` and every column after it (batch_dataset.cpp's order).
       const auto done_column = std::find(first_columns.begin(), first_columns.end(), "done");

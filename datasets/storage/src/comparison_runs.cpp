@@ -59,7 +59,7 @@ std::vector<std::string> strings(const H5::Group& group, const std::string& name
     throw InputError(path + ": dataset /" + where + ": expected " + std::to_string(expected) +
                      " strings");
   }
-  return detail::readVariableStrings(dataset);
+  return detail::readVariableStrings(dataset, path, "dataset /" + where);
 }
 
 }  // namespace

@@ -20,6 +20,7 @@
 #include "external_link_guard.hpp"
 
 #include "hdf5_bounded_reading.hpp"
+#include "string_heap_check.hpp"
 #include "wpg/datasets/storage/read_limits.hpp"
 #include "wpg/datasets/storage/run_dataset.hpp"
 
@@ -113,11 +114,13 @@ Field readField(const H5::DataType& file_type, const H5::DataSpace& space,
 }
 
 Field readDataset(const H5::DataSet& dataset, const FieldPlace& place) {
+  detail::checkVariableData(dataset, place.file, place.what);  // before HDF5 reads a heap
   return readField(dataset.getDataType(), dataset.getSpace(), place,
                    [&](void* buffer, const H5::DataType& type) { dataset.read(buffer, type); });
 }
 
 Field readAttribute(const H5::Attribute& attribute, const FieldPlace& place) {
+  detail::checkVariableData(attribute, place.file, place.what);
   return readField(attribute.getDataType(), attribute.getSpace(), place,
                    [&](void* buffer, const H5::DataType& type) { attribute.read(type, buffer); });
 }

@@ -4,6 +4,7 @@
 #include "wpg/datasets/input/input_error.hpp"
 #include "wpg/datasets/storage/input_file.hpp"
 #include "wpg/datasets/storage/read_limits.hpp"
+#include "string_heap_check.hpp"
 
 namespace wpg::datasets::detail {
 
@@ -87,6 +88,10 @@ std::string readStringAttribute(const H5::H5Object& object, const std::string& n
                    std::to_string(type.getSize()) + " bytes: expected at most " +
                    std::to_string(kMaxReadBytes));
   }
+  // A variable-length one through its pointer: the C++ API's read into a std::string calls
+  // strlen on it, and a null string (a heap ID of address 0) is a null pointer (found by
+  // fuzz_shard_reader's heap damage).
+  if (type.isVariableStr()) return readVariableStrings(attribute, file, "attribute " + where + name)[0];
   std::string value;
   attribute.read(type, value);
   return value;
@@ -104,12 +109,14 @@ double readNumberAttribute(const H5::H5Object& object, const std::string& name,
 namespace {
 
 // HDF5 hands variable-length strings over as pointers it allocated; they are copied, then
-// reclaimed. `read` reads into the pointers with the given memory type.
+// reclaimed. `read` reads into the pointers with the given memory type, of the stored
+// strings' character set (HDF5 converts none into another: ASCII strings read as UTF-8 fail).
 template <typename Read>
-std::vector<std::string> copyVariableStrings(const H5::DataSpace& space, Read read) {
+std::vector<std::string> copyVariableStrings(const H5::DataSpace& space, H5T_cset_t cset,
+                                             Read read) {
   const std::size_t count = static_cast<std::size_t>(space.getSimpleExtentNpoints());
   H5::StrType type(H5::PredType::C_S1, H5T_VARIABLE);
-  type.setCset(H5T_CSET_UTF8);
+  type.setCset(cset == H5T_CSET_ASCII ? H5T_CSET_ASCII : H5T_CSET_UTF8);
   std::vector<char*> pointers(count, nullptr);
   if (count > 0) read(type, pointers.data());
   std::vector<std::string> values;
@@ -121,16 +128,22 @@ std::vector<std::string> copyVariableStrings(const H5::DataSpace& space, Read re
 
 }  // namespace
 
-std::vector<std::string> readVariableStrings(const H5::DataSet& dataset) {
-  return copyVariableStrings(dataset.getSpace(), [&](const H5::StrType& type, char** pointers) {
-    dataset.read(pointers, type);
-  });
+std::vector<std::string> readVariableStrings(const H5::DataSet& dataset, const std::string& file,
+                                             const std::string& what) {
+  checkVariableData(dataset, file, what);
+  return copyVariableStrings(dataset.getSpace(), H5Tget_cset(dataset.getDataType().getId()),
+                             [&](const H5::StrType& type, char** pointers) {
+                               dataset.read(pointers, type);
+                             });
 }
 
-std::vector<std::string> readVariableStrings(const H5::Attribute& attribute) {
-  return copyVariableStrings(attribute.getSpace(), [&](const H5::StrType& type, char** pointers) {
-    attribute.read(type, pointers);
-  });
+std::vector<std::string> readVariableStrings(const H5::Attribute& attribute,
+                                             const std::string& file, const std::string& what) {
+  checkVariableData(attribute, file, what);
+  return copyVariableStrings(attribute.getSpace(), H5Tget_cset(attribute.getDataType().getId()),
+                             [&](const H5::StrType& type, char** pointers) {
+                               attribute.read(type, pointers);
+                             });
 }
 
 std::vector<std::string> readStringListAttribute(const H5::H5Object& object,
@@ -145,7 +158,7 @@ std::vector<std::string> readStringListAttribute(const H5::H5Object& object,
       boundedExtent(space, sizeof(char*), kMaxReadElements, file, what);
   if (dims.size() > 1) fail(file, what + ": expected a list of strings, got a " +
                                       std::to_string(dims.size()) + "-D array");
-  return readVariableStrings(attribute);
+  return readVariableStrings(attribute, file, what);
 }
 
 }  // namespace wpg::datasets::detail

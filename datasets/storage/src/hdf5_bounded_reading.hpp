@@ -24,8 +24,8 @@ std::vector<hsize_t> boundedExtent(const H5::DataSpace& space, std::size_t eleme
                                    std::uint64_t max_elements, const std::string& file,
                                    const std::string& what);
 
-// The string attribute `name` of `object` (one element, of a string type). `where` prefixes the
-// name in messages ("/runs/x:", "/:").
+// The string attribute `name` of `object` (one element, of a string type; a variable-length
+// one's global heap checked first). `where` prefixes the name in messages ("/runs/x:", "/:").
 std::string readStringAttribute(const H5::H5Object& object, const std::string& name,
                                 const std::string& file, const std::string& where);
 
@@ -34,9 +34,13 @@ double readNumberAttribute(const H5::H5Object& object, const std::string& name,
                            const std::string& file, const std::string& where);
 
 // Every element of a dataset or attribute of variable-length strings, read as UTF-8. The caller
-// has bounded its extent (boundedExtent): this allocates one pointer per element.
-std::vector<std::string> readVariableStrings(const H5::DataSet& dataset);
-std::vector<std::string> readVariableStrings(const H5::Attribute& attribute);
+// has bounded its extent (boundedExtent): this allocates one pointer per element. The strings'
+// global heaps are checked first (string_heap_check.hpp); `what` names the dataset or
+// attribute in messages.
+std::vector<std::string> readVariableStrings(const H5::DataSet& dataset, const std::string& file,
+                                             const std::string& what);
+std::vector<std::string> readVariableStrings(const H5::Attribute& attribute,
+                                             const std::string& file, const std::string& what);
 
 // The string-list attribute `name` (scalar or 1-D, of variable-length strings), bounded.
 std::vector<std::string> readStringListAttribute(const H5::H5Object& object,

@@ -208,18 +208,26 @@ StoredRun readFile(const std::string& path, const std::string& run_name) {
     throw InputError(path + ": no group /runs (not a run dataset?)");
   }
   const H5::Group runs = file.openGroup("runs");
-  const std::vector<std::string> names = runGroupNames(runs);
-  std::string all;  // for messages: the first names
-  for (std::size_t i = 0; i < names.size() && i < 10; ++i) all += (i ? ", " : "") + names[i];
-  if (names.size() > 10) all += ", ...";
+  // The runs are listed only when no run is named, or for the message when the named one is
+  // missing: a study's reader reads each of its N runs by name, and listing N runs at each
+  // read made reading a study quadratic (2000 runs: 117 s for `wpg analyze`).
+  const auto first_names = [&](const std::vector<std::string>& names) {
+    std::string all;
+    for (std::size_t i = 0; i < names.size() && i < 10; ++i) all += (i ? ", " : "") + names[i];
+    if (names.size() > 10) all += ", ...";
+    return all;
+  };
   if (run_name.empty()) {
+    const std::vector<std::string> names = runGroupNames(runs);
     if (names.size() != 1) {
+      const std::string all = first_names(names);
       throw InputError(path + ": expected one run under /runs, got " +
                        std::to_string(names.size()) + (all.empty() ? "" : " (" + all + ")"));
     }
     stored.name = names.front();
   } else {
     if (!runs.nameExists(run_name) || runs.childObjType(run_name) != H5O_TYPE_GROUP) {
+      const std::string all = first_names(runGroupNames(runs));
       throw InputError(path + ": no run /runs/" + run_name + " (runs: " +
                        (all.empty() ? std::string("none") : all) + ")");
     }

@@ -1,0 +1,28 @@
+#pragma once
+// Variable-length data checked before HDF5 reads it: the one place every reader of this
+// library goes through before it reads a variable-length string (hdf5_bounded_reading.cpp,
+// dataset_diff.cpp), and the whole-file check of `wpg plot`, the package's tables and the
+// damage check of `--resume`. The heap IDs are found in the file's bytes (a contiguous
+// dataset's data; an attribute's message in its object's header) and checked against their
+// global heap collections (global_heap_check.hpp). Failures are InputError, one line:
+// "FILE: <what>: damaged variable-length data (<why>)".
+#include <string>
+
+#include <H5Cpp.h>
+
+namespace wpg::datasets::detail {
+
+// The elements of `dataset`, when its type is variable-length (a string or a sequence).
+// `what` names it in messages ("dataset /batch/summary/name").
+void checkVariableData(const H5::DataSet& dataset, const std::string& file,
+                       const std::string& what);
+
+// The attribute `attribute`'s elements likewise, found in its object's header.
+void checkVariableData(const H5::Attribute& attribute, const std::string& file,
+                       const std::string& what);
+
+// Every variable-length attribute and dataset of the objects below `group` (hard links), and
+// of the objects its external links lead to (through the link guard, external_link_guard.hpp).
+void checkVariableDataUnder(const H5::Group& group, const std::string& file);
+
+}  // namespace wpg::datasets::detail
