@@ -21,6 +21,16 @@ const double kRadius = 0.63;      // grown circle [m]
 const double kClearance = 0.3;    // CoM from the border [m]
 const Vector2d kForward(0.2, 0.0);
 
+// The circle of kCenter, R 0.25 m, margin 0.25 m: kRadius once grown with parameters whose
+// obstacle_foot_radius is kRadius - 0.5.
+wpg::Obstacle kCircle() {
+  wpg::Obstacle circle;
+  circle.center = kCenter;
+  circle.radius = 0.25;
+  circle.margin = 0.25;
+  return circle;
+}
+
 // cos and sin of a heading of 0 for `n` samples.
 std::pair<Eigen::VectorXd, Eigen::VectorXd> straight(int n) {
   return {Eigen::VectorXd::Ones(n), Eigen::VectorXd::Zero(n)};
@@ -134,12 +144,8 @@ TEST(ObstacleTangent, GaitSidewaysSpeedIsThePolygonsLateralReachPerGaitCycle) {
 // recomputed beside the advancing CoM would recede in front of it) until the CoM crosses it;
 // moving to the passing side, the border turns towards the command.
 TEST(ObstacleTangent, SelectorBorderOnlyTurnsTowardsTheCommand) {
-  wpg::Obstacle obstacle;
-  obstacle.center = kCenter;
-  obstacle.radius = 0.25;
-  obstacle.margin = 0.25;
   wpg::ObstacleSelector selector;
-  selector.set({obstacle});
+  selector.set({kCircle()});
   Eigen::VectorXi slots(1);
   Eigen::Matrix2Xd normals(2, 1);
   Eigen::VectorXd offsets(1);
@@ -487,12 +493,8 @@ TEST(ObstacleTangent, SelectorGroupKeepsItsFirstMember) {
 // forward while it walks along a slanted border, the robot must land beyond that border: the
 // landing's row allows it where the obstacle is not.
 TEST(ObstacleTangent, LandingRowFacesThePlannedLanding) {
-  wpg::Obstacle obstacle;
-  obstacle.center = kCenter;
-  obstacle.radius = 0.25;
-  obstacle.margin = 0.25;
   wpg::ObstacleSelector selector;
-  selector.set({obstacle});
+  selector.set({kCircle()});
   wpg::WalkingParameters parameters;
   parameters.obstacle_foot_radius = kRadius - 0.5;
   Eigen::VectorXi slots(2);
