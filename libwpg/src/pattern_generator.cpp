@@ -254,10 +254,18 @@ void PatternGenerator::placeObstacles(const Eigen::Vector3d& command) {
                                   com_y_(0) + com_y_(1) / omega0_);
     const Eigen::Vector2d at_landing =
         support + (capture - support) * std::exp(omega0_ * problem_->landing_time_left);
-    obstacles_.landingRows(plannedStep(0).head<2>(), w, problem_->obstacle_slot,
-                           problem_->obstacle_landing_normal, problem_->obstacle_landing_offset);
-    for (int k = 0; k < problem_->obstacle_slot.size(); ++k) {
-      if (problem_->obstacle_normal.col(k).dot(at_landing) >= problem_->obstacle_offset(k)) {
+    // Beyond a border: n.xi < offset (an empty slot's zero row never holds it out).
+    const auto beyond = [&](int k) {
+      return problem_->obstacle_normal.col(k).dot(at_landing) < problem_->obstacle_offset(k);
+    };
+    bool any_beyond = false;
+    for (int k = 0; k < problem_->obstacle_slot.size(); ++k) any_beyond = any_beyond || beyond(k);
+    if (any_beyond) {  // the common sample (no push) computes no landing row at all
+      obstacles_.landingRows(plannedStep(0).head<2>(), w, problem_->obstacle_slot,
+                             problem_->obstacle_landing_normal,
+                             problem_->obstacle_landing_offset);
+      for (int k = 0; k < problem_->obstacle_slot.size(); ++k) {
+        if (beyond(k)) continue;
         problem_->obstacle_landing_normal.col(k).setZero();
         problem_->obstacle_landing_offset(k) = 0.0;
       }
