@@ -56,6 +56,7 @@ PatternGenerator::PatternGenerator(const WalkingParameters& parameters,
         c == 0 ? parameters : parameters.withSingleSupport(parameters.cadenceSingleSupport(c)),
         settings, extra_families, *hessian_factors_));
   }
+  border_room_.setZero(cadences_.front()->problem.obstacle_offset.size());
   reset();
 }
 
@@ -274,8 +275,13 @@ void PatternGenerator::placeObstacles(const Eigen::Vector3d& command) {
   // Sideways no faster than the gait walks (in the robot's frame, where its reach is), or
   // than the command itself asks.
   const double sideways_limit = std::max(w.gaitSidewaysSpeed(), std::abs(command.y()));
+  const Eigen::Vector2d com(com_x_(0), com_y_(0));
+  border_room_.resize(problem_->obstacle_offset.size());  // the same size every sample
+  for (int k = 0; k < border_room_.size(); ++k)
+    border_room_(k) = problem_->obstacle_normal.col(k).dot(com) - problem_->obstacle_offset(k);
   turnReferenceAlongBorders(problem_->obstacle_normal, obstacles_.slides(),
                             references_.headingCos(), references_.headingSin(), sideways_limit,
+                            border_room_, w.horizon_length * w.sampling_period,
                             problem_->velocity_x, problem_->velocity_y);
 }
 

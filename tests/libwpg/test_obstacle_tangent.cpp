@@ -44,6 +44,11 @@ Eigen::Matrix2Xd slidesFor(const Eigen::Matrix2Xd& normals, int side) {
   return slides;
 }
 
+// No room inside any border: a direction counts only if it drives into none.
+Eigen::VectorXd noRoom(const Eigen::Matrix2Xd& normals) {
+  return Eigen::VectorXd::Zero(normals.cols());
+}
+
 // A circle's border: its centre, grown by kRadius.
 Vector2d circleBorder(const Vector2d& com, const Vector2d& direction, int side) {
   return wpg::borderNormal({kCenter}, kRadius, com, direction, side, kClearance,
@@ -101,11 +106,39 @@ TEST(ObstacleTangent, ReferenceIntoABorderSlidesAlongItAtTheCommandedSpeed) {
   Eigen::VectorXd vx = Eigen::VectorXd::Constant(3, 0.2), vy = Eigen::VectorXd::Zero(3);
   vx(2) = -0.2;  // moving away from the border: unchanged
   const auto heading = straight(3);
-  wpg::turnReferenceAlongBorders(normals, slidesFor(normals, +1), heading.first, heading.second, 0.0, vx, vy);
+  wpg::turnReferenceAlongBorders(normals, slidesFor(normals, +1), heading.first, heading.second, 0.0, noRoom(normals), 1.6, vx, vy);
   EXPECT_NEAR(vx(0), 0.2 / std::sqrt(2.0), 1e-12);
   EXPECT_NEAR(vy(0), 0.2 / std::sqrt(2.0), 1e-12);
   EXPECT_NEAR(vx(2), -0.2, 1e-12);
   EXPECT_NEAR(vy(2), 0.0, 1e-12);
+}
+
+// The gap between two obstacles crossed at a slant (a slalom's circles 1 m apart, +-0.4 m): the
+// borders nearly face each other (normals 177.5 degrees apart) across a strip 0.31 m wide that
+// narrows far ahead. The command drives into the near one; along it, the reference drives
+// slightly into the far one, so the cone of directions is empty; but walked for the preview
+// (0.2 m/s for 1.6 s) the CoM, 0.28 m inside that far border, stays clear of it: the reference
+// turns along the strip. With no room inside the far border it stays as it is.
+TEST(ObstacleTangent, ReferenceFollowsAStripWhoseBordersMeetBeyondThePreview) {
+  Eigen::Matrix2Xd normals(2, 2);
+  normals.col(0) = Vector2d(-0.670, 0.742).normalized();  // the near border, driven into
+  normals.col(1) = Vector2d(0.649, -0.760).normalized();  // the far one, across the strip
+  const Vector2d along = Vector2d(normals(1, 0), -normals(0, 0));  // the near border's tangent
+  ASSERT_LT(normals.col(1).dot(along), 0.0);  // along the near border into the far one
+  Eigen::VectorXd room(2);
+  room << 0.03, 0.28;
+  Eigen::VectorXd vx = Eigen::VectorXd::Constant(2, 0.2), vy = Eigen::VectorXd::Zero(2);
+  wpg::turnReferenceAlongBorders(normals, slidesFor(normals, +1), straight(2).first,
+                                 straight(2).second, 0.0, room, 1.6, vx, vy);
+  const Vector2d turned(vx(0), vy(0));
+  EXPECT_NEAR(turned.norm(), 0.2, 1e-12);
+  EXPECT_NEAR(turned.normalized().dot(along), 1.0, 1e-12);
+  vx.setConstant(0.2);
+  vy.setZero();
+  wpg::turnReferenceAlongBorders(normals, slidesFor(normals, +1), straight(2).first,
+                                 straight(2).second, 0.0, noRoom(normals), 1.6, vx, vy);
+  EXPECT_EQ(vx(0), 0.2);
+  EXPECT_EQ(vy(0), 0.0);
 }
 
 // Along a border at 45 degrees to a 0.3 m/s command the turned reference would cross the
@@ -118,7 +151,7 @@ TEST(ObstacleTangent, ReferenceAlongABorderCrossesTheCommandNoFasterThanTheGaitW
   normals.col(0) = Vector2d(-1.0, 1.0).normalized();
   Eigen::VectorXd vx = Eigen::VectorXd::Constant(2, 0.3), vy = Eigen::VectorXd::Zero(2);
   vx(1) = -0.3;
-  wpg::turnReferenceAlongBorders(normals, slidesFor(normals, +1), straight(2).first, straight(2).second, 0.125, vx, vy);
+  wpg::turnReferenceAlongBorders(normals, slidesFor(normals, +1), straight(2).first, straight(2).second, 0.125, noRoom(normals), 1.6, vx, vy);
   EXPECT_NEAR(vy(0), 0.125, 1e-12);
   EXPECT_NEAR(vx(0), 0.125, 1e-12);  // along the border
   EXPECT_NEAR(vx(1), -0.3, 1e-12);
@@ -126,7 +159,7 @@ TEST(ObstacleTangent, ReferenceAlongABorderCrossesTheCommandNoFasterThanTheGaitW
   normals.col(0) = Vector2d(-0.5, std::sqrt(3.0) / 2.0);  // the border 30 degrees off +x
   vx.setConstant(0.2);
   vy.setZero();
-  wpg::turnReferenceAlongBorders(normals, slidesFor(normals, +1), straight(2).first, straight(2).second, 0.125, vx, vy);
+  wpg::turnReferenceAlongBorders(normals, slidesFor(normals, +1), straight(2).first, straight(2).second, 0.125, noRoom(normals), 1.6, vx, vy);
   EXPECT_NEAR(std::hypot(vx(0), vy(0)), 0.2, 1e-12);
   EXPECT_NEAR(vy(0), 0.1, 1e-12);
 }
@@ -275,7 +308,7 @@ TEST(ObstacleTangent, ReferenceBetweenTwoBordersSlidesAlongTheCorridor) {
   normals.col(2).setZero();  // an empty slot
   Eigen::VectorXd vx = Eigen::VectorXd::Constant(1, 0.2), vy = Eigen::VectorXd::Zero(1);
   const auto heading = straight(1);
-  wpg::turnReferenceAlongBorders(normals, slidesFor(normals, +1), heading.first, heading.second, 0.0, vx, vy);
+  wpg::turnReferenceAlongBorders(normals, slidesFor(normals, +1), heading.first, heading.second, 0.0, noRoom(normals), 1.6, vx, vy);
   EXPECT_NEAR(vx(0), 0.2 * along.x(), 1e-12);
   EXPECT_NEAR(vy(0), 0.2 * along.y(), 1e-12);
   // a wedge whose every direction is more than a right angle from the reference: unchanged
@@ -283,7 +316,7 @@ TEST(ObstacleTangent, ReferenceBetweenTwoBordersSlidesAlongTheCorridor) {
   normals.col(1) = Vector2d(-1.0, -0.2).normalized();
   vx(0) = 0.2;
   vy(0) = 0.0;
-  wpg::turnReferenceAlongBorders(normals, slidesFor(normals, +1), heading.first, heading.second, 0.0, vx, vy);
+  wpg::turnReferenceAlongBorders(normals, slidesFor(normals, +1), heading.first, heading.second, 0.0, noRoom(normals), 1.6, vx, vy);
   EXPECT_EQ(vx(0), 0.2);
   EXPECT_EQ(vy(0), 0.0);
 }
@@ -298,7 +331,7 @@ TEST(ObstacleTangent, ReferenceSquareIntoABorderSlidesTowardsThePassingSide) {
   for (int side : {+1, -1}) {
     Eigen::VectorXd vx = Eigen::VectorXd::Constant(1, 0.2), vy = Eigen::VectorXd::Zero(1);
     wpg::turnReferenceAlongBorders(normals, slidesFor(normals, side), heading.first,
-                                   heading.second, 0.125, vx, vy);
+                                   heading.second, 0.125, noRoom(normals), 1.6, vx, vy);
     EXPECT_NEAR(vx(0), 0.0, 1e-12);
     EXPECT_NEAR(vy(0), side * 0.125, 1e-12);
   }
@@ -313,7 +346,7 @@ TEST(ObstacleTangent, SidewaysLimitIsAcrossTheRobotsHeading) {
   normals.col(0) = Vector2d(1.0, -1.0).normalized();  // a border across the way ahead
   Eigen::VectorXd vx = Eigen::VectorXd::Zero(1), vy = Eigen::VectorXd::Constant(1, 0.3);
   const Eigen::VectorXd c = Eigen::VectorXd::Zero(1), s = Eigen::VectorXd::Ones(1);  // h = pi/2
-  wpg::turnReferenceAlongBorders(normals, slidesFor(normals, +1), c, s, 0.125, vx, vy);
+  wpg::turnReferenceAlongBorders(normals, slidesFor(normals, +1), c, s, 0.125, noRoom(normals), 1.6, vx, vy);
   EXPECT_NEAR(std::abs(vx(0)), 0.125, 1e-12);
   EXPECT_NEAR(vy(0), 0.125, 1e-12);
 }

@@ -114,12 +114,17 @@ double coreDistance(const std::vector<Eigen::Vector2d>& a, const std::vector<Eig
 // gaitSidewaysSpeed), in the robot's frame, and forward much faster; asked for more along a
 // steep border, the QP lengthens the outward step, which the polygon's slanted edges pay for in
 // sideways reach, and the robot slides slower (docs/obstacle_passing.md, "Sliding along a steep
-// border"). Does not allocate.
+// border"). When no direction along the borders drives into none of the others (two borders
+// nearly facing each other across a strip that narrows far ahead), a direction counts that
+// reaches none of them within the preview: room(k) [m] is how far the CoM is inside border k,
+// walked at the reference's speed for `preview_time` [s]. Does not allocate.
 void turnReferenceAlongBorders(const Eigen::Ref<const Eigen::Matrix2Xd>& normals,
                                const Eigen::Ref<const Eigen::Matrix2Xd>& slides,
                                const Eigen::Ref<const Eigen::VectorXd>& heading_cos,
                                const Eigen::Ref<const Eigen::VectorXd>& heading_sin,
-                               double max_sideways_speed, Eigen::Ref<Eigen::VectorXd> velocity_x,
+                               double max_sideways_speed,
+                               const Eigen::Ref<const Eigen::VectorXd>& room,
+                               double preview_time, Eigen::Ref<Eigen::VectorXd> velocity_x,
                                Eigen::Ref<Eigen::VectorXd> velocity_y);
 
 }  // namespace wpg

@@ -174,6 +174,8 @@ class PatternGenerator {
   // before the first of a walk), for the push step's jump.
   double previous_capture_offset_ = std::numeric_limits<double>::quiet_NaN();
   ObstacleSelector obstacles_;
+  // How far inside each border of the sample the CoM is [m] (turnReferenceAlongBorders).
+  Eigen::VectorXd border_room_;
   SamplePlan plan_;
   MpcIterationLog log_;
   NmpcSolveResult last_solve_;
