@@ -59,7 +59,7 @@ from run_figure.styles import (COM_COLOUR, DEFAULT_FOOT_LENGTH,  # noqa: E402
                                DEFAULT_FOOT_WIDTH, LEFT_COLOUR, RIGHT_COLOUR)
 from run_figure.top_view import draw_obstacles  # noqa: E402
 from scene_passage import (ARC_SEGMENTS, DEFAULT_FOOT_RADIUS,  # noqa: E402,F401
-                           HRP2_FEASIBILITY, HRP2_MAX_STEP_YAW_CHANGE, MIN_STEP_WIDTH,
+                           HRP2_FEASIBILITY, MIN_STEP_WIDTH,
                            CommandPath, analyse_scene, grown_polygon, least_step_width,
                            shortest_path)
 from wpg_file_reading import (BadFile, Reader, import_h5py, open_file,  # noqa: E402
@@ -121,9 +121,7 @@ def scene_walking(scenario):
     if isinstance(xs, list) and isinstance(ys, list) and len(xs) == len(ys) and xs and \
             all(_number(v, -math.inf) for v in xs) and all(_number(v, -math.inf) for v in ys):
         feasibility = tuple(zip((float(v) for v in xs), (float(v) for v in ys)))
-    yaw = walking.get("max_step_yaw_change")
-    yaw = float(yaw) if _number(yaw) else HRP2_MAX_STEP_YAW_CHANGE
-    return radius, least_step_width(feasibility, yaw)
+    return radius, least_step_width(feasibility)
 
 
 def scene_command(scenario):

@@ -5,7 +5,7 @@ classifies the walks of docs/obstacle_scenes.md by it; tests/analysis/test_obsta
 Is there a passage? In the plane of the CoM: a step centre keeps margin + obstacle_foot_radius
 from each obstacle (the NMPC's bound; the radius from the stored walking map, else HRP-2's
 0.1287 m), and two consecutive feet stand at least the minimal step width apart across the
-command (least_step_width: 0.1755 m for HRP-2), so the CoM between them needs margin +
+command (least_step_width: 0.2 m for HRP-2), so the CoM between them needs margin +
 obstacle_foot_radius + half that from every obstacle. Each obstacle grown by that much is a
 convex polygon (its edges moved out exactly, the corners' arcs and circles as polygons
 circumscribed about them in pieces of at most 2 pi / ARC_SEGMENTS: at most 1/cos(pi/64) - 1 =
@@ -28,7 +28,6 @@ import numpy as np
 # inner edge, y = 0.2 m from x = -0.28 to 0.28 m, is how close beside the support foot a step
 # lands) and yaw bound (eq. 16), robots/hrp2/walking.yaml, for a stored scenario without them.
 HRP2_FEASIBILITY = ((-0.28, 0.2), (-0.2, 0.3), (0.0, 0.4), (0.2, 0.3), (0.28, 0.2))  # [m]
-HRP2_MAX_STEP_YAW_CHANGE = 0.17  # [rad]
 # HRP-2's sole half diagonal, walking.obstacle_foot_radius, for a stored scenario without it.
 DEFAULT_FOOT_RADIUS = 0.1287  # [m]
 # Circles and rounded corners: polygons of this many sides about the full circle (a multiple of
@@ -43,22 +42,21 @@ BEHIND = 0.5  # [m]
 EPS = 1e-7  # [m]
 
 
-def least_step_width(feasibility, max_step_yaw_change):
-    """The least distance across its heading between two consecutive feet of a robot that
-    faces its command: a step lands in the feasibility polygon of the support foot's frame
-    (eq. 14), 0.2 m beside it at least for HRP-2, but the feet may toe in and out in turn by
-    half the yaw bound (eq. 16), which turns the polygon: its corner (0.28, 0.2) then lies
-    0.2 cos(0.085) - 0.28 sin(0.085) = 0.1755 m across for HRP-2 (side by side, a doorway
-    needs 0.2 + 2 (margin 0.2 + 0.1287) = 0.857 m; docs/obstacle_scenes.md; libwpg's
-    WalkingParameters::leastStepWidth is the same bound). Turned sideways,
-    a robot would need no width at all: the command's heading, which J2 holds, rules that out."""
-    half = 0.5 * max_step_yaw_change
-    return min(abs(y) * math.cos(half) - abs(x) * math.sin(half) for x, y in feasibility)
+def least_step_width(feasibility):
+    """The least distance across its heading between two consecutive feet of the walk the
+    generator plans: its feet face the command's heading (J2 keeps them along it), so a step
+    lands at least the feasibility polygon's nearest vertex across (eq. 14), min |y|: 0.2 m for
+    HRP-2, its minimal step width, and a doorway needs 0.2 + 2 (margin 0.2 + 0.1287) = 0.857 m
+    (libwpg's WalkingParameters::leastStepWidth is the same bound). Feet toed in and out in turn
+    by half the yaw bound (eq. 16) could come 0.2 cos(0.085) - 0.28 sin(0.085) = 0.1755 m close
+    (a doorway of 0.833 m), a gait the NMPC does not plan (docs/obstacle_scenes.md). Turned
+    sideways, a robot would need no width at all: the command's heading rules that out."""
+    return min(abs(y) for _, y in feasibility)
 
 
 # The minimal step width: the least distance across the command between two consecutive feet of
-# HRP-2 facing its command, 0.1755 m (0.2 m side by side).
-MIN_STEP_WIDTH = least_step_width(HRP2_FEASIBILITY, HRP2_MAX_STEP_YAW_CHANGE)  # [m]
+# HRP-2 facing its command, 0.2 m.
+MIN_STEP_WIDTH = least_step_width(HRP2_FEASIBILITY)  # [m]
 
 
 def _arc_points(centre, radius, start, sweep):

@@ -57,7 +57,7 @@ void ObstacleSelector::borderNormals(const Eigen::Vector2d& com,
                                      const Eigen::Vector2d& feet_middle,
                                      const Eigen::Vector2d& direction,
                                      const WalkingParameters& parameters, double clearance,
-                                     Eigen::Ref<Eigen::VectorXi> slots,
+                                     double max_detour, Eigen::Ref<Eigen::VectorXi> slots,
                                      Eigen::Ref<Eigen::Matrix2Xd> normals,
                                      Eigen::Ref<Eigen::VectorXd> offsets) {
   normals.setZero();
@@ -190,29 +190,46 @@ void ObstacleSelector::borderNormals(const Eigen::Vector2d& com,
     };
     // How far inside the free side of the border of n the CoM is.
     const auto comInside = [&](const Eigen::Vector2d& n) { return n.dot(com) - offsetOf(n); };
-    // A border turned from a route point ahead must leave the robot where it is with room for a
-    // step (half the clearance) on its free side; else it is turned from the CoM.
-    Eigen::Vector2d candidate = borderFrom(from);
-    if (after_another && comInside(candidate) < 0.5 * clearance) candidate = borderFrom(com);
-    // The border only ever turns towards the command (a ratchet): recomputed beside a CoM that
-    // walked straight on, it would recede in front of the robot at every sample, and the robot
-    // would walk up to the obstacle instead of sliding along the border. A kept border is given
-    // up once the CoM has crossed it, or, for a border turned from the way round another
-    // obstacle (a forecast of where the robot will be), once the CoM comes closer to it than
-    // the clearance. Measured on obstacle_scenes.yaml and obstacle_passing.yaml (with the sides
-    // of an earlier version, taken from the route points): given up at half the clearance for
-    // every border, the robot slid slower (the obstacle dead ahead met at 1 m at 0.2 m/s passed
-    // 0.6 s over the 10 s allowed; 292 scenes correct); only once crossed, for every border, a
-    // border kept from the way round the first circle of a slalom was crossed by a CoM that
-    // hugged that circle, and the sudden new border made the robot fall (300 correct, 10
-    // failed); as here, 304 correct, 4 failed, 540 of 540 passed.
-    const double keep = after_another ? clearance : 0.0;
-    if (fresh || comInside(normal_[index]) < keep ||
-        borderProgress(candidate, d, side) >= borderProgress(normal_[index], d, side))
-      normal_[index] = candidate;
+    // The way round on the passing side: further aside of the CoM than max_detour, the
+    // obstacle is a wall for a velocity command (a 6 m wall across the path at 0.1 m/s was
+    // slid along for 3.3 m and passed round its end after 53-68 s; docs/obstacle_scenes.md).
+    // Its border faces the CoM (the paper's linearization at the CoM), with no slide: J1's
+    // reference keeps its own part along it (turnReferenceAlongBorders), and the robot stops.
+    const Eigen::Vector2d out = side * left;
+    const bool wall = !passed && offsetOf(out) - out.dot(com) + clearance > max_detour;
+    if (wall) {
+      Eigen::Vector2d facing;
+      if (grouped) {
+        facing = hullFacing(group_points_, group_radii_, com);
+      } else {
+        obstacles_.signedDistance(index, com, &facing);
+      }
+      normal_[index] = facing;
+    } else {
+      // A border turned from a route point ahead must leave the robot where it is with room for a
+      // step (half the clearance) on its free side; else it is turned from the CoM.
+      Eigen::Vector2d candidate = borderFrom(from);
+      if (after_another && comInside(candidate) < 0.5 * clearance) candidate = borderFrom(com);
+      // The border only ever turns towards the command (a ratchet): recomputed beside a CoM that
+      // walked straight on, it would recede in front of the robot at every sample, and the robot
+      // would walk up to the obstacle instead of sliding along the border. A kept border is given
+      // up once the CoM has crossed it, or, for a border turned from the way round another
+      // obstacle (a forecast of where the robot will be), once the CoM comes closer to it than
+      // the clearance. Measured on obstacle_scenes.yaml and obstacle_passing.yaml (with the sides
+      // of an earlier version, taken from the route points): given up at half the clearance for
+      // every border, the robot slid slower (the obstacle dead ahead met at 1 m at 0.2 m/s passed
+      // 0.6 s over the 10 s allowed; 292 scenes correct); only once crossed, for every border, a
+      // border kept from the way round the first circle of a slalom was crossed by a CoM that
+      // hugged that circle, and the sudden new border made the robot fall (300 correct, 10
+      // failed); as here, 304 correct, 4 failed, 540 of 540 passed.
+      const double keep = after_another ? clearance : 0.0;
+      if (fresh || comInside(normal_[index]) < keep ||
+          borderProgress(candidate, d, side) >= borderProgress(normal_[index], d, side))
+        normal_[index] = candidate;
+    }
     normals.col(k) = normal_[index];
     offsets(k) = offsetOf(normal_[index]);
-    slides_.col(k) = borderSlide(normal_[index], d, side);
+    slides_.col(k) = wall ? Eigen::Vector2d::Zero() : borderSlide(normal_[index], d, side);
     for (int m = r + 1; m < count; ++m) {
       if (leader_[m] != r) continue;
       side_[slots(route_[m].second)] = side;  // kept if the group parts
@@ -220,7 +237,6 @@ void ObstacleSelector::borderNormals(const Eigen::Vector2d& com,
     }
     if (!passed) {
       // abreast of the centre, `clearance` beyond the grown shape on the passing side
-      const Eigen::Vector2d out = side * left;
       const double beside = offsetOf(out) - out.dot(centre) + clearance;
       route_point = centre + beside * out;
       route_started = true;

@@ -227,6 +227,7 @@ void turnReferenceAlongBorders(const Eigen::Ref<const Eigen::Matrix2Xd>& normals
     // projection of v, or, square into it, the slide to the passing side.
     // Within a right angle of v only: a reference turned backwards would walk the robot away.
     Eigen::Vector2d best = Eigen::Vector2d::Zero();
+    double best_speed = speed;
     const auto nearestAlongBorders = [&](bool within_preview) {
       double best_cosine = -1e-9;
       for (int k = 0; k < normals.cols(); ++k) {
@@ -238,13 +239,17 @@ void turnReferenceAlongBorders(const Eigen::Ref<const Eigen::Matrix2Xd>& normals
         constexpr double kSquare = 0.1;  // |projection| / |v|: 5.7 degrees
         Eigen::Vector2d u = v - into * n;
         const double along = u.norm();
-        u = along > kSquare * speed || u.dot(slides.col(k)) > 0.0 ? Eigen::Vector2d(u / along)
-                                                                  : Eigen::Vector2d(slides.col(k));
+        const bool wall = slides.col(k).isZero();
+        if (wall && along <= 1e-12) continue;
+        u = wall || along > kSquare * speed || u.dot(slides.col(k)) > 0.0
+                ? Eigen::Vector2d(u / along)
+                : Eigen::Vector2d(slides.col(k));
         const double cosine = u.dot(v) / speed;
         if (cosine > best_cosine &&
             (within_preview ? reachesNoneInPreview(u, speed) : drivesIntoNone(u))) {
           best = u;
           best_cosine = cosine;
+          best_speed = wall ? along : speed;
         }
       }
     };
@@ -261,10 +266,10 @@ void turnReferenceAlongBorders(const Eigen::Ref<const Eigen::Matrix2Xd>& normals
     // the gait can walk sideways: asked for more, the QP buys the missing sideways speed with
     // the outward step's length (the feasibility polygon's slanted edges) and slides along a
     // steep border more slowly than along one it can follow.
-    double target = speed;
+    double target = best_speed;
     const Eigen::Vector2d across(-heading_sin(j), heading_cos(j));
     const double sine = std::abs(across.dot(best));
-    if (max_sideways_speed > 0.0 && sine * speed > max_sideways_speed)
+    if (max_sideways_speed > 0.0 && sine * target > max_sideways_speed)
       target = max_sideways_speed / sine;
     best *= target;
     velocity_x(j) = best.x();

@@ -239,7 +239,7 @@ void PatternGenerator::placeObstacles(const Eigen::Vector3d& command) {
       0.5 * (gait_.footPose(FootSide::kLeft) + gait_.footPose(FootSide::kRight)).head<2>();
   obstacles_.borderNormals(Eigen::Vector2d(com_x_(0), com_y_(0)), feet_middle,
                            Eigen::Vector2d(problem_->velocity_x(0), problem_->velocity_y(0)),
-                           w, tangentClearance(w), problem_->obstacle_slot,
+                           w, tangentClearance(w), settings_.max_detour, problem_->obstacle_slot,
                            problem_->obstacle_normal, problem_->obstacle_offset);
   if (w.obstacle_landing_linearization == ObstacleLinearization::kStep && gait_.swinging()) {
     // Where the robot will have to be caught when the foot in the air lands: the capture point

@@ -83,6 +83,8 @@ void GeneratorSettings::validate() const {
     fail("generator.max_obstacles_in_qp", "an integer in [0, 32]", str(g.max_obstacles_in_qp));
   if (!(g.obstacle_reach > 0.0) || !std::isfinite(g.obstacle_reach))
     fail("generator.obstacle_reach", "a positive distance in m", str(g.obstacle_reach));
+  if (!(g.max_detour > 0.0) || !std::isfinite(g.max_detour))
+    fail("generator.max_detour", "a positive distance in m", str(g.max_detour));
   // Bounded work: a sample never iterates without end.
   if (g.sqp_iterations < 0 || g.sqp_iterations > kMaxSqpIterations)
     fail("generator.sqp_iterations", "an integer in [0, 1000]", str(g.sqp_iterations));

@@ -258,11 +258,8 @@ double WalkingParameters::gaitSidewaysSpeed() const {
 }
 
 double WalkingParameters::leastStepWidth() const {
-  const double half_turn = 0.5 * max_step_yaw_change;
   double least = std::abs(feasibility_y[0]);
-  for (std::size_t i = 0; i < feasibility_x.size(); ++i)
-    least = std::min(least, std::abs(feasibility_y[i]) * std::cos(half_turn) -
-                                std::abs(feasibility_x[i]) * std::sin(half_turn));
+  for (const double y : feasibility_y) least = std::min(least, std::abs(y));
   return least;
 }
 

@@ -8,7 +8,7 @@ matplotlib and PyYAML (what the plot scripts need); unittest, exit 0 when every 
   most the circumscribed polygon's excess, 1 / cos(pi / 64) - 1, longer;
 - a doorway 1 mm narrower than 2 (margin + obstacle_foot_radius) + the minimal step width has
   no passage, 1 mm wider has one, straight or turned; the minimal step width of HRP-2 facing its
-  command is 0.2 cos(0.085) - 0.28 sin(0.085);
+  command is 0.2 m, its feasibility polygon's nearest vertex across;
 - a wall across the path within the region a command leads through (BAND either side) has a
   way round, one beyond it has none; a U round the start has none;
 - the outcome rules: a failed walk is "failed" unless a `blocked` attribute says it was stopped
@@ -80,8 +80,7 @@ class ShortestPath(unittest.TestCase):
 
 class Passage(unittest.TestCase):
     def test_the_minimal_step_width_of_hrp2(self):
-        self.assertAlmostEqual(scenes.MIN_STEP_WIDTH,
-                               0.2 * math.cos(0.085) - 0.28 * math.sin(0.085), places=12)
+        self.assertEqual(scenes.MIN_STEP_WIDTH, 0.2)
 
     def test_a_doorway_below_the_minimal_width_has_no_passage(self):
         needed = 2.0 * (MARGIN + scenes.DEFAULT_FOOT_RADIUS) + scenes.MIN_STEP_WIDTH
@@ -96,8 +95,8 @@ class Passage(unittest.TestCase):
                     self.assertGreater(above["length"], above["commanded"] - 1e-9)
 
     def test_a_wall_across_the_path_leaves_a_way_round_within_the_band_only(self):
-        # Grown by 0.2 + 0.1287 + 0.1755 / 2 = 0.4165 m, a wall 4.1 m long across the path
-        # ends 2.4665 m either side of it (within BAND = 2.5 m), one 4.2 m long 2.5165 m.
+        # Grown by 0.2 + 0.1287 + 0.2 / 2 = 0.4287 m, a wall 4.1 m long across the path
+        # ends 2.4787 m either side of it (within BAND = 2.5 m), one 4.2 m long 2.5287 m.
         short = scenes.analyse_scene([box(2.0, 0.0, 0.3, 4.1)], (0.2, 0.0, 0.0))
         long = scenes.analyse_scene([box(2.0, 0.0, 0.3, 4.2)], (0.2, 0.0, 0.0))
         self.assertTrue(short["passage"])

@@ -100,11 +100,12 @@ TEST_F(ObstacleFiles, ExampleOfTheIssueLoads) {
   // Generator defaults (GeneratorSettings).
   EXPECT_EQ(s.request.generator.max_obstacles_in_qp, 4);
   EXPECT_EQ(s.request.generator.obstacle_reach, 1.5);
+  EXPECT_EQ(s.request.generator.max_detour, 2.5);
 }
 
 TEST_F(ObstacleFiles, OptionalKeysHaveDefaultsAndGeneratorKeysAreRead) {
   const Scenario s = load(
-      "generator: {max_obstacles_in_qp: 0, obstacle_reach: 2.5}\n"
+      "generator: {max_obstacles_in_qp: 0, obstacle_reach: 2.5, max_detour: 4.0}\n"
       "obstacles:\n"
       "  - {type: circle, center: [1.5, 0.0], radius: 0.3}\n"
       "  - {type: box, center: [3.0, 1.0], size: [0.4, 0.6]}\n"
@@ -114,6 +115,7 @@ TEST_F(ObstacleFiles, OptionalKeysHaveDefaultsAndGeneratorKeysAreRead) {
   EXPECT_EQ(s.request.obstacles[1].yaw, 0.0);
   EXPECT_EQ(s.request.generator.max_obstacles_in_qp, 0);
   EXPECT_EQ(s.request.generator.obstacle_reach, 2.5);
+  EXPECT_EQ(s.request.generator.max_detour, 4.0);
   EXPECT_EQ(load("obstacles: []\n").request.obstacles.size(), 0u);
   EXPECT_EQ(load("obstacles:\n").request.obstacles.size(), 0u);
   EXPECT_EQ(load("").request.obstacles.size(), 0u);
@@ -211,6 +213,8 @@ TEST_F(ObstacleFiles, BadObstaclesAreInputErrorsNamingTheKey) {
       {"generator: {max_obstacles_in_qp: -1}\n", "key 'generator.max_obstacles_in_qp'", "[0, 32]"},
       {"generator: {max_obstacles_in_qp: 2.5}\n", "key 'generator.max_obstacles_in_qp'", "[0, 32]"},
       {"generator: {obstacle_reach: 0}\n", "key 'generator.obstacle_reach'", "positive distance"},
+      {"generator: {max_detour: -1}\n", "key 'generator.max_detour'", "positive distance"},
+      {"generator: {max_detour: .nan}\n", "key 'generator.max_detour'", "positive distance"},
   };
   for (const BadCase& c : cases) {
     SCOPED_TRACE(c.text);

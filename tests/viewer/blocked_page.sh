@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # blocked_page.sh WPG: the page of a walk that ended blocked (the shipped obstacle_wall) says so
-# in its header, where and since when ("blocked since t = 2.6 s at (0.03, 0.02) m", the
+# in its header, where and since when ("blocked since t = 8.9 s at (1.29, -0.01) m", the
 # dataset's blocked_since, blocked_x, blocked_y), not "success", and opens without error; the
 # page of a walk that made progress says "success".
 set -euo pipefail
@@ -24,7 +24,7 @@ from headless_page import HeadlessChromium
 folder = sys.argv[1]
 READY = "document.body && document.body.dataset.wpgReady === '1'"
 with HeadlessChromium() as browser:
-    for name, want, not_want in (("wall", "· blocked since t = 2.6 s at (0.03, 0.02) m", "success"),
+    for name, want, not_want in (("wall", "· blocked since t = 8.9 s at (1.29, -0.01) m", "success"),
                                  ("walk", "· success", "blocked")):
         page = browser.open("file://" + os.path.join(folder, name + ".html"))
         page.wait_for(READY)

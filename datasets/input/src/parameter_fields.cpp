@@ -243,6 +243,8 @@ const std::vector<SettingField<GeneratorSettings>>& generatorSettingFields() {
                      "an integer in [0, 32] (obstacles in the QP at each sample)", 32),
       positiveSetting("obstacle_reach", &G::obstacle_reach, "a positive distance of at most 1e4 m",
                       kMaxLength),
+      positiveSetting("max_detour", &G::max_detour, "a positive distance of at most 1e4 m",
+                      kMaxLength),
       integerSetting("blocked_window_cycles", &G::blocked_window_cycles, 1,
                      "an integer in [1, 100] (gait cycles of the robot's nominal steps)",
                      kMaxBlockedWindowCycles),

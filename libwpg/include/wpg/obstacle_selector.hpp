@@ -40,10 +40,13 @@ class ObstacleSelector {
   // group's border, the others' slots are emptied (set to -1). The side is chosen from
   // `feet_middle` when the obstacle (the group's first) comes within reach (select()) and kept
   // while it stays there, so that the robot does not change its mind half-way round; the
-  // border only turns towards the command while it stays (borderProgress). Does not allocate.
+  // border only turns towards the command while it stays (borderProgress). An obstacle (or
+  // group) whose way round on its passing side lies more than `max_detour` [m] aside of the
+  // CoM is a wall (GeneratorSettings::max_detour): its border faces the CoM, and its slide
+  // (slides()) is zero. Does not allocate.
   void borderNormals(const Eigen::Vector2d& com, const Eigen::Vector2d& feet_middle,
                      const Eigen::Vector2d& direction, const WalkingParameters& parameters,
-                     double clearance, Eigen::Ref<Eigen::VectorXi> slots,
+                     double clearance, double max_detour, Eigen::Ref<Eigen::VectorXi> slots,
                      Eigen::Ref<Eigen::Matrix2Xd> normals, Eigen::Ref<Eigen::VectorXd> offsets);
   // The row of the next landing (the previewed step 0, the foot in the air), per slot left by
   // the last borderNormals: column k of `normals` and entry k of

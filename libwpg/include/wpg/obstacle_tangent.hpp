@@ -105,7 +105,8 @@ double coreDistance(const std::vector<Eigen::Vector2d>& a, const std::vector<Eig
 // the borders instead of asking the robot to walk through them. A reference (nearly) square
 // into a border (a box's face met head on) has no projection of its own along it: it slides
 // towards the obstacle's passing side, column k of `slides` (the unit tangent of border k that
-// way). When the cone holds no
+// way); a zero column is a wall (no way round within the generator's max_detour): along it the
+// reference keeps only its own part, no faster, so that the robot stops. When the cone holds no
 // direction within a right angle of the reference (borders facing each other across it) the
 // reference is left as it is: the QP holds the steps. Scaled back no faster than leaves its
 // part across the robot's heading within `max_sideways_speed` [m/s] (<= 0: no limit), the

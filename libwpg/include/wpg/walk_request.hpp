@@ -48,6 +48,12 @@ struct GeneratorSettings {
   // the nearest ones whose bounding circle is within obstacle_reach of the support foot [m].
   int max_obstacles_in_qp = 4;
   double obstacle_reach = 1.5;
+  // The farthest aside of the CoM [m] (across the command) the way round an obstacle on the
+  // path may lie for the generator to slide round it (command_tangent): the way past a longer
+  // wall is a route to plan, not a velocity command to follow. Beyond it the obstacle (or
+  // group) is a wall: its border faces the CoM and J1's reference keeps only its own part
+  // along the border, so that the robot stops in front of it (and is found blocked).
+  double max_detour = 2.5;
   // Stuck is an outcome (progress_monitor.hpp): the robot is blocked when, over a window of
   // blocked_window_cycles gait cycles of the parameters' nominal steps (3: 4.8 s for HRP-2; a
   // whole number of cycles, over which the CoM's sway cancels), its CoM walks less than

@@ -284,12 +284,13 @@ struct WalkingParameters {
   // outward step reaches the polygon's widest lateral offset, the inward one comes back to its
   // narrowest (0.4 - 0.2 m in 1.6 s: 0.125 m/s for HRP-2).
   double gaitSidewaysSpeed() const;
-  // [m] The least distance across its heading between two consecutive feet of a robot that
-  // faces its command: a step lands in the feasibility polygon (eq. 14), but the feet may toe
-  // in and out in turn by half the yaw bound (eq. 16), which turns the polygon; its nearest
-  // vertex then lies min |y| cos(a) - |x| sin(a) across, a = max_step_yaw_change / 2 (0.1755 m
-  // for HRP-2, 0.2 m side by side). A gap narrower than this between two obstacles grown by
-  // their step-centre margins lets no walk through (ObstacleSelector's passing sides).
+  // [m] The least distance across its heading between two consecutive feet of the walk the
+  // generator plans: its feet face the heading (J2 keeps them along it), so a step lands at
+  // least the feasibility polygon's nearest vertex across, min |y| (eq. 14: 0.2 m for HRP-2,
+  // its minimal step width). Feet toed in and out in turn by half the yaw bound (eq. 16) could
+  // come min |y| cos(a) - |x| sin(a) close (0.1755 m for HRP-2), but the NMPC plans no such
+  // gait. A gap narrower than this between two obstacles grown by their step-centre margins
+  // lets none of its walks through (ObstacleSelector's groups; docs/obstacle_scenes.md).
   double leastStepWidth() const;
 
   // Throws std::invalid_argument naming the first bad field and what was expected.
