@@ -187,7 +187,7 @@ py::array_t<T> shaped(const std::vector<T>& values, std::vector<py::ssize_t> sha
 }
 
 py::dict planColumns(const PlanLog& p) {
-  const auto k = static_cast<py::ssize_t>(p.size()), n = p.max_samples, s = p.steps;
+  const py::ssize_t k = static_cast<py::ssize_t>(p.size()), n = p.max_samples, s = p.steps;
   py::dict out;
   out["sampling_period"] = p.sampling_period;
   out["sample_count"] = shaped(p.samples, {k});
