@@ -10,8 +10,8 @@ set -euo pipefail
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="$(realpath -m -- "${WPG_BUILD_DIR:-$repo/build}")"
 references="$repo/datasets/references"
-# Shipped scenarios without a reference, to keep datasets/references/ small (~3.9 MiB instead
-# of ~8.7 MiB; each is 0.5-0.9 MiB), and why (datasets/references/README.md): their constraint
+# Shipped scenarios without a reference, to keep datasets/references/ small (6.1 MiB with the
+# stored plans; each left out 0.5-1 MiB), and why (datasets/references/README.md): their constraint
 # kinds and code paths are covered by the references kept (obstacle_cluttered holds circles,
 # boxes and polygons; paper_experiment_a the circle of the paper; goal_with_yaw the planner,
 # the path follower and the goal attributes; obstacle_wall's box is obstacle_cluttered's kind,

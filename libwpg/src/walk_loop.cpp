@@ -93,6 +93,17 @@ WalkResult runWalkLoop(OnlineWalkingGenerator& generator, const WalkRequest& req
   for (FootSide side : {FootSide::kLeft, FootSide::kRight})
     out.footsteps.push_back({0.0, generator.patternGenerator().footPose(side), side});
 
+  // The plans, sized for the whole walk: recording one copies it, no allocation.
+  const bool record_plan = request.generator.record_plan;
+  NmpcPlan plan;
+  if (record_plan) {
+    const PatternGenerator& pattern = generator.patternGenerator();
+    plan.resize(pattern.maxPreviewSamples(), pattern.model().layout().steps,
+                pattern.model().familyCount());
+    out.plans.reserve(pattern.maxPreviewSamples(), pattern.model().layout().steps,
+                      pattern.model().familyCount(), T, iterations);
+  }
+
   ProgressMonitor progress(parameters, request.generator);
   bool fallen = false, stopped_blocked = false;
   for (int k = 0; k < iterations && !fallen && !stopped_blocked; ++k) {
@@ -106,6 +117,10 @@ WalkResult runWalkLoop(OnlineWalkingGenerator& generator, const WalkRequest& req
       if (generator.fallen()) {
         out.mpc.push_back(generator.lastIteration());
         out.mpc.back().command = command;
+        if (record_plan) {  // no NMPC ran: an empty row
+          plan.clear(generator.lastIteration().time);
+          out.plans.append(plan);
+        }
         result.success = false;
         result.message = "the robot fell at t = " + std::to_string(sample.time) +
                          " s: capture point " + std::to_string(generator.captureDistance()) +
@@ -121,6 +136,10 @@ WalkResult runWalkLoop(OnlineWalkingGenerator& generator, const WalkRequest& req
         out.mpc.back().command = command;  // the metrics of a goal walk track it (METRICS.md)
         const Eigen::Vector2d velocity = commandedWorldVelocity(generator.patternGenerator());
         out.mpc.back().commanded_velocity = velocity;
+        if (record_plan) {
+          generator.patternGenerator().previewPlan(plan);
+          out.plans.append(plan);
+        }
         if (result.success && iterationStatusFailsWalk(log.status)) {
           result.success = false;
           result.message = std::string("NMPC iteration at t = ") + std::to_string(sample.time) +

@@ -153,3 +153,18 @@ def test_a_long_push_acts_until_it_ends():
     for _ in range(200):
         a, b = pushed.step(), free.step()
     assert a.com[0] - b.com[0] > 1e-3
+
+
+def test_each_nmpc_step_carries_its_plan():
+    offline = wpg.run("walk_forward", overrides={
+        "duration": 2, "reference": [{"t": 0.0, "v": [0.2, 0.0, 0.0]}]})
+    gen = wpg.OnlineGenerator("walk_forward")
+    states = [gen.step(command=(0.2, 0.0, 0.0)) for _ in range(len(offline.time) - 1)]
+    plans = [s.plan for s in states if s.nmpc_sample]
+    assert all(s.plan is None for s in states if not s.nmpc_sample)
+    assert len(plans) == len(offline.plans)
+    for i, plan in enumerate(plans):
+        n = plan["sample_count"]
+        np.testing.assert_array_equal(plan["com"][:n], offline.plans.com[i][:n])
+        np.testing.assert_array_equal(plan["steps"], offline.plans.steps[i])
+        assert plan["time"] == offline.mpc["time"][i]

@@ -200,3 +200,25 @@ def test_a_clamped_command_warns_and_walks_as_the_clamp(tmp_path):
         text = f["runs/walk_forward"].attrs["warnings"]
         text = text.decode() if isinstance(text, bytes) else text
     assert text == fast.warnings[0] + "\n"
+
+
+def test_plans_predict_the_executed_com_and_read_back_the_same(walk, tmp_path):
+    plans = walk.plans
+    assert len(plans) == len(walk.mpc)
+    k, n = plans.com.shape[:2]
+    assert plans.com.shape == (k, n, 2) and plans.steps.shape[2] == 4
+    assert plans.active_rows.shape == (k, len(plans.families))
+    per = (len(walk.time) - 1) // k  # control periods per NMPC iteration
+    executed = walk.com[per::per, :2][:k]
+    np.testing.assert_allclose(plans.com[:len(executed), 0], executed, rtol=0, atol=1e-12)
+    frame = plans.frame()
+    assert len(frame) == plans.sample_count.sum()
+    np.testing.assert_allclose(frame.sample_time, frame.time + frame["sample"] * 0.1)
+    walk.save(tmp_path / "run.h5")
+    back = wpg.io.load_run(tmp_path / "run.h5")
+    for name in ("sample_count", "com", "com_vel", "com_acc", "jerk", "cop", "steps",
+                 "step_side", "active_rows"):
+        np.testing.assert_array_equal(getattr(back.plans, name), getattr(plans, name))
+    off = wpg.run("walk_forward", overrides=dict(OVERRIDES, **{"generator.record_plan": False}))
+    assert off.plans is None
+    np.testing.assert_array_equal(off.com, walk.com)

@@ -72,6 +72,10 @@ OnlineStep OnlineSession::stepLocked(const Eigen::Vector3d* command) {
   result.status = generator_.lastIteration().status;
   result.fallen = generator_.fallen();
   result.landed = generator_.landed();
+  if (result.sample.nmpc_sample && !result.fallen) {
+    result.plan.emplace();
+    generator_.patternGenerator().previewPlan(*result.plan);
+  }
   return result;
 }
 

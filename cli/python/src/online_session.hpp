@@ -3,6 +3,7 @@
 // scenario (its walking parameters, generator settings, obstacles and robot mass), one control
 // period per step(), with the command, the obstacles and pushes given between steps.
 #include <mutex>
+#include <optional>
 #include <string>
 
 #include <Eigen/Core>
@@ -15,6 +16,8 @@ namespace wpg::python {
 // One control period's outcome, copied out under the session's lock.
 struct OnlineStep {
   ControlSample sample;
+  // What the NMPC of this step predicted (nmpc_plan.hpp), at NMPC samples only.
+  std::optional<NmpcPlan> plan;
   IterationStatus status = IterationStatus::kSolved;
   bool fallen = false, landed = false;
 };

@@ -4,6 +4,7 @@
 // C++ result's buffers (read-only, the run's core object as their base: nothing copied); the
 // small tables (footsteps, NMPC log) are copied once into columns. Walks, studies and saves
 // run without the GIL.
+#include <algorithm>
 #include <cstdint>
 #include <optional>
 #include <stdexcept>
@@ -173,6 +174,52 @@ py::dict mpcColumns(const RunSession& run) {
   return out;
 }
 
+// What each NMPC iteration predicted (mpc/plan/ of the dataset), shaped per iteration (one
+// copy): the package's wpg.Plans. Empty arrays when the run did not record it.
+template <typename T>
+py::array_t<T> shaped(const std::vector<T>& values, std::vector<py::ssize_t> shape) {
+  py::ssize_t size = 1;
+  for (const py::ssize_t n : shape) size *= n;
+  if (static_cast<py::ssize_t>(values.size()) != size) shape.assign(1, 0);
+  py::array_t<T> out(shape);
+  std::copy(values.begin(), values.begin() + out.size(), out.mutable_data());
+  return out;
+}
+
+py::dict planColumns(const PlanLog& p) {
+  const py::ssize_t k = static_cast<py::ssize_t>(p.size()), n = p.max_samples, s = p.steps;
+  py::dict out;
+  out["sampling_period"] = p.sampling_period;
+  out["sample_count"] = shaped(p.samples, {k});
+  out["com"] = shaped(p.com_position, {k, n, 2});
+  out["com_vel"] = shaped(p.com_velocity, {k, n, 2});
+  out["com_acc"] = shaped(p.com_acceleration, {k, n, 2});
+  out["jerk"] = shaped(p.jerk, {k, n, 2});
+  out["cop"] = shaped(p.cop, {k, n, 2});
+  out["steps"] = shaped(p.step, {k, s, 4});
+  out["step_side"] = shaped(p.step_side, {k, s});
+  out["active_rows"] = shaped(p.active_rows, {k, static_cast<py::ssize_t>(p.families)});
+  return out;
+}
+
+// One online step's plan: the same arrays for one iteration, cut to its samples.
+py::object onlinePlan(const OnlineStep& step) {
+  if (!step.plan) return py::none();
+  const NmpcPlan& p = *step.plan;
+  PlanLog log;
+  log.reserve(p.samples, static_cast<int>(p.step_pose.rows()),
+              static_cast<int>(p.active_rows.size()), p.sampling_period, 1);
+  log.append(p);
+  const py::dict columns = planColumns(log);
+  py::dict out;
+  for (const auto& item : columns) {  // the one iteration's row of each array
+    out[item.first] = py::isinstance<py::array>(item.second) ? item.second[py::int_(0)]
+                                                              : py::reinterpret_borrow<py::object>(item.second);
+  }
+  out["time"] = p.time;
+  return out;
+}
+
 py::list constraintFamilies(const RunSession& run) {
   py::list out;
   for (const ConstraintFamilyInfo& family : run.result.walk.result.trajectory.constraint_families) {
@@ -231,7 +278,8 @@ void bindOnline(py::module_& m) {
       .def_property_readonly("nmpc_sample", [](const OnlineStep& s) { return s.sample.nmpc_sample; })
       .def_property_readonly("status", [](const OnlineStep& s) { return iterationStatusName(s.status); })
       .def_property_readonly("fallen", [](const OnlineStep& s) { return s.fallen; })
-      .def_property_readonly("landed", [](const OnlineStep& s) { return s.landed; });
+      .def_property_readonly("landed", [](const OnlineStep& s) { return s.landed; })
+      .def_property_readonly("plan", &onlinePlan);
 
   py::class_<OnlineSession>(m, "OnlineCore")
       .def(py::init([](const std::string& scenario, std::vector<std::string> overrides) {
@@ -328,6 +376,8 @@ void bindRun(py::module_& m) {
       .def("footstep_columns", &footstepColumns)
       .def("mpc_columns", &mpcColumns)
       .def("constraint_families", &constraintFamilies)
+      .def("plan_columns",
+           [](const RunSession& r) { return planColumns(r.result.walk.result.trajectory.plans); })
       .def("metric_rows", [](const RunSession& r) { return metricRows(&r.result.metrics); })
       .def("save", &saveRun, py::arg("path"), py::call_guard<py::gil_scoped_release>());
 }

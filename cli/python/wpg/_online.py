@@ -25,7 +25,9 @@ class OnlineGenerator:
         """Runs one control period and returns its state: time, com, com_vel, com_acc (3,),
         cop (2,), left_foot, right_foot (4,: x, y, z, yaw), support ("double", "left",
         "right"), status (of the last NMPC iteration, as mpc/status), nmpc_sample (the NMPC ran
-        in this period), landed, fallen. `command` (vx [m/s], vy [m/s], omega [rad/s], robot
+        in this period), landed, fallen, plan (at NMPC samples: a dict of what the NMPC
+        predicted, the arrays of wpg.Plans for this one iteration, e.g. plan["com"] (N, 2);
+        else None). `command` (vx [m/s], vy [m/s], omega [rad/s], robot
         frame), when given, replaces the current command from the next NMPC sample on."""
         return self._core.step(command)
 

@@ -137,6 +137,23 @@ class Run:
         return self._cache["mpc"].copy()
 
     @property
+    def plans(self):
+        """wpg.Plans: what each NMPC iteration predicted (the dataset's mpc/plan/; arrays per
+        iteration, .frame() a tidy DataFrame); None when the run did not record it
+        (generator.record_plan false, a study's `plan: false`)."""
+        if "plans" not in self._cache:
+            from ._plans import Plans, stored_plan_columns
+            columns = self._core.plan_columns()
+            if len(columns["sample_count"]) == 0:
+                columns = None
+                if self._core.stored_file:
+                    columns = stored_plan_columns(self._core.stored_file, self.name)
+            families = [family for family, _unit, _group in self._core.constraint_families()]
+            self._cache["plans"] = (None if columns is None else
+                                    Plans(columns, self.mpc["time"].to_numpy(), families))
+        return self._cache["plans"]
+
+    @property
     def metrics(self):
         """dict of the metrics of datasets/METRICS.md: the names and values `wpg analyze`
         gives (counts as int; NaN where a metric does not apply)."""

@@ -55,6 +55,8 @@ std::string emitResolved(const Scenario& scenario) {
   emitSettingFields(out, generatorSettingFields(), generator);
   emitKey(out, "stop_when_blocked");
   out << generator.stop_when_blocked;
+  emitKey(out, "record_plan");
+  out << generator.record_plan;
   out << YAML::EndMap;
 
   if (scenario.goal.enabled) {

@@ -144,6 +144,7 @@ GeneratorSettings readGenerator(const YAML::Node& node, const Source& source) {
   std::vector<std::string> keys = {"algorithm"};
   for (const std::string& name : settingNames(generatorSettingFields())) keys.push_back(name);
   keys.push_back("stop_when_blocked");
+  keys.push_back("record_plan");
   const Entries entries = readMap(node, "generator", keys, "a map of generator settings", source,
                                   /*null_is_empty=*/true);
   if (present(entries, "algorithm")) {
@@ -161,6 +162,10 @@ GeneratorSettings readGenerator(const YAML::Node& node, const Source& source) {
     settings.stop_when_blocked =
         readBoolean(entry(entries, "stop_when_blocked"), "generator.stop_when_blocked",
                     "true or false", source);
+  }
+  if (present(entries, "record_plan")) {
+    settings.record_plan = readBoolean(entry(entries, "record_plan"), "generator.record_plan",
+                                       "true or false", source);
   }
   return settings;
 }

@@ -14,6 +14,7 @@
 #include "goal_dataset.hpp"
 #include "hdf5_writing.hpp"
 #include "obstacles_dataset.hpp"
+#include "plan_dataset.hpp"
 #include "run_group_writing.hpp"
 #include "wpg/obstacles.hpp"
 
@@ -165,15 +166,21 @@ void writeMpcLog(GroupImage& run, const WalkTrajectory& trajectory) {
   std::vector<double> velocity;
   velocity.reserve(2 * log.size());
   for (const MpcIterationLog& row : log) {
-    if (!row.commanded_velocity.allFinite()) return;
+    if (!row.commanded_velocity.allFinite()) {
+      velocity.clear();
+      break;
+    }
     velocity.insert(velocity.end(), {row.commanded_velocity.x(), row.commanded_velocity.y()});
   }
-  writeDoubles(mpc, "commanded_velocity", velocity, 2,
-               {"m/s", "world",
-                "linear part of the velocity command the iteration's NMPC tracked, clamped to "
-                "the robot's limits, turned into the world by the heading the generator "
-                "expressed it in (walking.heading_reference); 0 in a fallen row",
-                "x, y"});
+  if (!velocity.empty() || log.empty()) {
+    writeDoubles(mpc, "commanded_velocity", velocity, 2,
+                 {"m/s", "world",
+                  "linear part of the velocity command the iteration's NMPC tracked, clamped to "
+                  "the robot's limits, turned into the world by the heading the generator "
+                  "expressed it in (walking.heading_reference); 0 in a fallen row",
+                  "x, y"});
+  }
+  writePlans(mpc, trajectory);
 }
 
 // Footsteps against the obstacles (when there are any): the step centres computed by

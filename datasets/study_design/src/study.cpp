@@ -216,8 +216,16 @@ Study loadStudy(const std::string& path, const BaseResolver& resolve_base,
   const Source source(path);
   const YAML::Node root = detail::readYamlFile(path, "study file");
   study.text = detail::readTextFile(path, "study file");
-  const detail::Entries top = detail::readMap(root, "", {"name", "base", "sweep"},
-                                              "a study: a map with name, base and sweep", source);
+  const detail::Entries top =
+      detail::readMap(root, "", {"name", "base", "sweep", "plan"},
+                      "a study: a map with name, base, sweep and optionally plan", source);
+  // `plan: false`: the runs leave out what each NMPC iteration predicted (mpc/plan/), as
+  // `--set generator.record_plan=false` would: a smaller batch file and less writing.
+  std::vector<std::string> common;
+  if (detail::present(top, "plan") &&
+      !detail::readBoolean(detail::entry(top, "plan"), "plan", "true or false", source)) {
+    common.push_back("generator.record_plan=false");
+  }
   study.name = detail::readName(detail::entry(top, "name"), "name",
                                 "a study name (at most 32 letters, digits, _ - .)", source,
                                 kMaxStudyNameLength);
@@ -279,7 +287,7 @@ Study loadStudy(const std::string& path, const BaseResolver& resolve_base,
   // The keys first, on the first value of each (a typo is named before any count or
   // expansion): the scenario must have them all.
   {
-    std::vector<std::string> overrides;
+    std::vector<std::string> overrides = common;
     for (const auto* section : {&grid, &zip, &random})
       for (const KeyValues& key : *section) overrides.push_back(key.key + "=" + key.values.front().value);
     overrides.push_back("name=" + study.name + "_0");
@@ -340,7 +348,7 @@ Study loadStudy(const std::string& path, const BaseResolver& resolve_base,
 
   // Each run's scenario: the base with its values, loaded and validated as `wpg run` does.
   loadStudyScenarios(&study, threads, [&](StudyRun& run) {
-    std::vector<std::string> overrides;
+    std::vector<std::string> overrides = common;
     std::string described;
     for (const SweptValue& value : run.swept) {
       overrides.push_back(value.key + "=" + value.value);

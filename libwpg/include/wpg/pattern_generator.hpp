@@ -22,6 +22,7 @@
 
 #include "wpg/gait_scheduler.hpp"
 #include "wpg/nmpc.hpp"
+#include "wpg/nmpc_plan.hpp"
 #include "wpg/obstacle_selector.hpp"
 #include "wpg/reference_builder.hpp"
 #include "wpg/step_timing.hpp"
@@ -73,6 +74,14 @@ class PatternGenerator {
     double lift_off_time = 0.0;  // [s]
   };
   const SamplePlan& plan() const { return plan_; }
+
+  // What the last update() predicts over its whole horizon (nmpc_plan.hpp), from the CoM
+  // state it solved from: valid until advance() shifts the plan. Sizes `out` when it holds
+  // fewer than maxPreviewSamples() samples or another count of steps or families (allocates);
+  // else does not allocate. Costs nothing unless called (plan_preview.cpp).
+  void previewPlan(NmpcPlan& out) const;
+  // The longest horizon of the cadences (the parameters' own, the slowest steps).
+  int maxPreviewSamples() const;
 
   // Ends the sampling period: the caller integrated the CoM (possibly pushed) and passes the
   // state at its end. Returns true when a foot landed at the end of the period (lastLanding()).

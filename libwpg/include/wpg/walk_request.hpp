@@ -63,6 +63,9 @@ struct GeneratorSettings {
   int blocked_window_cycles = 3;
   double blocked_progress = 0.25;
   bool stop_when_blocked = false;
+  // Record what every NMPC iteration predicts (WalkTrajectory::plans, the dataset's mpc/plan/;
+  // nmpc_plan.hpp). Off: a study's runs leave it out of the batch file.
+  bool record_plan = true;
   // Where the generator's NMPC models take their Hessians' factors: a cache shared with other
   // generators (the runs of a study share one, loadStudyScenarios), or null: the generator
   // makes its own. Not a setting of the walk: the results are the same bits either way.

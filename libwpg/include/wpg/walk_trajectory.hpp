@@ -8,6 +8,8 @@
 
 #include <Eigen/Core>
 
+#include "wpg/nmpc_plan.hpp"
+
 namespace wpg {
 
 // At most this many constraint families in one NMPC model (wpg/nmpc/constraint_family.hpp):
@@ -95,6 +97,9 @@ struct WalkTrajectory {
   std::vector<MpcIterationLog> mpc;
   // the NMPC's constraint families, in the order of MpcIterationLog::slack
   std::vector<ConstraintFamilyInfo> constraint_families;
+  // What each NMPC iteration predicted, one row per row of mpc (GeneratorSettings::
+  // record_plan); empty when not recorded.
+  PlanLog plans;
 
   std::size_t size() const { return time.size(); }
   void reserve(std::size_t samples, std::size_t iterations);
