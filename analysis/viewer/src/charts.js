@@ -1,7 +1,7 @@
 // Charts of the dashboard, drawn on canvases by this file: box plots of groups of runs with
 // every run as a point, a scatter of a metric against a swept key, and bars of success rates.
 // Each point knows its run: hovering shows it, a click opens its page.
-import { element, format, quantile } from './data.js';
+import { element, format, highest, lowest, quantile } from './data.js';
 
 const PAD = { left: 64, right: 16, top: 16, bottom: 58 };
 
@@ -106,8 +106,8 @@ export class Chart {
 export function drawBoxPlots(chart, boxes, groups, yLabel, logScale) {
   const g = chart.begin();
   const finite = boxes.flatMap((b) => b.values.map((v) => v.value)).filter((v) => Number.isFinite(v) && (!logScale || v > 0));
-  let low = finite.length ? Math.min(...finite) : 0;
-  let high = finite.length ? Math.max(...finite) : 1;
+  let low = finite.length ? lowest(finite) : 0;
+  let high = finite.length ? highest(finite) : 1;
   if (logScale) { low /= 1.3; high *= 1.3; } else {
     const pad = 0.06 * (high - low || Math.abs(high) || 1);
     low -= pad; high += pad;
@@ -131,8 +131,8 @@ export function drawBoxPlots(chart, boxes, groups, yLabel, logScale) {
       const numbers = values.map((v) => v.value);
       const [q1, median, q3] = [0.25, 0.5, 0.75].map((q) => quantile(numbers, q));
       const iqr = q3 - q1;
-      const lowWhisker = Math.min(...numbers.filter((v) => v >= q1 - 1.5 * iqr));
-      const highWhisker = Math.max(...numbers.filter((v) => v <= q3 + 1.5 * iqr));
+      const lowWhisker = lowest(numbers.filter((v) => v >= q1 - 1.5 * iqr));
+      const highWhisker = highest(numbers.filter((v) => v <= q3 + 1.5 * iqr));
       g.strokeStyle = box.colour;
       g.fillStyle = box.colour + '33';
       g.lineWidth = 1.4;
@@ -166,7 +166,7 @@ export function drawBoxPlots(chart, boxes, groups, yLabel, logScale) {
   g.fillStyle = '#0f172a';
   g.font = '600 12px system-ui, sans-serif';
   for (const [group, xs] of Object.entries(groupSpans)) {
-    if (groups.length > 1 || group) g.fillText(group, (Math.min(...xs) + Math.max(...xs)) / 2, chart.height - PAD.bottom + 36);
+    if (groups.length > 1 || group) g.fillText(group, (lowest(xs) + highest(xs)) / 2, chart.height - PAD.bottom + 36);
   }
   return drawn;
 }
@@ -177,8 +177,8 @@ export function drawScatter(chart, points, xLabel, yLabel, logScale) {
   const ok = points.filter((p) => Number.isFinite(p.x) && Number.isFinite(p.y) && (!logScale || p.y > 0));
   const xs = ok.map((p) => p.x);
   const ys = ok.map((p) => p.y);
-  let [x0, x1] = xs.length ? [Math.min(...xs), Math.max(...xs)] : [0, 1];
-  let [y0, y1] = ys.length ? [Math.min(...ys), Math.max(...ys)] : [0, 1];
+  let [x0, x1] = xs.length ? [lowest(xs), highest(xs)] : [0, 1];
+  let [y0, y1] = ys.length ? [lowest(ys), highest(ys)] : [0, 1];
   const xp = 0.05 * (x1 - x0 || Math.abs(x1) || 1);
   x0 -= xp; x1 += xp;
   if (logScale) { y0 /= 1.3; y1 *= 1.3; } else {
@@ -234,5 +234,5 @@ export function drawRates(chart, bars, groups) {
   }
   g.fillStyle = '#0f172a';
   g.font = '600 12px system-ui, sans-serif';
-  for (const [group, xs] of Object.entries(spans)) g.fillText(group, (Math.min(...xs) + Math.max(...xs)) / 2, chart.height - PAD.bottom + 22);
+  for (const [group, xs] of Object.entries(spans)) g.fillText(group, (lowest(xs) + highest(xs)) / 2, chart.height - PAD.bottom + 22);
 }

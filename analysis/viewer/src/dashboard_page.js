@@ -11,6 +11,7 @@ const NOT_METRICS = new Set(['index', 'done']);
 const FIRST_METRICS = ['time_to_goal', 'path_length', 'distance', 'velocity_error_rms', 'cop_margin_min',
   'step_centre_clearance_min', 'steps', 'nmpc_time_p99'];
 const SHOWN_TOP_VIEWS = 240;  // more are drawn on request: a canvas each
+const SHOWN_TABLE_ROWS = 500;  // rows of the runs table, in its order; more on request
 
 function card(title, note) {
   const body = element('div');
@@ -218,9 +219,14 @@ export function dashboardPage(app, data) {
   tableBody.append(tableBox);
   let sortKey = null;
   let sortDown = false;
+  let shownRows = SHOWN_TABLE_ROWS;
+  const moreRows = element('button', { class: 'link' });
+  moreRows.addEventListener('click', () => { shownRows += SHOWN_TABLE_ROWS; drawTable(); });
+  tableBody.append(moreRows);
   function drawTable() {
     const keys = [...shownColumns, state.metric].filter((k, i, all) => columns[k] && all.indexOf(k) === i);
-    const order = [...Array(rows).keys()].filter((row) => runs[row]);
+    const order = [];
+    for (let row = 0; row < rows; ++row) if (runs[row]) order.push(row);
     if (sortKey) {
       const values = columns[sortKey].values;
       order.sort((a, b) => {
@@ -233,7 +239,7 @@ export function dashboardPage(app, data) {
       text: k.replace(/^sweep\./, '') + (sortKey === k ? (sortDown ? ' ▼' : ' ▲') : ''),
       onclick: () => { sortDown = sortKey === k ? !sortDown : false; sortKey = k; drawTable(); },
     }))));
-    for (const row of order) {
+    for (const row of order.slice(0, shownRows)) {
       const cells = keys.map((k, i) => {
         const v = columns[k].values[row];
         if (i === 0) return element('td', {}, [element('a', { href: runs[row].page, text: String(v) })]);
@@ -241,6 +247,8 @@ export function dashboardPage(app, data) {
       });
       table.append(element('tr', { class: reachedOf(row) ? '' : 'failed' }, cells));
     }
+    const hidden = order.length - Math.min(shownRows, order.length);
+    moreRows.textContent = hidden ? `show ${Math.min(SHOWN_TABLE_ROWS, hidden)} more of ${hidden}` : '';
   }
 
   const drawAll = () => { drawMetric(); drawSuccess(); drawTable(); };
