@@ -214,6 +214,21 @@ void checkOutputPaths(const std::vector<PlannedOutput>& outputs,
   }
 }
 
+void checkOutputFolder(const std::string& folder) {
+  struct stat target {};
+  if (::lstat(folder.c_str(), &target) != 0) {
+    if (errno == ENOENT) return;
+    throw InputError("'" + escapeControlCharacters(folder) + "': expected a folder to write into, " +
+                     "got a path that cannot be examined: " + std::strerror(errno) + " (nothing written)");
+  }
+  if (S_ISDIR(target.st_mode)) return;
+  throw InputError("'" + escapeControlCharacters(folder) + "': expected a folder to write into, got " +
+                   (S_ISLNK(target.st_mode)   ? std::string("a symbolic link (not followed)")
+                    : S_ISREG(target.st_mode) ? std::string("a file")
+                                              : std::string(detail::fileTypeName(target))) +
+                   " (nothing written)");
+}
+
 void writeFileAtomically(const std::string& path, const std::string& content) {
   TemporaryOutput temporary(path);
   const int fd = ::open(temporary.path().c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC);
