@@ -9,7 +9,9 @@ the network off:
 - the run page: N NMPC iterations (an 800 s walk has 160 000) in its solve-time plot;
 - the dashboard: N runs (the rows of its summary columns; every run finished, a swept key of 4
   values), drawn as box plots per value and in the table.
-Each must publish data-wpg-ready with no console error, warning or exception. Exit 0 or 1.
+Each must publish data-wpg-ready with no console error, warning or exception. And a comparison
+of 2 worlds x 12 variants with 45-character names (long_variants.html): every box's label is
+cut to fit its slot (variant names side by side ran into each other). Exit 0 or 1.
 """
 import base64
 import json
@@ -85,10 +87,29 @@ def main():
                  for r in runs]
         data["runs"] = [{"page": runs[i % len(runs)]["page"], "top": small[i % len(runs)]} for i in range(n)]
 
+    def long_variant_names(data):
+        # A comparison of 2 worlds x 12 variants with long names: each name must fit its box.
+        variants = ["rrtconnect_nmpc_variant_with_a_long_name_%02d" % i for i in range(12)]
+        worlds = ["field", "trap"]
+        rows = [(w, v) for w in worlds for v in variants]
+        runs = [r for r in data["runs"] if r]
+        data.update(comparison=True, worlds=worlds, variants=variants, seeds=["1"])
+        data["columns"] = [
+            {"name": "name", "unit": "1", "values": ["%s.%s.1" % r for r in rows]},
+            {"name": "sweep.world", "unit": "1", "values": [w for w, _ in rows]},
+            {"name": "sweep.variant", "unit": "1", "values": [v for _, v in rows]},
+            {"name": "sweep.seed", "unit": "1", "values": [1.0] * len(rows)},
+            {"name": "goal_reached", "unit": "1", "values": [1.0] * len(rows)},
+            {"name": "path_length", "unit": "m", "values": [float(i) for i in range(len(rows))]},
+        ]
+        data["runs"] = [runs[i % len(runs)] for i in range(len(rows))]
+
     large_run = os.path.join(os.path.dirname(run_page), "large_run.html")
     large_dashboard = os.path.join(os.path.dirname(dashboard), "large_dashboard.html")
     rewrite(run_page, large_run, many_iterations)
     rewrite(dashboard, large_dashboard, many_runs)
+    variants_page = os.path.join(os.path.dirname(dashboard), "long_variants.html")
+    rewrite(dashboard, variants_page, long_variant_names)
     with HeadlessChromium(1280, 1000) as browser:
         for path, what in ((large_run, "%d NMPC iterations" % n), (large_dashboard, "%d runs" % n)):
             page = browser.open("file://" + path + "#t=1&follow=0")
@@ -102,6 +123,14 @@ def main():
                 fail("%s: %s" % (what, "; ".join(problems)))
             page.screenshot(os.path.join(out, os.path.basename(path) + ".png"))
             print("%s: drawn, no error" % what)
+        page = browser.open("file://" + variants_page)
+        page.wait_for(READY)
+        cells = page.evaluate("window.wpgDashboard.boxCells")
+        wide = [c for c in cells if not c.get("labelWidth", 1e9) <= c["slot"]]
+        if len(cells) != 24 or wide:
+            fail("long variant names: %d boxes, labels wider than their slot: %s" % (len(cells), wide[:3]))
+        page.screenshot(os.path.join(out, "long_variants.png"))
+        print("24 variants with long names: every label within its box's slot")
     return 0
 
 

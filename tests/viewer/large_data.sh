@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # large_data.sh WPG: pages holding arrays beyond what a call's arguments may hold (200 000 NMPC
 # iterations in a run page, 200 000 runs in a dashboard: synthetic data in the pages of a 2 s
-# walk and of a 2-run batch, check_large_data.py) draw without error in headless Chromium.
+# walk and of a 2-run batch, check_large_data.py) draw without error in headless Chromium; long
+# variant names fit their boxes.
 set -euo pipefail
 # shellcheck source=common.sh
 source "$(dirname "$0")/common.sh"
