@@ -92,6 +92,17 @@ def main():
         if not os.path.isfile(os.path.join(runs_folder, name + ".html")):
             fail("no run page for %s in %s" % (name, runs_folder))
     print("%d run pages in %s" % (len(names), runs_folder))
+    # The size budget of a study's pages (docs/viewer.md): at most 25 kB per second walked
+    # by its runs (a page of a run not replayed), plus the shared script and the dashboard.
+    with h5py.File(study, "r") as f:
+        walked = float(sum(f["batch/summary/duration"][()]))
+    pages = sum(os.path.getsize(os.path.join(runs_folder, n)) for n in os.listdir(runs_folder)
+                if n.endswith(".html"))
+    print("run pages: %.2f MB for %.0f s walked (%.1f kB/s), the dashboard %.2f MB, the script %.2f MB"
+          % (pages / 1e6, walked, pages / walked / 1e3, os.path.getsize(page_path) / 1e6,
+             os.path.getsize(os.path.join(runs_folder, "wpg_viewer.js")) / 1e6))
+    if pages > 25e3 * walked:
+        fail("the run pages are %.1f kB per second walked, over the budget of 25" % (pages / walked / 1e3))
 
     with HeadlessChromium(1280, 2000) as browser:
         page = browser.open("file://" + page_path)

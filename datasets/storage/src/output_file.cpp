@@ -121,6 +121,11 @@ bool holdsKind(const std::string& path, OutputKind kind, std::uintmax_t size) {
       const std::size_t space = first.find(' ');
       return space != std::string::npos && first.compare(space, 9, " version ") == 0;
     }
+    case OutputKind::kSqlite: {
+      static const char signature[17] = "SQLite format 3";  // and its NUL: 16 bytes
+      char bytes[16] = {};
+      return in.read(bytes, 16) && std::memcmp(bytes, signature, 16) == 0;
+    }
     case OutputKind::kText: {
       char c = 0;
       for (int i = 0; i < (1 << 16) && in.get(c); ++i)
@@ -145,6 +150,7 @@ const char* outputKindName(OutputKind kind) {
     case OutputKind::kJson: return "a JSON file";
     case OutputKind::kHtml: return "an HTML page";
     case OutputKind::kBenchmarkLog: return "a benchmark log";
+    case OutputKind::kSqlite: return "an SQLite database";
     case OutputKind::kText: return "a text file";
   }
   return "a file";

@@ -25,6 +25,7 @@ enum class OutputKind {
   kJson,  // first non-blank character '{' or '['
   kHtml,  // first non-blank character '<' (the pages of `wpg view`)
   kBenchmarkLog,  // first line "<library> version <number>" (OMPL's benchmark log format)
+  kSqlite,  // "SQLite format 3\0" at offset 0 (the Planner Arena database of --ompl-log)
   kText,  // CSV, Markdown, YAML: no NUL byte in the first 64 KiB (a dataset or figure has one)
 };
 const char* outputKindName(OutputKind kind);  // "an HDF5 file", "a PNG image", "a JSON file"
