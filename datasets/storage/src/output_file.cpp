@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 #include <mutex>
+#include <set>
 #include <stdexcept>
 
 #include <fcntl.h>
@@ -211,12 +212,14 @@ void checkWritableParent(const std::string& output) {
 
 void checkOutputPaths(const std::vector<PlannedOutput>& outputs,
                       const std::vector<std::string>& inputs) {
-  for (std::size_t i = 0; i < outputs.size(); ++i) {
-    checkOutputPath(outputs[i].path, outputs[i].kind, inputs);
-    checkWritableParent(outputs[i].path);
-    for (std::size_t j = 0; j < i; ++j)
-      if (fs::path(outputs[i].path).lexically_normal() == fs::path(outputs[j].path).lexically_normal())
-        refuse(outputs[i].path, outputs[i].kind, "a path the command also writes another output to");
+  // A set, not a pair-wise comparison: the run pages of a study's dashboard are one output
+  // per run (10^4 runs were 5 * 10^7 comparisons).
+  std::set<fs::path> seen;
+  for (const PlannedOutput& output : outputs) {
+    checkOutputPath(output.path, output.kind, inputs);
+    checkWritableParent(output.path);
+    if (!seen.insert(fs::path(output.path).lexically_normal()).second)
+      refuse(output.path, output.kind, "a path the command also writes another output to");
   }
 }
 
