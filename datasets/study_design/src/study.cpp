@@ -250,7 +250,8 @@ Study loadStudy(const std::string& path, const BaseResolver& resolve_base,
   std::vector<std::string> constants;
   if (detail::present(top, "set")) {
     const YAML::Node set = detail::entry(top, "set");
-    if (!set.IsMap() || set.size() == 0) source.fail("set", "a non-empty map of dotted scenario keys to values", set);
+    if (!set.IsMap() || set.size() == 0)
+      source.fail("set", "a non-empty map of dotted scenario keys to values", set);
     for (const auto& item : set) {
       if (!item.first.IsScalar()) source.fail("set", "keys that are dotted paths", item.first);
       const SweptValue value = sweptValue(item.first.Scalar(), item.second);
