@@ -2,7 +2,7 @@
 # scripts/fuzz.sh [SECONDS] [TARGET...]: runs each libFuzzer target (tests/fuzz/README.md) for
 # SECONDS (default 30: CI's smoke run, 4 x 30 s) in the sanitizer tree build-sanitize/ (or
 # $WPG_SANITIZE_BUILD_DIR; built when needed). Targets: fuzz_scenario_loader,
-# fuzz_run_dataset_reader, fuzz_study_loader, fuzz_shard_reader (default: all four). The corpus grows in BUILD/fuzz/<target>/corpus and is
+# fuzz_run_dataset_reader, fuzz_study_loader, fuzz_shard_reader, fuzz_view_page (default: all five). The corpus grows in BUILD/fuzz/<target>/corpus and is
 # kept between runs; the seeds and tests/fuzz/regressions/<target>/ are run first. Fails on a
 # crash, hang (> 10 s for one input), leak, sanitizer report or allocation over 1 GB; the
 # input that did it is BUILD/fuzz/<target>/crash-* (or timeout-*, leak-*, oom-*).
@@ -16,7 +16,8 @@ seconds="${1:-30}"
 [[ "$seconds" =~ ^[1-9][0-9]*$ ]] || { echo "fuzz: error: SECONDS must be a positive integer, got '$seconds'" >&2; exit 2; }
 shift $(($# > 0 ? 1 : 0))
 targets=("$@")
-all_targets=(fuzz_scenario_loader fuzz_run_dataset_reader fuzz_study_loader fuzz_shard_reader)
+all_targets=(fuzz_scenario_loader fuzz_run_dataset_reader fuzz_study_loader fuzz_shard_reader
+             fuzz_view_page)
 ((${#targets[@]})) || targets=("${all_targets[@]}")
 for target in "${targets[@]}"; do
   [[ " ${all_targets[*]} " == *" $target "* ]] \
@@ -70,7 +71,7 @@ for target in "${targets[@]}"; do
     fuzz_scenario_loader)
       seeds=("$repo/datasets/scenarios" "$repo/tests/fuzz/seeds/scenario_loader")
       extra=(-dict="$repo/tests/fuzz/scenario_loader.dict") ;;
-    fuzz_run_dataset_reader)
+    fuzz_run_dataset_reader|fuzz_view_page)
       seeds=("$dataset_seeds" "$build/fuzz/seeds/fuzz_run_dataset_reader-heaps") ;;
     fuzz_study_loader)
       seeds=("$repo/datasets/studies" "$repo/tests/cli/studies" "$repo/tests/cli/bad_studies"

@@ -17,12 +17,14 @@
 #include "analysis_scripts.hpp"
 #include "command_options.hpp"
 #include "comparison_files.hpp"
+#include "data_paths.hpp"
 #include "error_messages.hpp"
 #include "exit_codes.hpp"
 #include "study_request_options.hpp"
 #include "study_progress.hpp"
 #include "summary_printing.hpp"
 #include "wpg/datasets/storage/batch_index.hpp"
+#include "wpg/engine/comparison_benchmark_logs.hpp"
 #include "wpg/engine/comparison_study_run.hpp"
 
 namespace fs = std::filesystem;
@@ -94,6 +96,18 @@ int compareCommand(const CompareOptions& options) {
   if (!result.ompl_logs.empty()) {
     std::cout << ", OMPL logs";
     for (const std::string& log : result.ompl_logs) std::cout << " " << log;
+    // The same as Planner Arena's database (Python's sqlite3: no OMPL script needed).
+    std::vector<std::string> arguments = result.ompl_logs;
+    const std::string database = engine::benchmarkDatabasePath(request.ompl_log);
+    arguments.insert(arguments.end(), {"-o", database});
+    const std::string script =
+        (fs::path(dataDirectory()) / "analysis" / "ompl_benchmark_database.py").string();
+    std::cout.flush();
+    if (runAnalysisScript(script, arguments) == 0) {
+      std::cout << ", database " << database;
+    } else {
+      printWarning("the Planner Arena database could not be written (Python 3's sqlite3?)");
+    }
   }
   std::cout << "\n";
   // Runs that miss the goal are results of the comparison, not errors of the command.

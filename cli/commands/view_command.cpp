@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <iostream>
 #include <system_error>
+#include <vector>
 
 #include "command_options.hpp"
 #include "data_paths.hpp"
@@ -23,9 +24,13 @@ namespace fs = std::filesystem;
 namespace wpg::cli {
 namespace {
 
-void checkOutput(const std::string& page, const std::string& input) {
+// Every file the command writes, through the checks of every other output (docs/robustness.md),
+// before the bundle is looked for and before any run is read.
+void checkOutputs(const std::vector<datasets::PlannedOutput>& outputs, const std::string& input,
+                  const std::string& runs_folder = "") {
   try {
-    datasets::checkOutputPath(page, datasets::OutputKind::kHtml, {input});
+    if (!runs_folder.empty()) datasets::checkOutputFolder(runs_folder);
+    datasets::checkOutputPaths(outputs, {input});
   } catch (const datasets::InputError& e) {
     throw UsageError(e.what());
   }
@@ -67,15 +72,17 @@ int viewCommand(const ViewOptions& options) {
     else if (!options.run.empty() && batch) page = fs::path(file).replace_extension("." + options.run + ".html").string();
     else page = fs::path(file).replace_extension(".html").string();
   }
-  checkOutput(page, file);
-  const viewer::ViewerAssets assets = viewer::loadViewerAssets(dataDirectory());
-
   if (dashboard) {
-    const viewer::DashboardPages pages = viewer::writeDashboard(assets, file, page, robotsDirectory());
+    const viewer::DashboardPlan plan = viewer::planDashboard(file, page);
+    checkOutputs(plan.outputs, file, plan.runs_folder);
+    const viewer::ViewerAssets assets = viewer::loadViewerAssets(dataDirectory());
+    const viewer::DashboardPages pages = viewer::writeDashboard(assets, plan, robotsDirectory());
     std::cout << "page: " << pages.page << sizeText(pages.page) << ", " << pages.runs
               << " run pages in " << pages.runs_folder << '\n';
     return kExitSuccess;
   }
+  checkOutputs({{page, datasets::OutputKind::kHtml}}, file);
+  const viewer::ViewerAssets assets = viewer::loadViewerAssets(dataDirectory());
   const viewer::LoadedRun run = viewer::loadRun(file, options.run, robotsDirectory());
   viewer::writePage(assets, page, viewer::runSceneJson(run));
   std::cout << "page: " << page << sizeText(page) << '\n';

@@ -48,8 +48,8 @@ def main():
             first_plans[name]["algorithm"] = plans.attrs["algorithm"]
         commit = f.attrs["wpg_commit"]
     files = sorted(os.listdir(folder))
-    if files != sorted(w + ".log" for w in worlds):
-        fail("%s holds %s, expected one log per world %s" % (folder, files, worlds))
+    if files != sorted([w + ".log" for w in worlds] + ["benchmark.db"]):
+        fail("%s holds %s, expected one log per world %s and benchmark.db" % (folder, files, worlds))
     checked = 0
     for world in worlds:
         try:

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # compare_ompl_log.sh WPG STUDY.yaml: `wpg compare --ompl-log DIR` writes one OMPL benchmark log
 # per world that a reader written from OMPL's documented grammar parses, with every run of the
-# study (check_ompl_log.py); an --ompl-log that is a file is refused before anything runs.
+# study (check_ompl_log.py), and their Planner Arena database (check_ompl_database.py); an
+# --ompl-log that is a file is refused before anything runs.
 set -euo pipefail
 # shellcheck source=common.sh
 source "$(dirname "$0")/common.sh"
@@ -11,6 +12,8 @@ make_workdir
   || fail "compare --ompl-log: exit status $?"
 grep -q "OMPL logs" "$WORKDIR/stdout" || fail "compare does not name the logs: $(cat "$WORKDIR/stdout")"
 "$PYTHON" "$HERE/check_ompl_log.py" "$WORKDIR/logs" "$WORKDIR/out/study.h5" || fail "the OMPL logs"
+grep -q "database $WORKDIR/logs/benchmark.db" "$WORKDIR/stdout" || fail "compare does not name the database"
+"$PYTHON" "$HERE/check_ompl_database.py" "$WORKDIR/logs" || fail "the Planner Arena database"
 
 touch "$WORKDIR/a_file"
 status=0

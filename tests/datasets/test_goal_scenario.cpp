@@ -11,7 +11,9 @@
 #include "hand_made_run.hpp"
 #include "hdf5_read.hpp"
 #include "test_support.hpp"
+#include "wpg/datasets/storage/read_limits.hpp"
 #include "wpg/datasets/storage/run_dataset.hpp"
+#include "wpg/datasets/storage/run_scene_reader.hpp"
 #include "wpg/datasets/input/scenario.hpp"
 
 namespace {
@@ -160,6 +162,58 @@ TEST_F(GoalDataset, PlansRoutesAndGoalAttributesAreWritten) {
   EXPECT_THROW(wpg::datasets::writeRunDataset((directory_ / "x.h5").string(), plain, result,
                                               nullptr, nullptr, &goal),
                std::invalid_argument);
+}
+
+// The route plans a page draws are bounded (read_limits.hpp): a crafted file whose plans each
+// named every row of `routes` made a page 100 times its size.
+void replaceDataset(const std::string& path, const std::string& name, const std::vector<hsize_t>& dims,
+                    const H5::PredType& type, const void* data) {
+  H5::H5File file(path, H5F_ACC_RDWR);
+  H5::Group plans = file.openGroup("/runs/goal_unknown_obstacle/plans");
+  plans.unlink(name);
+  plans.createDataSet(name, type, H5::DataSpace(static_cast<int>(dims.size()), dims.data()))
+      .write(data, type);
+}
+
+TEST_F(GoalDataset, RoutePlansBeyondTheirLimitsAreRefused) {
+  using wpg::datasets::readRoutePlans;
+  const Scenario scenario = loadScenario(shipped("goal_unknown_obstacle"), {}, kRobotsDir);
+  const wpg::WalkResult result = wpg_test::handMadeResult(200, 6, 10);
+  wpg::datasets::GoalOutcome goal;
+  goal.outcome = "reached";
+  for (int i = 0; i < 2; ++i) {
+    wpg::datasets::RoutePlanRecord plan;
+    plan.time = 0.5 * i;
+    for (int k = 0; k < 3; ++k) plan.route.emplace_back(i + k, k, 0.0);
+    goal.plans.push_back(plan);
+  }
+  const std::string path = (directory_ / "plans.h5").string();
+  const auto write = [&] { wpg::datasets::writeRunDataset(path, scenario, result, nullptr, nullptr, &goal); };
+  const std::string run = "goal_unknown_obstacle";
+  write();
+  ASSERT_EQ(readRoutePlans(path, run).size(), 2u);
+
+  // Two plans naming the same rows: each route has its own, in order.
+  const std::vector<int> same_rows = {0, 0};
+  replaceDataset(path, "route_start", {2}, H5::PredType::NATIVE_INT, same_rows.data());
+  expectInputError([&] { readRoutePlans(path, run); }, path,
+                   {"route_start row 1: expected 3", "got start 0 count 3"});
+
+  // More waypoints than kMaxStoredRouteWaypoints in all.
+  write();
+  const hsize_t rows = wpg::datasets::kMaxStoredRouteWaypoints + 1;
+  const std::vector<double> waypoints(3 * rows, 0.0);
+  replaceDataset(path, "routes", {rows, 3}, H5::PredType::NATIVE_DOUBLE, waypoints.data());
+  expectInputError([&] { readRoutePlans(path, run); }, path,
+                   {"plans/routes declares 100001 rows: expected at most 100000"});
+
+  // More plans than kMaxStoredPlans.
+  write();
+  const hsize_t plans = wpg::datasets::kMaxStoredPlans + 1;
+  const std::vector<double> times(plans, 0.0);
+  replaceDataset(path, "time", {plans}, H5::PredType::NATIVE_DOUBLE, times.data());
+  expectInputError([&] { readRoutePlans(path, run); }, path,
+                   {"plans/time declares 10001 rows: expected at most 10000"});
 }
 
 }  // namespace

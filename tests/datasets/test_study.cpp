@@ -180,3 +180,26 @@ TEST_F(StudyFiles, ThreadsDoNotChangeTheRunsNorTheError) {
     }
   }
 }
+
+TEST_F(StudyFiles, SetHoldsConstantsThatAreNotSwept) {
+  const Study study = load(
+      "name: demo\nbase: walk_forward\nset: {duration: 2.5, walking.weight_jerk: 1.0e-4}\n"
+      "sweep:\n  grid:\n    walking.weight_cop: [100.0, 1000.0]\n");
+  ASSERT_EQ(study.runs.size(), 2u);
+  EXPECT_EQ(study.keys, (std::vector<std::string>{"walking.weight_cop"}));  // no column for set:
+  for (const auto& run : study.runs) {
+    EXPECT_EQ(run.scenario.request.duration, 2.5);
+    EXPECT_EQ(run.scenario.walking.weight_jerk, 1.0e-4);
+    ASSERT_EQ(run.swept.size(), 1u);
+  }
+  const auto bad = [&](const std::string& text, std::initializer_list<std::string> parts) {
+    wpg_test::expectInputError([&] { load(text); }, (directory_ / "study.yaml").string(), parts);
+  };
+  // A key both set and swept; a value the scenario refuses, named as set:, not as swept.
+  bad("name: demo\nbase: walk_forward\nset: {duration: 3.0}\nsweep: {grid: {duration: [4.0]}}\n",
+      {"set", "'duration' is also swept"});
+  bad("name: demo\nbase: walk_forward\nset: {duration: -1.0}\nsweep: {grid: {robot_mass: [56.0]}}\n",
+      {"(set by the study's set: 'duration=-1.0')", "key 'duration'"});
+  bad("name: demo\nbase: walk_forward\nset: [duration]\nsweep: {grid: {robot_mass: [56.0]}}\n",
+      {"set", "a non-empty map of dotted scenario keys to values"});
+}

@@ -222,3 +222,23 @@ def test_plans_predict_the_executed_com_and_read_back_the_same(walk, tmp_path):
     off = wpg.run("walk_forward", overrides=dict(OVERRIDES, **{"generator.record_plan": False}))
     assert off.plans is None
     np.testing.assert_array_equal(off.com, walk.com)
+
+
+def test_route_plans_of_a_walk_to_a_goal(walk, tmp_path):
+    run = wpg.run("goal_with_yaw")
+    plans = run.route_plans
+    assert len(plans) >= 1 and plans["trigger"][0] == "start", plans
+    assert plans["status"][0] == "exact_solution"
+    route = plans["route"][0]
+    assert route.ndim == 2 and route.shape[1] == 3 and len(route) >= 2
+    # The route starts where the robot stood and ends at the goal (3, 1.5), within its tolerance.
+    assert np.hypot(*(route[-1, :2] - [3.0, 1.5])) < 0.1, route[-1]
+    assert plans.attrs["units"]["route"] == "m, m, rad"
+    # Read back: the file's plans/ group, the same numbers (wall times included: stored).
+    run.save(tmp_path / "goal.h5")
+    back = wpg.io.load_run(tmp_path / "goal.h5").route_plans
+    assert list(back.columns) == list(plans.columns) and len(back) == len(plans)
+    for column in plans.columns:
+        for a, b in zip(plans[column], back[column]):
+            assert np.array_equal(np.asarray(a), np.asarray(b), equal_nan=not isinstance(a, str)), column
+    assert len(walk.route_plans) == 0  # a walk on a velocity command plans nothing

@@ -29,6 +29,42 @@ def fail(message):
     sys.exit(1)
 
 
+def check_batch_views(browser, page, page_path, study, folder):
+    """A batch's metric and view are in the URL; its default metric is a tracking one; two
+    swept keys give a heatmap whose cells are the medians of the file's runs."""
+    import numpy as np
+    state = page.evaluate("[window.wpgDashboard.metric, window.wpgDashboard.view, window.location.hash]")
+    if state[0] != "velocity_error_rms" or "metric=velocity_error_rms" not in state[2]:
+        fail("batch default: metric %s, URL %s (expected velocity_error_rms, in the URL)" % (state[0], state[2]))
+    with h5py.File(study, "r") as f:
+        s = f["batch/summary"]
+        keys = [k.decode() if isinstance(k, bytes) else k for k in f.attrs["swept_keys"]]
+        x_key, y_key = "sweep." + keys[1], "sweep." + keys[-1]
+        xs, ys, metric = s[x_key][()], s[y_key][()], s["cop_margin_min"][()]
+    view = "heatmap:%s:%s" % (x_key, y_key)
+    page = browser.open("file://%s#metric=cop_margin_min&view=%s" % (page_path, view))
+    page.wait_for(READY)
+    problems = page.problems(folder)
+    if problems:
+        fail("heatmap: " + "; ".join(problems))
+    drawn = page.evaluate("window.wpgDashboard")
+    if (drawn["metric"], drawn["view"]) != ("cop_margin_min", view):
+        fail("the URL's metric and view not shown: %s, %s" % (drawn["metric"], drawn["view"]))
+    cells = drawn["heatCells"]
+    pairs = {(float(x), float(y)) for x, y in zip(xs, ys)}
+    # The page's numbers have 9 significant digits (page_json.hpp).
+    near = lambda a, b: np.abs(a - b) <= 1e-8 * np.maximum(1.0, np.abs(b))
+    if len(cells) != len(pairs) or sum(c["n"] for c in cells) != len(xs):
+        fail("heatmap: %d cells of %d runs, expected %d pairs of %d runs"
+             % (len(cells), sum(c["n"] for c in cells), len(pairs), len(xs)))
+    for c in cells:
+        want = np.median(metric[near(xs, c["x"]) & near(ys, c["y"])])
+        if not near(c["median"], want):
+            fail("heatmap cell %s: median %r, the file's %r" % (c, c["median"], want))
+    print("heatmap %s x %s: %d cells, medians as the file's; metric and view from the URL"
+          % (x_key, y_key, len(cells)))
+
+
 def main():
     page_path, study, out = (os.path.abspath(a) for a in sys.argv[1:4])
     folder = "file://" + os.path.dirname(page_path) + "/"
@@ -56,6 +92,17 @@ def main():
         if not os.path.isfile(os.path.join(runs_folder, name + ".html")):
             fail("no run page for %s in %s" % (name, runs_folder))
     print("%d run pages in %s" % (len(names), runs_folder))
+    # The size budget of a study's pages (docs/viewer.md): at most 25 kB per second walked
+    # by its runs (a page of a run not replayed), plus the shared script and the dashboard.
+    with h5py.File(study, "r") as f:
+        walked = float(sum(f["batch/summary/duration"][()]))
+    pages = sum(os.path.getsize(os.path.join(runs_folder, n)) for n in os.listdir(runs_folder)
+                if n.endswith(".html"))
+    print("run pages: %.2f MB for %.0f s walked (%.1f kB/s), the dashboard %.2f MB, the script %.2f MB"
+          % (pages / 1e6, walked, pages / walked / 1e3, os.path.getsize(page_path) / 1e6,
+             os.path.getsize(os.path.join(runs_folder, "wpg_viewer.js")) / 1e6))
+    if pages > 25e3 * walked:
+        fail("the run pages are %.1f kB per second walked, over the budget of 25" % (pages / walked / 1e3))
 
     with HeadlessChromium(1280, 2000) as browser:
         page = browser.open("file://" + page_path)
@@ -92,10 +139,15 @@ def main():
                     fail("the top view of %s, seed %g: caption %r, expected 'seed %g · %d/%d "
                          "reached' and %d blocked" % (world, seed, caption, seed, reached, runs, blocked))
             print("top-view captions: %s" % "; ".join(shown))
+            # Variant names side by side never run into each other: each fits its slot.
+            wide = [c for c in drawn["boxCells"] if c["labelWidth"] > c["slot"]]
+            if wide:
+                fail("box labels wider than their slot: %s" % wide)
         elif drawn["topViews"] != min(len(names), 240):
             fail("%d top views, expected one per run (%d)" % (drawn["topViews"], len(names)))
         else:
             print("%d runs, a top view each" % len(names))
+            check_batch_views(browser, page, page_path, study, folder)
 
         run_page = os.path.join(runs_folder, names[0] + ".html")
         page = browser.open("file://" + run_page + "#t=1")

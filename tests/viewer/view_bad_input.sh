@@ -34,6 +34,24 @@ if grep -q "the viewer is not built" "$WORKDIR/probe.err"; then
 else
   rm -rf "$WORKDIR/probe" "$WORKDIR/probe.err"
   expect_bad "unknown run" "no run /runs/nobody" "$WORKDIR/walk.h5" --run nobody
+  # Route plans are bounded (datasets/SCHEMA.md, "Reading"): 2000 plans each naming all 1000
+  # rows of routes (a 2 M-waypoint page from a small file), and 10001 plans.
+  plans() {  # plans FILE PLANS ROUTE_ROWS SAME_ROWS: a plans/ group in the run of FILE
+    "$PYTHON" - "$@" <<'PY'
+import sys, h5py, numpy as np
+path, p, r, same = sys.argv[1], int(sys.argv[2]), int(sys.argv[3]), sys.argv[4] == "1"
+with h5py.File(path, "r+") as f:
+    g = f["runs"][list(f["runs"])[0]].create_group("plans")
+    g["time"] = np.zeros(p); g["trigger"] = np.zeros(p, "i4"); g["status"] = np.zeros(p, "i4")
+    g["routes"] = np.zeros((r, 3))
+    g["route_start"] = np.zeros(p, "i4") if same else np.arange(p, dtype="i4") * (r // p)
+    g["route_count"] = np.full(p, r if same else r // p, "i4")
+PY
+  }
+  cp "$WORKDIR/walk.h5" "$WORKDIR/plans_same.h5" && plans "$WORKDIR/plans_same.h5" 2000 1000 1
+  expect_bad "plans sharing their rows" "route_start row 1: expected 1000" "$WORKDIR/plans_same.h5"
+  cp "$WORKDIR/walk.h5" "$WORKDIR/plans_many.h5" && plans "$WORKDIR/plans_many.h5" 10001 10001 0
+  expect_bad "10001 plans" "plans/time declares 10001 rows: expected at most 10000" "$WORKDIR/plans_many.h5"
 fi
 expect_bad "output over the input" "an input of the command" "$WORKDIR/walk.h5" -o "$WORKDIR/walk.h5"
 WPG_VIEWER_DIR="$WORKDIR/no_bundle" expect_bad "no bundle" "the viewer is not built" "$WORKDIR/walk.h5"

@@ -1,7 +1,7 @@
 // Charts of the dashboard, drawn on canvases by this file: box plots of groups of runs with
 // every run as a point, a scatter of a metric against a swept key, and bars of success rates.
 // Each point knows its run: hovering shows it, a click opens its page.
-import { element, format, quantile } from './data.js';
+import { element, format, highest, lowest, quantile } from './data.js';
 
 const PAD = { left: 64, right: 16, top: 16, bottom: 58 };
 
@@ -13,6 +13,17 @@ function niceTicks(low, high, count) {
   const ticks = [];
   for (let v = Math.ceil(low / step) * step; v <= high + 1e-9 * span; v += step) ticks.push(Math.abs(v) < 1e-12 * span ? 0 : v);
   return ticks;
+}
+
+// `text` cut to `width` pixels with an ellipsis in its middle (variant names side by side must
+// not run into each other; their ends are what tells them apart); the whole name is in the
+// tooltip of what it labels.
+export function fitText(g, text, width) {
+  if (g.measureText(text).width <= width) return text;
+  const cut = (keep) => text.slice(0, Math.ceil(keep / 2)) + '…' + text.slice(text.length - Math.floor(keep / 2));
+  let keep = text.length - 1;
+  while (keep > 0 && g.measureText(cut(keep)).width > width) keep -= 1;
+  return keep > 0 ? cut(keep) : '…';
 }
 
 // A canvas that fills its container's width, with hit-testing of the points drawn on it.
@@ -106,8 +117,8 @@ export class Chart {
 export function drawBoxPlots(chart, boxes, groups, yLabel, logScale) {
   const g = chart.begin();
   const finite = boxes.flatMap((b) => b.values.map((v) => v.value)).filter((v) => Number.isFinite(v) && (!logScale || v > 0));
-  let low = finite.length ? Math.min(...finite) : 0;
-  let high = finite.length ? Math.max(...finite) : 1;
+  let low = finite.length ? lowest(finite) : 0;
+  let high = finite.length ? highest(finite) : 1;
   if (logScale) { low /= 1.3; high *= 1.3; } else {
     const pad = 0.06 * (high - low || Math.abs(high) || 1);
     low -= pad; high += pad;
@@ -131,8 +142,8 @@ export function drawBoxPlots(chart, boxes, groups, yLabel, logScale) {
       const numbers = values.map((v) => v.value);
       const [q1, median, q3] = [0.25, 0.5, 0.75].map((q) => quantile(numbers, q));
       const iqr = q3 - q1;
-      const lowWhisker = Math.min(...numbers.filter((v) => v >= q1 - 1.5 * iqr));
-      const highWhisker = Math.max(...numbers.filter((v) => v <= q3 + 1.5 * iqr));
+      const lowWhisker = lowest(numbers.filter((v) => v >= q1 - 1.5 * iqr));
+      const highWhisker = highest(numbers.filter((v) => v <= q3 + 1.5 * iqr));
       g.strokeStyle = box.colour;
       g.fillStyle = box.colour + '33';
       g.lineWidth = 1.4;
@@ -158,15 +169,17 @@ export function drawBoxPlots(chart, boxes, groups, yLabel, logScale) {
     g.fillStyle = '#4b5563';
     g.textAlign = 'center';
     g.textBaseline = 'top';
-    g.fillText(`${box.label}`, cx, chart.height - PAD.bottom + 6);
+    const shown = fitText(g, `${box.label}`, slot - 4);
+    g.fillText(shown, cx, chart.height - PAD.bottom + 6);
+    chart.points.push({ rect: [cx - slot / 2, chart.height - PAD.bottom + 4, cx + slot / 2, chart.height - PAD.bottom + 30], label: `${box.group ? box.group + ' ' : ''}${box.label}\nn=${values.length}` });
     g.fillStyle = '#94a3b8';
-    g.fillText(`n=${values.length}${missing ? ` · n/a ${missing}` : ''}`, cx, chart.height - PAD.bottom + 20);
-    drawn.push({ group: box.group, label: box.label, n: values.length, missing });
+    g.fillText(fitText(g, `n=${values.length}${missing ? ` · n/a ${missing}` : ''}`, slot - 4), cx, chart.height - PAD.bottom + 20);
+    drawn.push({ group: box.group, label: box.label, n: values.length, missing, labelWidth: g.measureText(shown).width, slot });
   }
   g.fillStyle = '#0f172a';
   g.font = '600 12px system-ui, sans-serif';
   for (const [group, xs] of Object.entries(groupSpans)) {
-    if (groups.length > 1 || group) g.fillText(group, (Math.min(...xs) + Math.max(...xs)) / 2, chart.height - PAD.bottom + 36);
+    if (groups.length > 1 || group) g.fillText(fitText(g, group, highest(xs) - lowest(xs) + slot - 4), (lowest(xs) + highest(xs)) / 2, chart.height - PAD.bottom + 36);
   }
   return drawn;
 }
@@ -177,8 +190,8 @@ export function drawScatter(chart, points, xLabel, yLabel, logScale) {
   const ok = points.filter((p) => Number.isFinite(p.x) && Number.isFinite(p.y) && (!logScale || p.y > 0));
   const xs = ok.map((p) => p.x);
   const ys = ok.map((p) => p.y);
-  let [x0, x1] = xs.length ? [Math.min(...xs), Math.max(...xs)] : [0, 1];
-  let [y0, y1] = ys.length ? [Math.min(...ys), Math.max(...ys)] : [0, 1];
+  let [x0, x1] = xs.length ? [lowest(xs), highest(xs)] : [0, 1];
+  let [y0, y1] = ys.length ? [lowest(ys), highest(ys)] : [0, 1];
   const xp = 0.05 * (x1 - x0 || Math.abs(x1) || 1);
   x0 -= xp; x1 += xp;
   if (logScale) { y0 /= 1.3; y1 *= 1.3; } else {
@@ -230,9 +243,45 @@ export function drawRates(chart, bars, groups) {
     g.fillText(`${bar.count}/${bar.total}`, cx, y(bar.rate) - 2);
     g.textBaseline = 'top';
     g.fillStyle = '#4b5563';
-    g.fillText(bar.label, cx, chart.height - PAD.bottom + 6);
+    g.fillText(fitText(g, bar.label, slot - 4), cx, chart.height - PAD.bottom + 6);
   }
   g.fillStyle = '#0f172a';
   g.font = '600 12px system-ui, sans-serif';
-  for (const [group, xs] of Object.entries(spans)) g.fillText(group, (Math.min(...xs) + Math.max(...xs)) / 2, chart.height - PAD.bottom + 22);
+  for (const [group, xs] of Object.entries(spans)) g.fillText(fitText(g, group, highest(xs) - lowest(xs) + slot - 4), (lowest(xs) + highest(xs)) / 2, chart.height - PAD.bottom + 22);
+}
+
+// A heatmap of a metric over two swept keys: a cell per pair of values (xs by ys, in the
+// study's order), coloured by the median of its runs' finite values (light low, dark high),
+// the median written in it. cells: [{x, y, median, n}]. Returns the cells drawn.
+export function drawHeatmap(chart, xValues, yValues, cells, xLabel, yLabel, valueLabel) {
+  const g = chart.begin();
+  const left = PAD.left + 30;
+  const width = (chart.width - left - PAD.right) / Math.max(1, xValues.length);
+  const height = (chart.height - PAD.top - PAD.bottom) / Math.max(1, yValues.length);
+  const finite = cells.filter((c) => Number.isFinite(c.median)).map((c) => c.median);
+  const [low, high] = finite.length ? [lowest(finite), highest(finite)] : [0, 1];
+  g.textAlign = 'center';
+  g.textBaseline = 'middle';
+  for (const c of cells) {
+    const x0 = left + xValues.indexOf(c.x) * width;
+    const y0 = PAD.top + (yValues.length - 1 - yValues.indexOf(c.y)) * height;
+    const f = Number.isFinite(c.median) ? (c.median - low) / (high - low || 1) : null;
+    g.fillStyle = f === null ? '#f1f5f9' : `hsl(215, 70%, ${Math.round(92 - 57 * f)}%)`;
+    g.fillRect(x0 + 1, y0 + 1, width - 2, height - 2);
+    g.fillStyle = f !== null && f > 0.55 ? '#ffffff' : '#0f172a';
+    g.fillText(fitText(g, format(c.median, 3), width - 4), x0 + width / 2, y0 + height / 2);
+    chart.points.push({ rect: [x0, y0, x0 + width, y0 + height], label: `${xLabel} ${format(c.x, 4)}, ${yLabel} ${format(c.y, 4)}\n${valueLabel}: median ${format(c.median, 4)} (${c.n} runs)` });
+  }
+  g.fillStyle = '#4b5563';
+  xValues.forEach((v, i) => g.fillText(fitText(g, format(v, 3), width - 4), left + (i + 0.5) * width, chart.height - PAD.bottom + 12));
+  g.textAlign = 'right';
+  yValues.forEach((v, i) => g.fillText(fitText(g, format(v, 3), left - 8), left - 4, PAD.top + (yValues.length - 0.5 - i) * height));
+  g.textAlign = 'center';
+  g.fillText(xLabel, (left + chart.width - PAD.right) / 2, chart.height - PAD.bottom + 32);
+  g.save();
+  g.translate(14, (PAD.top + chart.height - PAD.bottom) / 2);
+  g.rotate(-Math.PI / 2);
+  g.fillText(yLabel, 0, 0);
+  g.restore();
+  return cells;
 }

@@ -2,15 +2,21 @@
 // summary table and see it per world × variant (box plots, every run a point) or against a
 // swept key; the success rates; a top view of every run (every seed of every world); the table
 // of runs. Every run opens its page (PAGE_runs/<run>.html, written beside the dashboard).
-import { VARIANT_COLOURS, element, format } from './data.js';
-import { Chart, drawBoxPlots, drawRates, drawScatter } from './charts.js';
+import { VARIANT_COLOURS, element, format, quantile } from './data.js';
+import { Chart, drawBoxPlots, drawHeatmap, drawRates, drawScatter } from './charts.js';
+import { parseFragment } from './player.js';
 import { boundsOf, topView } from './top_views.js';
 
 // Columns that are bookkeeping, not metrics of a run.
 const NOT_METRICS = new Set(['index', 'done']);
 const FIRST_METRICS = ['time_to_goal', 'path_length', 'distance', 'velocity_error_rms', 'cop_margin_min',
   'step_centre_clearance_min', 'steps', 'nmpc_time_p99'];
+// A batch sweeps walking keys on a velocity command: how well it tracked and balanced first
+// (its path length mostly repeats the commanded speed).
+const FIRST_BATCH_METRICS = ['velocity_error_rms', 'cop_margin_min', 'steady_tracking', 'step_feasibility_margin_min',
+  'nmpc_time_p99', 'path_length'];
 const SHOWN_TOP_VIEWS = 240;  // more are drawn on request: a canvas each
+const SHOWN_TABLE_ROWS = 500;  // rows of the runs table, in its order; more on request
 
 function card(title, note) {
   const body = element('div');
@@ -59,22 +65,36 @@ export function dashboardPage(app, data) {
   dashboard.append(metricCard);
   // The first metric of FIRST_METRICS that varies between the runs, else the first that does.
   const varies = (c) => new Set(c.values.filter((v) => Number.isFinite(v))).size > 1;
-  const preferred = FIRST_METRICS.find((name) => columns[name] && varies(columns[name])) ||
+  const preferred = (comparison ? FIRST_METRICS : FIRST_BATCH_METRICS).find((name) => columns[name] && varies(columns[name])) ||
     (metrics.find(varies) || {}).name;
-  const state = {
-    metric: preferred || (metrics[0] && metrics[0].name),
-    axis: comparison ? 'cells' : (swept[0] ? swept[0].name : 'index'),
-    log: false,
-  };
   const axisOptions = [];
   if (comparison) axisOptions.push(['cells', 'world × variant']);
-  for (const c of swept) if (c.name !== 'sweep.world' && c.name !== 'sweep.variant') axisOptions.push([c.name, 'against ' + c.name.slice(6)]);
+  const sweptKeys = swept.filter((c) => c.name !== 'sweep.world' && c.name !== 'sweep.variant');
+  for (const c of sweptKeys) axisOptions.push([c.name, 'against ' + c.name.slice(6)]);
+  // Two swept keys at once: a heatmap of the metric's median per pair of values.
+  for (let i = 0; i < sweptKeys.length; ++i) {
+    for (let j = i + 1; j < sweptKeys.length; ++j) {
+      axisOptions.push([`heatmap:${sweptKeys[i].name}:${sweptKeys[j].name}`, `heatmap ${sweptKeys[i].name.slice(6)} × ${sweptKeys[j].name.slice(6)}`]);
+    }
+  }
   axisOptions.push(['index', 'against the run index']);
+  // The metric and the view are in the URL (#metric=...&view=...): a link opens the same chart.
+  const fragment = parseFragment(window.location.hash);
+  const state = {
+    metric: columns[fragment.metric] && metrics.includes(columns[fragment.metric]) ? fragment.metric : preferred || (metrics[0] && metrics[0].name),
+    axis: axisOptions.some(([v]) => v === fragment.view) ? fragment.view : comparison ? 'cells' : (swept[0] ? swept[0].name : 'index'),
+    log: fragment.log === '1',
+  };
+  const remember = () => {
+    const hash = `#metric=${encodeURIComponent(state.metric)}&view=${encodeURIComponent(state.axis)}${state.log ? '&log=1' : ''}`;
+    window.history.replaceState(null, '', hash);
+  };
   const pickers = element('div', { class: 'pickers' }, [
     select('metric', metrics.map((c) => [c.name, `${c.name}${c.unit && c.unit !== '1' ? ' [' + c.unit + ']' : ''}`]), state.metric, (v) => { state.metric = v; drawMetric(); }),
     select('view', axisOptions, state.axis, (v) => { state.axis = v; drawMetric(); }),
   ]);
   const log = element('label', {}, [element('input', { type: 'checkbox' }), ' log scale']);
+  log.firstChild.checked = state.log;
   log.firstChild.addEventListener('change', () => { state.log = log.firstChild.checked; drawMetric(); });
   pickers.append(log);
   metricBody.append(pickers);
@@ -83,9 +103,28 @@ export function dashboardPage(app, data) {
   function drawMetric() {
     const column = columns[state.metric];
     if (!column) return;
+    remember();
+    published.metric = state.metric;
+    published.view = state.axis;
     const label = `${column.name}${column.unit && column.unit !== '1' ? ' [' + column.unit + ']' : ''}`;
     const done = (row) => runs[row] !== null;
-    if (state.axis === 'cells') {
+    if (state.axis.startsWith('heatmap:')) {
+      const [, xKey, yKey] = state.axis.split(':');
+      const xs = columns[xKey].values;
+      const ys = columns[yKey].values;
+      const xValues = [...new Set(xs)];
+      const yValues = [...new Set(ys)];
+      const groups = new Map();
+      for (let row = 0; row < rows; ++row) {
+        if (!done(row)) continue;
+        const key = xValues.indexOf(xs[row]) + ',' + yValues.indexOf(ys[row]);
+        if (!groups.has(key)) groups.set(key, { x: xs[row], y: ys[row], values: [] });
+        groups.get(key).values.push(column.values[row]);
+      }
+      const cells = [...groups.values()].map((c) => ({ x: c.x, y: c.y, median: quantile(c.values, 0.5), n: c.values.length }));
+      published.heatCells = drawHeatmap(metricChart, xValues, yValues, cells, xKey.slice(6), yKey.slice(6), label)
+        .map((c) => ({ x: c.x, y: c.y, median: c.median, n: c.n }));
+    } else if (state.axis === 'cells') {
       const boxes = [];
       for (const world of data.worlds) {
         for (const variant of data.variants) {
@@ -218,9 +257,14 @@ export function dashboardPage(app, data) {
   tableBody.append(tableBox);
   let sortKey = null;
   let sortDown = false;
+  let shownRows = SHOWN_TABLE_ROWS;
+  const moreRows = element('button', { class: 'link' });
+  moreRows.addEventListener('click', () => { shownRows += SHOWN_TABLE_ROWS; drawTable(); });
+  tableBody.append(moreRows);
   function drawTable() {
     const keys = [...shownColumns, state.metric].filter((k, i, all) => columns[k] && all.indexOf(k) === i);
-    const order = [...Array(rows).keys()].filter((row) => runs[row]);
+    const order = [];
+    for (let row = 0; row < rows; ++row) if (runs[row]) order.push(row);
     if (sortKey) {
       const values = columns[sortKey].values;
       order.sort((a, b) => {
@@ -233,7 +277,7 @@ export function dashboardPage(app, data) {
       text: k.replace(/^sweep\./, '') + (sortKey === k ? (sortDown ? ' ▼' : ' ▲') : ''),
       onclick: () => { sortDown = sortKey === k ? !sortDown : false; sortKey = k; drawTable(); },
     }))));
-    for (const row of order) {
+    for (const row of order.slice(0, shownRows)) {
       const cells = keys.map((k, i) => {
         const v = columns[k].values[row];
         if (i === 0) return element('td', {}, [element('a', { href: runs[row].page, text: String(v) })]);
@@ -241,6 +285,8 @@ export function dashboardPage(app, data) {
       });
       table.append(element('tr', { class: reachedOf(row) ? '' : 'failed' }, cells));
     }
+    const hidden = order.length - Math.min(shownRows, order.length);
+    moreRows.textContent = hidden ? `show ${Math.min(SHOWN_TABLE_ROWS, hidden)} more of ${hidden}` : '';
   }
 
   const drawAll = () => { drawMetric(); drawSuccess(); drawTable(); };

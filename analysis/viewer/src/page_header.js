@@ -13,6 +13,6 @@ export function showProvenance(data) {
     class: 'provenance',
     text: `${p.source || ''} · wpg ${p.version || '?'} (${p.commit || 'unknown'}) · ${p.machine || '?'} · ${p.date || '?'}`,
   }));
-  header.append(...parts);
+  for (const part of parts) header.append(part);
   document.title = data.title || 'wpg view';
 }

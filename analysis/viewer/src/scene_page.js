@@ -1,7 +1,7 @@
 // The page of one run: the 3-D scene (robot, footsteps, traces, obstacles, goal, routes,
 // pushes), the player under it and the linked plots below, all following one time.
 import * as THREE from 'three';
-import { COLOURS, element, floats, format, sampleAt, uint8s } from './data.js';
+import { COLOURS, element, floats, format, highest, lowest, sampleAt, uint8s } from './data.js';
 import { Player, parseFragment } from './player.js';
 import { SceneView } from './scene_view.js';
 import { SimpleFigure, UrdfRobot } from './robot_figure.js';
@@ -39,7 +39,7 @@ function extentOf(walk) {
   for (let i = 0; i < walk.time.length; i += 10) { xs.push(walk.com[3 * i]); ys.push(walk.com[3 * i + 1]); }
   for (const o of walk.obstacles) for (const [x, y] of o.outline.length ? o.outline : [[o.center[0] - o.radius, o.center[1] - o.radius], [o.center[0] + o.radius, o.center[1] + o.radius]]) { xs.push(x); ys.push(y); }
   if (walk.goal) { xs.push(walk.goal.x); ys.push(walk.goal.y); }
-  return [Math.min(...xs), Math.max(...xs), Math.min(...ys), Math.max(...ys)];
+  return [lowest(xs), highest(xs), lowest(ys), highest(ys)];
 }
 
 function legendItem(colour, text, shape = 'line') {
@@ -118,7 +118,7 @@ export function scenePage(app, data) {
     }
     const xs = corners.map((c) => c[0]);
     const ys = corners.map((c) => c[1]);
-    document.body.dataset.robotBox = [Math.min(...xs), Math.min(...ys), Math.max(...xs), Math.max(...ys)].map((v) => v.toFixed(1)).join(',');
+    document.body.dataset.robotBox = [lowest(xs), lowest(ys), highest(xs), highest(ys)].map((v) => v.toFixed(1)).join(',');
     document.body.dataset.wpgTime = player.t.toFixed(4);
     document.body.dataset.wpgReady = '1';
   };

@@ -2,7 +2,7 @@
 // CoM and CoP x, CoM and CoP y, and the NMPC solve time per iteration coloured by status, with
 // the support phases shaded. The curves are drawn once; the cursor (the current time, with the
 // values there) on an overlay canvas at every frame. A click or a drag on a plot seeks.
-import { COLOURS, STATUS_STYLE, element, format, quantile, sampleAt } from './data.js';
+import { COLOURS, STATUS_STYLE, element, format, highest, quantile, sampleAt } from './data.js';
 
 const PAD = { left: 54, right: 12, top: 24, bottom: 22 };
 
@@ -245,8 +245,8 @@ function solveTimePlot(container, walk, spans, timeRange, onSeek) {
   // As the PNG figure (analysis/run_figure/time_panels.py): 1.5 times the largest iteration,
   // unless it is above twice the 98th percentile; then twice that percentile.
   const p98 = quantile(micro, 0.98);
-  const typicalTop = Math.max(Math.max(...micro) <= 2 * p98 ? 1.5 * Math.max(...micro) : 2 * p98, 1e-3);
-  const largest = Math.max(...micro);
+  const typicalTop = Math.max(highest(micro) <= 2 * p98 ? 1.5 * highest(micro) : 2 * p98, 1e-3);
+  const largest = highest(micro);
   const outliers = micro.filter((v) => v > typicalTop).length;
   const counts = {};
   mpc.status.forEach((code) => { counts[code] = (counts[code] || 0) + 1; });

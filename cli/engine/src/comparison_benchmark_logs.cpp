@@ -53,6 +53,11 @@ void checkBenchmarkLogOutputs(const std::string& folder, const std::vector<std::
     datasets::checkOutputPath((fs::path(folder) / (world + ".log")).string(),
                               datasets::OutputKind::kBenchmarkLog);
   }
+  datasets::checkOutputPath(benchmarkDatabasePath(folder), datasets::OutputKind::kSqlite);
+}
+
+std::string benchmarkDatabasePath(const std::string& folder) {
+  return (fs::path(folder) / "benchmark.db").string();
 }
 
 std::vector<std::string> writeComparisonBenchmarkLogs(const std::string& study_file,

@@ -1,6 +1,8 @@
 // What the Python package asks of the engine, as the `wpg` subcommands ask it (engine_calls.hpp).
 #include "engine_calls.hpp"
 
+#include <algorithm>
+
 #include "wpg/datasets/input/input_error.hpp"
 #include "wpg/datasets/input/yaml_input.hpp"
 #include "wpg/datasets/storage/run_dataset_reader.hpp"
@@ -89,6 +91,45 @@ std::shared_ptr<RunSession> loadStoredRun(const std::string& path, const std::st
   result.failure = stored.result.message;
   result.walk.result = std::move(stored.result);
   return run;
+}
+
+namespace {
+// The name of `code` in a `codes` text ("0=start, 1=strayed, ..."), or the code itself.
+std::string codeName(const std::string& codes, int code) {
+  const std::string key = std::to_string(code) + "=";
+  for (std::size_t at = 0; at < codes.size();) {
+    const std::size_t end = std::min(codes.find(", ", at), codes.size());
+    if (codes.compare(at, key.size(), key) == 0) return codes.substr(at + key.size(), end - at - key.size());
+    at = end + 2;
+  }
+  return std::to_string(code);
+}
+}  // namespace
+
+std::vector<datasets::StoredRoutePlan> routePlans(const RunSession& run) {
+  if (!run.stored_file.empty()) return datasets::readRoutePlans(run.stored_file, run.stored_name);
+  std::vector<datasets::StoredRoutePlan> plans;
+  if (!run.result.walk.goal) return plans;
+  const datasets::GoalOutcome& goal = *run.result.walk.goal;
+  for (const datasets::RoutePlanRecord& record : goal.plans) {
+    datasets::StoredRoutePlan plan;
+    plan.time = record.time;
+    plan.trigger = record.trigger;
+    plan.status = record.status;
+    plan.trigger_name = codeName(goal.trigger_codes, record.trigger);
+    plan.status_name = codeName(goal.status_codes, record.status);
+    plan.planning_time = record.planning_time;
+    plan.route_length = record.route_length;
+    plan.solution_length = record.solution_length;
+    plan.simplified_solution_length = record.simplified_solution_length;
+    plan.solution_clearance = record.solution_clearance;
+    plan.simplification_time = record.simplification_time;
+    plan.graph_states = record.graph_states;
+    plan.graph_motions = record.graph_motions;
+    plan.route = record.route;
+    plans.push_back(std::move(plan));
+  }
+  return plans;
 }
 
 StudyFiles runBatch(const std::string& study, const std::string& output, int jobs, bool resume,

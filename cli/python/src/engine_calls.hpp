@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "wpg/datasets/input/scenario.hpp"
+#include "wpg/datasets/storage/run_scene_reader.hpp"
 #include "wpg/engine/data_paths.hpp"
 #include "wpg/engine/scenario_request.hpp"
 #include "wpg/engine/scenario_run.hpp"
@@ -36,6 +37,11 @@ struct RunSession {
 std::shared_ptr<RunSession> runScenarioFile(const std::string& scenario,
                                             std::vector<std::string> overrides, bool replay,
                                             bool filter);
+
+// The route plans of a walk to a goal (empty otherwise), as a run file stores them: from the
+// result of a run, or read back from the file of a run loaded (datasets::readRoutePlans, bounded
+// and checked: InputError).
+std::vector<datasets::StoredRoutePlan> routePlans(const RunSession& run);
 
 // The run's dataset at `path`, as `wpg run -o PATH` writes it: the output path checked first
 // (never over an input, a folder, a device or a file that is not HDF5: InputError), its folder

@@ -220,6 +220,44 @@ py::object onlinePlan(const OnlineStep& step) {
   return out;
 }
 
+// One column per field of the route plans (routePlans), the routes as (k, 3) arrays.
+py::dict routePlanColumns(const RunSession& run) {
+  const std::vector<datasets::StoredRoutePlan> plans = routePlans(run);
+  py::list time, trigger, status, planning_time, route_length, solution_length, simplified,
+      clearance, simplification_time, graph_states, graph_motions, route;
+  for (const datasets::StoredRoutePlan& plan : plans) {
+    time.append(plan.time);
+    trigger.append(plan.trigger_name);
+    status.append(plan.status_name);
+    planning_time.append(plan.planning_time);
+    route_length.append(plan.route_length);
+    solution_length.append(plan.solution_length);
+    simplified.append(plan.simplified_solution_length);
+    clearance.append(plan.solution_clearance);
+    simplification_time.append(plan.simplification_time);
+    graph_states.append(plan.graph_states);
+    graph_motions.append(plan.graph_motions);
+    py::array_t<double> points({static_cast<py::ssize_t>(plan.route.size()), py::ssize_t{3}});
+    for (std::size_t i = 0; i < plan.route.size(); ++i)
+      for (int c = 0; c < 3; ++c) points.mutable_at(i, c) = plan.route[i][c];
+    route.append(points);
+  }
+  py::dict out;
+  out["time"] = time;
+  out["trigger"] = trigger;
+  out["status"] = status;
+  out["planning_time"] = planning_time;
+  out["route_length"] = route_length;
+  out["solution_length"] = solution_length;
+  out["simplified_solution_length"] = simplified;
+  out["solution_clearance"] = clearance;
+  out["simplification_time"] = simplification_time;
+  out["graph_states"] = graph_states;
+  out["graph_motions"] = graph_motions;
+  out["route"] = route;
+  return out;
+}
+
 py::list constraintFamilies(const RunSession& run) {
   py::list out;
   for (const ConstraintFamilyInfo& family : run.result.walk.result.trajectory.constraint_families) {
@@ -378,6 +416,7 @@ void bindRun(py::module_& m) {
       .def("constraint_families", &constraintFamilies)
       .def("plan_columns",
            [](const RunSession& r) { return planColumns(r.result.walk.result.trajectory.plans); })
+      .def("route_plan_columns", &routePlanColumns)
       .def("metric_rows", [](const RunSession& r) { return metricRows(&r.result.metrics); })
       .def("save", &saveRun, py::arg("path"), py::call_guard<py::gil_scoped_release>());
 }

@@ -154,6 +154,25 @@ class Run:
         return self._cache["plans"]
 
     @property
+    def route_plans(self):
+        """pandas.DataFrame, one row per route plan of a walk to a goal (none otherwise), as
+        the dataset's plans/ group holds them (datasets/SCHEMA.md): time [s], trigger and
+        status (text, e.g. "start", "exact_solution"), planning_time and simplification_time
+        [s, wall time], route_length, solution_length, simplified_solution_length,
+        solution_clearance [m], graph_states, graph_motions, and route: the (k, 3) waypoints x,
+        y [m], yaw [rad] (k = 0: no route)."""
+        if "route_plans" not in self._cache:
+            import pandas as pd
+            frame = pd.DataFrame(self._core.route_plan_columns())
+            frame.attrs["units"] = {"time": "s", "trigger": "1", "status": "1", "planning_time": "s",
+                                    "route_length": "m", "solution_length": "m",
+                                    "simplified_solution_length": "m", "solution_clearance": "m",
+                                    "simplification_time": "s", "graph_states": "1",
+                                    "graph_motions": "1", "route": "m, m, rad"}
+            self._cache["route_plans"] = frame
+        return self._cache["route_plans"].copy()
+
+    @property
     def metrics(self):
         """dict of the metrics of datasets/METRICS.md: the names and values `wpg analyze`
         gives (counts as int; NaN where a metric does not apply)."""

@@ -49,16 +49,43 @@ std::vector<std::string> distinct(const std::vector<std::string>& cells) {
 
 }  // namespace
 
-DashboardPages writeDashboard(const ViewerAssets& assets, const std::string& batch_file,
-                              const std::string& page, const std::string& robots_directory) {
-  const datasets::BatchSummaryTable table = datasets::readBatchSummary(batch_file);
+DashboardPlan planDashboard(const std::string& batch_file, const std::string& page) {
+  DashboardPlan plan;
+  plan.batch_file = batch_file;
+  plan.page = page;
+  plan.table = datasets::readBatchSummary(batch_file);
+  const auto& table = plan.table;
+  const auto name_at = std::find(table.column_names.begin(), table.column_names.end(), "name");
+  if (name_at == table.column_names.end())
+    throw datasets::InputError(batch_file + ": /batch/summary has no column 'name'");
+  const std::vector<std::string>& names = table.cells[name_at - table.column_names.begin()];
+  const auto done_at = std::find(table.column_names.begin(), table.column_names.end(), "done");
+  const std::vector<std::string>* done =
+      done_at == table.column_names.end() ? nullptr : &table.cells[done_at - table.column_names.begin()];
+  const fs::path page_path(page);
+  const fs::path folder = page_path.parent_path() / (page_path.stem().string() + "_runs");
+  plan.runs_folder = folder.string();
+  plan.outputs.push_back({page, datasets::OutputKind::kHtml});
+  plan.outputs.push_back({(folder / "wpg_viewer.js").string(), datasets::OutputKind::kText});
+  for (std::size_t row = 0; row < table.rows; ++row) {
+    if (done && (*done)[row] != "1") continue;  // not run yet (an unfinished batch)
+    plan.finished.push_back(row);
+    plan.run_pages.push_back((folder / fileNameOf(names[row])).string());
+    plan.outputs.push_back({plan.run_pages.back(), datasets::OutputKind::kHtml});
+  }
+  return plan;
+}
+
+DashboardPages writeDashboard(const ViewerAssets& assets, const DashboardPlan& plan,
+                              const std::string& robots_directory) {
+  const std::string& batch_file = plan.batch_file;
+  const std::string& page = plan.page;
+  const datasets::BatchSummaryTable& table = plan.table;
   const auto column = [&](const std::string& name) -> const std::vector<std::string>* {
     const auto it = std::find(table.column_names.begin(), table.column_names.end(), name);
     return it == table.column_names.end() ? nullptr : &table.cells[it - table.column_names.begin()];
   };
-  const std::vector<std::string>* names = column("name");
-  const std::vector<std::string>* done = column("done");
-  if (!names) throw datasets::InputError(batch_file + ": /batch/summary has no column 'name'");
+  const std::vector<std::string>& names = *column("name");
   const std::vector<std::string>* worlds = column("sweep.world");
   const std::vector<std::string>* variants = column("sweep.variant");
   const std::vector<std::string>* seeds = column("sweep.seed");
@@ -67,8 +94,8 @@ DashboardPages writeDashboard(const ViewerAssets& assets, const std::string& bat
   DashboardPages pages;
   pages.page = page;
   const fs::path page_path(page);
-  const std::string folder_name = page_path.stem().string() + "_runs";
-  pages.runs_folder = (page_path.parent_path() / folder_name).string();
+  const std::string folder_name = fs::path(plan.runs_folder).filename().string();
+  pages.runs_folder = plan.runs_folder;
 
   Json json;
   json.beginObject();
@@ -104,20 +131,20 @@ DashboardPages writeDashboard(const ViewerAssets& assets, const std::string& bat
 
   // First every run is read (a run the readers refuse stops the command before anything is
   // written) and its top view kept; then the run pages, then the dashboard.
-  std::vector<std::size_t> finished;
   json.key("runs").beginArray();
+  std::size_t next = 0;  // in plan.finished
   for (std::size_t row = 0; row < table.rows; ++row) {
-    if (done && (*done)[row] != "1") {
+    if (next == plan.finished.size() || plan.finished[next] != row) {
       json.null();  // not run yet (an unfinished batch)
       continue;
     }
-    const LoadedRun run = loadRun(batch_file, (*names)[row], robots_directory);
-    finished.push_back(row);
+    const LoadedRun run = loadRun(batch_file, names[row], robots_directory);
     json.beginObject();
-    json.key("page").string(folder_name + "/" + fileNameOf(run.stored.name));
+    json.key("page").string(folder_name + "/" + fs::path(plan.run_pages[next]).filename().string());
     json.key("top");
     writeTopView(json, run);
     json.endObject();
+    ++next;
   }
   json.endArray();
   json.key("subtitle").string(
@@ -132,10 +159,10 @@ DashboardPages writeDashboard(const ViewerAssets& assets, const std::string& bat
   // One script for every run page (a study of 100 runs would hold 100 copies otherwise).
   writeTextFile((fs::path(pages.runs_folder) / "wpg_viewer.js").string(), assets.script);
   const std::string back = "../" + page_path.filename().string();
-  for (const std::size_t row : finished) {
-    const LoadedRun run = loadRun(batch_file, (*names)[row], robots_directory);
-    writePage(assets, (fs::path(pages.runs_folder) / fileNameOf(run.stored.name)).string(),
-              runSceneJson(run, back, table.study + " dashboard"), "wpg_viewer.js");
+  for (std::size_t i = 0; i < plan.finished.size(); ++i) {
+    const LoadedRun run = loadRun(batch_file, names[plan.finished[i]], robots_directory);
+    writePage(assets, plan.run_pages[i], runSceneJson(run, back, table.study + " dashboard"),
+              "wpg_viewer.js");
     ++pages.runs;
   }
   writePage(assets, page, json.text());

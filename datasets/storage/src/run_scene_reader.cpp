@@ -26,11 +26,12 @@ class SceneReader {
 
   [[noreturn]] void fail(const std::string& message) const { throw InputError(path_ + ": " + message); }
 
-  // A float dataset of `rows` rows (0: any number up to kMaxStoredSamples) and `columns`
-  // columns (0: 1-D; -1: any, returned in *columns_found); finite values.
+  // A float dataset of `rows` rows (0: any number up to `max_rows`) and `columns` columns (0:
+  // 1-D; -1: any, returned in *columns_found); finite values.
   std::vector<double> doubles(const H5::Group& group, const std::string& name, hsize_t rows,
                               long columns, hsize_t* columns_found = nullptr,
-                              hsize_t* rows_found = nullptr) const {
+                              hsize_t* rows_found = nullptr,
+                              std::uint64_t max_rows = kMaxStoredSamples) const {
     const std::string what = "dataset " + where_ + name;
     if (group.childObjType(name) != H5O_TYPE_DATASET) fail(where_ + name + " is not a dataset");
     const H5::DataSet dataset = group.openDataSet(name);
@@ -43,9 +44,9 @@ class SceneReader {
       fail(what + " has " + std::to_string(dims[0]) + " rows, expected " + std::to_string(rows) +
            " (as its time)");
     }
-    if (dims[0] > kMaxStoredSamples) {
+    if (dims[0] > max_rows) {
       fail(what + " declares " + std::to_string(dims[0]) + " rows: expected at most " +
-           std::to_string(kMaxStoredSamples));
+           std::to_string(max_rows));
     }
     const hsize_t width = rank == 1 ? 1 : dims[1];
     if (columns > 0 && width != static_cast<hsize_t>(columns)) {
@@ -143,7 +144,7 @@ std::vector<StoredRoutePlan> readPlans(const std::string& path, const H5::Group&
                                        const std::string& where) {
   const SceneReader reader(path, where);
   hsize_t p = 0;
-  const std::vector<double> times = reader.doubles(plans, "time", 0, 0, nullptr, &p);
+  const std::vector<double> times = reader.doubles(plans, "time", 0, 0, nullptr, &p, kMaxStoredPlans);
   const std::vector<int> triggers = reader.integers(plans, "trigger", p);
   const std::vector<int> statuses = reader.integers(plans, "status", p);
   const std::vector<int> starts = reader.integers(plans, "route_start", p);
@@ -167,16 +168,21 @@ std::vector<StoredRoutePlan> readPlans(const std::string& path, const H5::Group&
   const std::vector<int> graph_states = optional_counts("graph_states");
   const std::vector<int> graph_motions = optional_counts("graph_motions");
   hsize_t r = 0;
-  const std::vector<double> routes = reader.doubles(plans, "routes", 0, 3, nullptr, &r);
+  const std::vector<double> routes =
+      reader.doubles(plans, "routes", 0, 3, nullptr, &r, kMaxStoredRouteWaypoints);
   const std::string trigger_codes = codesOf(path, plans, "trigger", where);
   const std::string status_codes = codesOf(path, plans, "status", where);
   std::vector<StoredRoutePlan> result(static_cast<std::size_t>(p));
+  hsize_t next_row = 0;  // each route its own rows, in order, as the writer concatenates them
   for (std::size_t i = 0; i < result.size(); ++i) {
-    if (starts[i] < 0 || counts[i] < 0 ||
-        static_cast<hsize_t>(starts[i]) + static_cast<hsize_t>(counts[i]) > r) {
-      reader.fail("dataset " + where + "route_start row " + std::to_string(i) +
-                  ": expected rows of routes (" + std::to_string(r) + " rows) with route_count");
+    if (starts[i] < 0 || counts[i] < 0 || static_cast<hsize_t>(starts[i]) != next_row ||
+        next_row + static_cast<hsize_t>(counts[i]) > r) {
+      reader.fail("dataset " + where + "route_start row " + std::to_string(i) + ": expected " +
+                  std::to_string(next_row) + " (the routes' rows in order, each route its own; " +
+                  std::to_string(r) + " rows of routes), got start " + std::to_string(starts[i]) +
+                  " count " + std::to_string(counts[i]));
     }
+    next_row += static_cast<hsize_t>(counts[i]);
     StoredRoutePlan& plan = result[i];
     plan.time = times[i];
     plan.trigger = triggers[i];

@@ -217,15 +217,13 @@ Study loadStudy(const std::string& path, const BaseResolver& resolve_base,
   const YAML::Node root = detail::readYamlFile(path, "study file");
   study.text = detail::readTextFile(path, "study file");
   const detail::Entries top =
-      detail::readMap(root, "", {"name", "base", "sweep", "plan"},
-                      "a study: a map with name, base, sweep and optionally plan", source);
+      detail::readMap(root, "", {"name", "base", "set", "sweep", "plan"},
+                      "a study: a map with name, base, sweep and optionally set and plan", source);
   // `plan: false`: the runs leave out what each NMPC iteration predicted (mpc/plan/), as
   // `--set generator.record_plan=false` would: a smaller batch file and less writing.
-  std::vector<std::string> common;
-  if (detail::present(top, "plan") &&
-      !detail::readBoolean(detail::entry(top, "plan"), "plan", "true or false", source)) {
-    common.push_back("generator.record_plan=false");
-  }
+  const bool without_plans =
+      detail::present(top, "plan") &&
+      !detail::readBoolean(detail::entry(top, "plan"), "plan", "true or false", source);
   study.name = detail::readName(detail::entry(top, "name"), "name",
                                 "a study name (at most 32 letters, digits, _ - .)", source,
                                 kMaxStudyNameLength);
@@ -251,6 +249,28 @@ Study loadStudy(const std::string& path, const BaseResolver& resolve_base,
     base_text = detail::readTextFile(base_origin, "base scenario");
   } else {
     source.fail("base", "a shipped scenario name, a scenario file or an inline scenario map", base);
+  }
+
+  // `set:`: constant overrides of every run (not swept: no column), applied before the sweep's
+  // values; checked alone first, so that an error in one of them is named as set, not swept.
+  std::vector<std::string> constants;
+  if (detail::present(top, "set")) {
+    const YAML::Node set = detail::entry(top, "set");
+    if (!set.IsMap() || set.size() == 0)
+      source.fail("set", "a non-empty map of dotted scenario keys to values", set);
+    for (const auto& item : set) {
+      if (!item.first.IsScalar()) source.fail("set", "keys that are dotted paths", item.first);
+      const SweptValue value = sweptValue(item.first.Scalar(), item.second);
+      constants.push_back(value.key + "=" + value.value);
+    }
+    std::vector<std::string> overrides = constants;
+    overrides.push_back("name=" + study.name + "_0");
+    try {
+      (void)loadScenarioText(base_text, base_origin, overrides, robots_dir);
+    } catch (const std::exception& e) {
+      throw InputError(path + ": " +
+                       detail::renameOverrides(detail::oneLine(e.what()), "the study's set:"));
+    }
   }
 
   // The sweep's sections, each a list of keys with one value per point of the section.
@@ -281,13 +301,19 @@ Study loadStudy(const std::string& path, const BaseResolver& resolve_base,
         if (known == key.key) source.failWith("sweep", "key '" + key.key + "' is swept twice");
       }
       study.keys.push_back(key.key);
+      for (const std::string& constant : constants) {
+        if (constant.compare(0, key.key.size() + 1, key.key + "=") == 0)
+          source.failWith("set", "key '" + key.key + "' is also swept: set it or sweep it");
+      }
     }
   }
+
+  if (without_plans) constants.push_back("generator.record_plan=false");
 
   // The keys first, on the first value of each (a typo is named before any count or
   // expansion): the scenario must have them all.
   {
-    std::vector<std::string> overrides = common;
+    std::vector<std::string> overrides = constants;
     for (const auto* section : {&grid, &zip, &random})
       for (const KeyValues& key : *section) overrides.push_back(key.key + "=" + key.values.front().value);
     overrides.push_back("name=" + study.name + "_0");
@@ -348,7 +374,7 @@ Study loadStudy(const std::string& path, const BaseResolver& resolve_base,
 
   // Each run's scenario: the base with its values, loaded and validated as `wpg run` does.
   loadStudyScenarios(&study, threads, [&](StudyRun& run) {
-    std::vector<std::string> overrides = common;
+    std::vector<std::string> overrides = constants;
     std::string described;
     for (const SweptValue& value : run.swept) {
       overrides.push_back(value.key + "=" + value.value);

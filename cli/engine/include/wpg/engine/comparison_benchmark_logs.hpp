@@ -7,7 +7,12 @@
 
 namespace wpg::engine {
 
-// Before the study runs: `folder` may be created and `folder`/<world>.log written. Throws
+// `folder`/benchmark.db: the logs as the SQLite database Planner Arena opens (the front end
+// writes it after the logs, analysis/ompl_benchmark_database.py).
+std::string benchmarkDatabasePath(const std::string& folder);
+
+// Before the study runs: `folder` may be created, `folder`/<world>.log and
+// `folder`/benchmark.db written. Throws
 // datasets::InputError naming the path when not.
 void checkBenchmarkLogOutputs(const std::string& folder, const std::vector<std::string>& worlds);
 

@@ -25,6 +25,7 @@ enum class OutputKind {
   kJson,  // first non-blank character '{' or '['
   kHtml,  // first non-blank character '<' (the pages of `wpg view`)
   kBenchmarkLog,  // first line "<library> version <number>" (OMPL's benchmark log format)
+  kSqlite,  // "SQLite format 3\0" at offset 0 (the Planner Arena database of --ompl-log)
   kText,  // CSV, Markdown, YAML: no NUL byte in the first 64 KiB (a dataset or figure has one)
 };
 const char* outputKindName(OutputKind kind);  // "an HDF5 file", "a PNG image", "a JSON file"
@@ -45,6 +46,12 @@ struct PlannedOutput {
 };
 void checkOutputPaths(const std::vector<PlannedOutput>& outputs,
                       const std::vector<std::string>& inputs = {});
+
+// A folder a command writes its outputs into (the run pages of `wpg view`, PAGE_runs/): absent
+// (created when written) or a folder, never a symbolic link (not followed: the pages would go
+// wherever it points). Throws InputError naming `folder` and what it is otherwise. The files
+// in it are checked one by one (checkOutputPaths).
+void checkOutputFolder(const std::string& folder);
 
 // Writes `content` to `path` atomically (TemporaryOutput, then rename). Throws
 // std::runtime_error naming `path` on an I/O error (a full disk, a file size limit: EFBIG),

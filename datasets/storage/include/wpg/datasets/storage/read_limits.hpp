@@ -14,6 +14,14 @@ namespace wpg::datasets {
 // closing sample).
 constexpr std::uint64_t kMaxStoredSamples = static_cast<std::uint64_t>(kMaxControlPeriods) + 1;
 
+// Route plans of one run (`plans/` rows) and waypoints of all its routes (`plans/routes` rows),
+// each route its own rows (route_start the rows before it): a page of `wpg view` holds every
+// waypoint, and a crafted 0.7 MB file whose 720001 plans each named all its rows made a 70 MB
+// page. The writer makes one plan at the start, at most one a second when strayed, one per
+// obstacle found in the way and three retries (walk_goal.hpp): a 3600 s walk stays far below.
+constexpr std::uint64_t kMaxStoredPlans = 10000;
+constexpr std::uint64_t kMaxStoredRouteWaypoints = 100000;
+
 // Elements of any one dataset or attribute a reader loads (2^26: 512 MiB as float64). The
 // largest dataset wpg writes, `q` of a 3600 s walk of HRP-2, has about 2.7e7.
 constexpr std::uint64_t kMaxReadElements = std::uint64_t{1} << 26;
