@@ -27,8 +27,9 @@ std::size_t sampleAt(const wpg::WalkTrajectory& t, double time) {
   return i;
 }
 
-// The robot slides along the wall's border towards its end, 3 m aside, sideways more than
-// forward, every NMPC iteration solved: only its progress says it is stuck. Blocked since the
+// The wall's way round lies 3.6 m aside of the robot, beyond generator.max_detour: the robot
+// walks up to its margin and steps in place there, every NMPC iteration solved: only its
+// progress says it is stuck. Blocked since the
 // start of the first counted 4.8 s window (three gait cycles, from one gait cycle after the
 // command starts at 1 s), in which the CoM walked less than a quarter of the 0.96 m commanded.
 TEST(BlockedWalks, WallWithNoWayRoundEndsBlocked) {
@@ -41,22 +42,23 @@ TEST(BlockedWalks, WallWithNoWayRoundEndsBlocked) {
   ASSERT_TRUE(walk.blocked);
   EXPECT_FALSE(walk.stopped_blocked);
   EXPECT_FALSE(walk.success);
-  // The stretch starts with the first counted window, [2.6, 7.4] s: x walked < 0.24 m.
+  // The stretch starts with the first window that walks less than a quarter, [8.9, 13.7] s:
+  // x walked < 0.24 m.
   const double since = walk.blocked_since;
-  EXPECT_NEAR(since, 2.6, 1e-9);
+  EXPECT_NEAR(since, 8.9, 1e-9);
   const auto x = [&](double time) { return t.com[sampleAt(t, time)].x(); };
   EXPECT_LT(x(since + 4.8) - x(since), 0.24);
   EXPECT_EQ(walk.blocked_position, t.com[sampleAt(t, since)].head<2>());
   // In front of the wall's margin (near face 1.85 m, margin 0.2 m) all along.
   for (std::size_t i = 0; i < t.size(); ++i) ASSERT_LT(t.com[i].x(), 1.65);
   EXPECT_EQ(walk.message,
-            "the robot is blocked: 0.21 m walked of the 0.96 m commanded in the 4.8 s to t = "
-            "29.9 s, since t = 2.6 s at (0.03, 0.02) m");
+            "the robot is blocked: 0.00 m walked of the 0.96 m commanded in the 4.8 s to t = "
+            "29.9 s, since t = 8.9 s at (1.29, -0.01) m");
   // The whole walk: 1.23 m along x of the 0.2 m/s commanded for 29 s.
   EXPECT_NEAR(walk.progress_ratio, t.com.back().x() / (0.2 * 29.0), 1e-3);
 }
 
-// generator.stop_when_blocked: the walk ends at the sample it is found blocked (7.4 s: the end
+// generator.stop_when_blocked: the walk ends at the sample it is found blocked (13.7 s: the end
 // of the window that starts the stretch), which closes it; what came before is the same walk.
 TEST(BlockedWalks, StopWhenBlockedEndsTheWalkWhereItIsFound) {
   const wpg::datasets::Scenario full = load("obstacle_wall");
@@ -67,13 +69,13 @@ TEST(BlockedWalks, StopWhenBlockedEndsTheWalkWhereItIsFound) {
   ASSERT_TRUE(walk.blocked);
   EXPECT_TRUE(walk.stopped_blocked);
   EXPECT_FALSE(walk.success);
-  EXPECT_NEAR(walk.blocked_since, 2.6, 1e-9);
+  EXPECT_NEAR(walk.blocked_since, 8.9, 1e-9);
   const wpg::WalkTrajectory& t = walk.trajectory;
-  EXPECT_NEAR(t.time.back(), 7.4, 1e-9);
-  EXPECT_NEAR(t.mpc.back().time, 7.4, 1e-9);  // its NMPC iteration ran, as a fall's does
+  EXPECT_NEAR(t.time.back(), 13.7, 1e-9);
+  EXPECT_NEAR(t.mpc.back().time, 13.7, 1e-9);  // its NMPC iteration ran, as a fall's does
   ASSERT_LT(t.size(), whole.trajectory.size());
   for (std::size_t i = 0; i < t.size(); ++i) ASSERT_EQ(t.com[i], whole.trajectory.com[i]) << i;
-  EXPECT_NE(walk.message.find("in the 4.8 s to t = 7.4 s, since t = 2.6 s"), std::string::npos)
+  EXPECT_NE(walk.message.find("in the 4.8 s to t = 13.7 s, since t = 8.9 s"), std::string::npos)
       << walk.message;
 }
 
@@ -103,7 +105,7 @@ TEST(BlockedWalks, WindowFromTheScenario) {
   const wpg::WalkResult walk = wpg::generateWalk(one_cycle.walking, one_cycle.request);
   ASSERT_TRUE(walk.blocked);
   EXPECT_NEAR(walk.trajectory.time.back() - walk.blocked_since, 1.6, 1e-9);
-  EXPECT_LT(walk.trajectory.time.back(), 7.4);  // found with three cycles
+  EXPECT_LT(walk.trajectory.time.back(), 13.7);  // found with three cycles
 }
 
 }  // namespace

@@ -12,7 +12,7 @@
 
 namespace {
 
-// The walk into the wall (wall_walk.hpp) ends at 20 s, the robot blocked since 2.6 s.
+// The walk into the wall (wall_walk.hpp) ends at 20 s, the robot blocked since 8.9 s.
 using wpg_test::wallWalkRequest;
 
 // The schedule until 20 s, then the end of the walk, saying whether its target was reached.
@@ -46,9 +46,9 @@ TEST(BlockedWalkLoop, EndingStuckIsBlockedUnlessTheTargetWasReached) {
   EXPECT_NEAR(stuck.trajectory.time.back(), 20.0, 1e-9);
   ASSERT_TRUE(stuck.blocked);
   EXPECT_FALSE(stuck.success);
-  EXPECT_NEAR(stuck.blocked_since, 2.6, 1e-9);
+  EXPECT_NEAR(stuck.blocked_since, 8.9, 1e-9);
   EXPECT_EQ(stuck.message, "the robot is blocked: " + stuck.blocked_description);
-  EXPECT_NE(stuck.blocked_description.find("since t = 2.6 s"), std::string::npos);
+  EXPECT_NE(stuck.blocked_description.find("since t = 8.9 s"), std::string::npos);
 
   // The same walk, its command source at its target: no verdict, the walk succeeds.
   const wpg::WalkResult reached = walk(true);

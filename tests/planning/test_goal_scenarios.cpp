@@ -90,14 +90,14 @@ TEST(ShippedGoalWalks, TheUTrapHoldsARobotCommandedStraightAtTheGoal) {
   // Held inside the U, short of its back wall (x = 2.5): the goal (4.2, 0) stays > 1.5 m away.
   EXPECT_LT(walk.final_pose.x(), 2.5);
   EXPECT_GT(walk.final_distance, 1.5);
-  // Stuck is an outcome: blocked from the window that starts at 9.2 s, in front of the back
+  // Stuck is an outcome: blocked from the window that starts at 10.9 s, in front of the back
   // wall; the goal's own outcome stays (out of time) and the message says both.
   EXPECT_TRUE(walk.walk.blocked);
-  EXPECT_NEAR(walk.walk.blocked_since, 9.2, 1e-9);
+  EXPECT_NEAR(walk.walk.blocked_since, 10.9, 1e-9);
   EXPECT_LT(walk.walk.blocked_position.x(), 2.5);
   EXPECT_EQ(walk.walk.message.rfind("goal not reached: out of time; the robot is blocked: ", 0), 0u)
       << walk.walk.message;
-  EXPECT_NE(walk.walk.message.find("since t = 9.2 s"), std::string::npos) << walk.walk.message;
+  EXPECT_NE(walk.walk.message.find("since t = 10.9 s"), std::string::npos) << walk.walk.message;
   EXPECT_LT(walk.walk.progress_ratio, 0.2);
 }
 
@@ -111,9 +111,9 @@ TEST(ShippedGoalWalks, StopWhenBlockedEndsTheTrappedGoalWalk) {
   EXPECT_FALSE(walk.goal_reached);
   ASSERT_TRUE(walk.walk.blocked);
   EXPECT_TRUE(walk.walk.stopped_blocked);
-  EXPECT_NEAR(walk.walk.blocked_since, 9.2, 1e-9);
-  EXPECT_NEAR(walk.walk.trajectory.time.back(), 9.2 + 4.8, 1e-9);
-  EXPECT_EQ(walk.outcome.rfind("blocked at t = 14.0 s, ", 0), 0u) << walk.outcome;
+  EXPECT_NEAR(walk.walk.blocked_since, 10.9, 1e-9);
+  EXPECT_NEAR(walk.walk.trajectory.time.back(), 10.9 + 4.8, 1e-9);
+  EXPECT_EQ(walk.outcome.rfind("blocked at t = 15.7 s, ", 0), 0u) << walk.outcome;
 }
 
 // The shipped goal walks reach their goals unblocked (goal_with_yaw ends with its turn on the

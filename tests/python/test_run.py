@@ -99,17 +99,17 @@ def test_a_failed_walk_is_a_result(cli, tmp_path):
 
 
 def test_a_blocked_walk_says_so_and_reads_back_the_same(cli, tmp_path):
-    # The wall with no way round: the robot slides along its border, sideways more than
-    # forward, every NMPC iteration solved; the walk ends blocked (exit 1), since the start of the first window
-    # without progress.
+    # The wall with no way round (3.6 m aside, beyond generator.max_detour): the robot steps in
+    # place in front of its margin, every NMPC iteration solved; the walk ends blocked (exit 1),
+    # since the start of the first window without progress.
     run = wpg.run("obstacle_wall")
     assert run.outcome == "blocked" and run.blocked is True
     assert run.success is False and run.exit_code == 1
     assert set(run.mpc.status) == {"solved"}
-    assert run.blocked_since == pytest.approx(2.6, abs=1e-9)
+    assert run.blocked_since == pytest.approx(8.9, abs=1e-9)
     i = int(np.argmin(abs(run.time - run.blocked_since)))
     assert run.blocked_position == tuple(run.com[i, :2])
-    assert run.message.startswith("the robot is blocked: ") and "since t = 2.6 s" in run.message
+    assert run.message.startswith("the robot is blocked: ") and "since t = 8.9 s" in run.message
     metrics = run.metrics
     assert metrics["blocked"] == 1 and metrics["blocked_since"] == run.blocked_since
     assert 0.2 < metrics["progress_ratio"] < 0.3
