@@ -11,17 +11,16 @@
 // (libFuzzer's -malloc_limit_mb): bad input is an InputError (the CLI's exit 2), any other
 // exception escapes and is a crash; an accepted run has as many rows in every per-sample
 // field as in its time, and as many MPC log rows as its log's time.
-#include <unistd.h>
 
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
-#include <filesystem>
 #include <string>
 #include <vector>
 
 #include "hdf5_image.hpp"
+#include "private_folder.hpp"
 #include "wpg/datasets/input/input_error.hpp"
 #include "wpg/datasets/storage/run_dataset_reader.hpp"
 #include "wpg/datasets/input/scenario.hpp"
@@ -34,10 +33,6 @@ std::string g_path;  // the temporary HDF5 file, rewritten for every input
 // reader refuses them) instead of finding it again at every run.
 std::uint64_t g_max_rows = std::uint64_t{1} << 40;
 
-void removeTemporaryFile() {
-  std::error_code ignored;
-  std::filesystem::remove(g_path, ignored);
-}
 
 [[noreturn]] void propertyViolated(const std::string& what) {
   std::fprintf(stderr, "fuzz_run_dataset_reader: %s\n", what.c_str());
@@ -89,14 +84,7 @@ void readLikeAnalyze() {
 }  // namespace
 
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
-  // tmpfs when there is one: the file is rewritten for every input.
-  std::error_code ec;
-  const std::filesystem::path folder =
-      std::filesystem::is_directory("/dev/shm", ec) && access("/dev/shm", W_OK) == 0
-          ? std::filesystem::path("/dev/shm")
-          : std::filesystem::temp_directory_path();
-  g_path = (folder / ("wpg-fuzz-dataset-" + std::to_string(getpid()) + ".h5")).string();
-  std::atexit(removeTemporaryFile);
+  g_path = wpg_fuzz::scratchFile("wpg-fuzz-dataset-");  // tmpfs when there is one
   if (const char* max_rows = std::getenv("WPG_FUZZ_MAX_ROWS")) {
     g_max_rows = std::strtoull(max_rows, nullptr, 10);
   }

@@ -12,17 +12,16 @@
 // input is an InputError (the CLI's exit 2); an accepted run's plans hold at most
 // kMaxStoredPlans plans and kMaxStoredRouteWaypoints waypoints; the page's JSON never holds
 // "</" (it sits inside a <script> element: a stored text must not close it).
-#include <unistd.h>
 
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
-#include <filesystem>
 #include <string>
 #include <vector>
 
 #include "hdf5_image.hpp"
+#include "private_folder.hpp"
 #include "wpg/datasets/input/input_error.hpp"
 #include "wpg/datasets/storage/read_limits.hpp"
 #include "wpg/datasets/storage/run_dataset_reader.hpp"
@@ -33,10 +32,6 @@ namespace {
 
 std::string g_path;
 
-void removeTemporaryFile() {
-  std::error_code ignored;
-  std::filesystem::remove(g_path, ignored);
-}
 
 [[noreturn]] void propertyViolated(const std::string& what) {
   std::fprintf(stderr, "fuzz_view_page: %s\n", what.c_str());
@@ -83,13 +78,7 @@ void readLikeOmplLog() {
 }  // namespace
 
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
-  std::error_code ec;
-  const std::filesystem::path folder =
-      std::filesystem::is_directory("/dev/shm", ec) && access("/dev/shm", W_OK) == 0
-          ? std::filesystem::path("/dev/shm")
-          : std::filesystem::temp_directory_path();
-  g_path = (folder / ("wpg-fuzz-page-" + std::to_string(getpid()) + ".h5")).string();
-  std::atexit(removeTemporaryFile);
+  g_path = wpg_fuzz::scratchFile("wpg-fuzz-page-");  // tmpfs when there is one
   return 0;
 }
 
