@@ -176,14 +176,19 @@ void ObstacleSelector::borderNormals(const Eigen::Vector2d& com,
     if (side_[index] == 0) side_[index] = obstacleSide(centre, feet_middle, d);
     const int side = side_[index];
     const bool fresh = side != previous_side;
-    const auto borderFrom = [&](const Eigen::Vector2d& point) {
+    // The normal of the shape (or the group's hull) facing `point`: the distance's gradient.
+    const auto facingFrom = [&](const Eigen::Vector2d& point) {
       Eigen::Vector2d facing;
       if (grouped) {
         facing = hullFacing(group_points_, group_radii_, point);
       } else {
         obstacles_.signedDistance(index, point, &facing);
       }
-      return borderNormal(group_points_, group_radii_, point, d, side, clearance, facing);
+      return facing;
+    };
+    const auto borderFrom = [&](const Eigen::Vector2d& point) {
+      return borderNormal(group_points_, group_radii_, point, d, side, clearance,
+                          facingFrom(point));
     };
     const auto offsetOf = [&](const Eigen::Vector2d& n) {
       return borderOffset(group_points_, group_radii_, n);
@@ -198,13 +203,7 @@ void ObstacleSelector::borderNormals(const Eigen::Vector2d& com,
     const Eigen::Vector2d out = side * left;
     const bool wall = !passed && offsetOf(out) - out.dot(com) + clearance > max_detour;
     if (wall) {
-      Eigen::Vector2d facing;
-      if (grouped) {
-        facing = hullFacing(group_points_, group_radii_, com);
-      } else {
-        obstacles_.signedDistance(index, com, &facing);
-      }
-      normal_[index] = facing;
+      normal_[index] = facingFrom(com);
     } else {
       // A border turned from a route point ahead must leave the robot where it is with room for a
       // step (half the clearance) on its free side; else it is turned from the CoM.
