@@ -2,7 +2,7 @@
 # plan.sh WPG: `wpg run` stores what each NMPC iteration predicted (mpc/plan/, datasets/
 # SCHEMA.md): one row per iteration, the first previewed CoM is the CoM executed at the next
 # iteration (1e-12), every landed step is the previewed step 0 of the iteration before its
-# landing. A study's `plan: false` leaves it out of every run; `plan: maybe` is one line naming
+# landing. `wpg replay` keeps the plan as it was, bit for bit. A study's `plan: false` leaves it out of every run; `plan: maybe` is one line naming
 # the key, exit 2, no file.
 set -euo pipefail
 # shellcheck source=common.sh
@@ -31,6 +31,20 @@ with h5py.File(sys.argv[1], "r") as f:
         i = int(round(row[0] / plan.attrs["sampling_period"])) - 1
         assert np.array_equal(steps[i, 0], row), (steps[i, 0], row)
     assert plan["active_rows"].shape == (k, run["mpc/slack"].shape[1])
+PY
+"$wpg" replay "$WORKDIR/curve.h5" --no-filter --no-plot -o "$WORKDIR/replayed.h5" >/dev/null
+"$PYTHON" - "$WORKDIR/curve.h5" "$WORKDIR/replayed.h5" <<'PY' || fail "wpg replay changed mpc/plan"
+import sys
+import h5py
+import numpy as np
+with h5py.File(sys.argv[1], "r") as a, h5py.File(sys.argv[2], "r") as b:
+    before, after = a["runs/curve/mpc/plan"], b["runs/curve/mpc/plan"]
+    assert sorted(before) == sorted(after), (sorted(before), sorted(after))
+    for name in before:
+        assert np.array_equal(before[name][()], after[name][()]), name
+    for name in ("samples", "steps", "sampling_period"):
+        assert before.attrs[name] == after.attrs[name], name
+    assert "q" in b["runs/curve"]
 PY
 cat >"$WORKDIR/study.yaml" <<'YAML'
 name: no_plans
