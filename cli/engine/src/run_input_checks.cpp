@@ -43,8 +43,9 @@ void checkRunInput(const datasets::Scenario& scenario, const std::string& origin
 
 void checkStudyRobotModels(const datasets::Study& study, const std::string& robots_directory) {
   std::set<std::string> replayed_robots;
-  for (const datasets::StudyRun& run : study.runs) {
-    if (run.scenario.replay) replayed_robots.insert(run.scenario.robot);
+  // The checked runs take every value of the swept keys (a swept robot's every name).
+  for (const datasets::Study::CheckedRun& run : study.checked) {
+    if (run.replay) replayed_robots.insert(run.robot);
   }
   for (const std::string& robot : replayed_robots) (void)loadRobotModel(robots_directory, robot);
 }
