@@ -493,6 +493,6 @@ PYBIND11_MODULE(_wpg, m) {
   m.def("resolve_scenario", &resolveScenarioPath, py::arg("scenario"));
   m.def("data_directory", &dataDirectory);
   m.def("metric_table", [] { return metricRows(nullptr); });
-  m.def("families", [] { return extensionList(registeredConstraintFamilies()); });
-  m.def("costs", [] { return extensionList(registeredCostTerms()); });
+  m.def("families", [] { return extensionList(wpg::registeredConstraintFamilies()); });
+  m.def("costs", [] { return extensionList(wpg::registeredCostTerms()); });
 }

@@ -40,7 +40,10 @@ std::vector<ExtensionUse> readExtensions(const YAML::Node& node, ExtensionKind k
       if (!name.empty() && std::find(names.begin(), names.end(), name) == names.end()) {
         source.failWith(childKey(section, name),
                         std::string("unknown ") + (constraint ? "constraint family" : "cost term") +
-                            didYouMean(name, names) + "; registered: " + joinNames(names));
+                            (nearestName(name, names).empty()
+                                 ? std::string()
+                                 : ", did you mean '" + nearestName(name, names) + "'?") +
+                            " (registered: " + joinNames(names) + ")");
       }
     }
   }

@@ -177,6 +177,56 @@ std::vector<Eigen::Matrix<double, Size, 1>> rowsOf(const std::vector<double>& va
 // holds external links has HDF5's new-style link storage, where getObjnameByIdx sorts every
 // link again at each call (measured: `wpg analyze` of a 200-run index 6x slower than of the
 // same runs in one file, listing the runs at each run read).
+// mpc/plan/ (datasets/SCHEMA.md) into t.plans: `k` iterations, each of the `samples` and
+// `steps` attributes' rows, checked like the rest (shapes, finite numbers, codes).
+void readPlans(const std::string& path, const H5::Group& group, const std::string& where, hsize_t k,
+               WalkTrajectory& t) {
+  const Reader reader(path, group, where);
+  const auto whole = [&](const char* name, double low, double high) {
+    const double value = reader.numberAttribute(group, name, where + " ");
+    if (!(value >= low && value <= high) || value != std::floor(value)) {
+      reader.fail("attribute " + where + " " + name + ": expected an integer from " +
+                  std::to_string(static_cast<int>(low)) + " to " +
+                  std::to_string(static_cast<int>(high)) + ", got " + std::to_string(value));
+    }
+    return static_cast<int>(value);
+  };
+  PlanLog& plans = t.plans;
+  plans.max_samples = whole("samples", 1, 200);  // the horizon's limit (WalkingParameters)
+  plans.steps = whole("steps", 1, 64);
+  plans.sampling_period = reader.numberAttribute(group, "sampling_period", where + " ");
+  const hsize_t sample_rows = k * static_cast<hsize_t>(plans.max_samples);
+  const hsize_t step_rows = k * static_cast<hsize_t>(plans.steps);
+  hsize_t rows = 0;
+  const auto rowsOf = [&](const char* name, hsize_t columns, hsize_t expected) {
+    std::vector<double> values = reader.doubles(name, columns, &rows);
+    if (rows != expected) {
+      reader.fail("dataset " + where + "/" + name + " has " + std::to_string(rows) +
+                  " rows, expected " + std::to_string(expected) +
+                  " (iterations x the `samples` or `steps` attribute)");
+    }
+    return values;
+  };
+  plans.samples = reader.counts("sample_count", k);
+  plans.com_position = rowsOf("com", 2, sample_rows);
+  plans.com_velocity = rowsOf("com_vel", 2, sample_rows);
+  plans.com_acceleration = rowsOf("com_acc", 2, sample_rows);
+  plans.jerk = rowsOf("jerk", 2, sample_rows);
+  plans.cop = rowsOf("cop", 2, sample_rows);
+  plans.step = rowsOf("steps", 4, step_rows);
+  for (const int code : reader.codes("step_side", step_rows, 0, 2))  // 0: no NMPC ran
+    plans.step_side.push_back(static_cast<std::uint8_t>(code));
+  plans.families = 0;
+  const hsize_t families = t.constraint_families.size();
+  if (group.nameExists("active_rows") && families > 0) {
+    H5::DataSet set = reader.open("active_rows", families, H5T_INTEGER, &rows);
+    if (rows != k) reader.fail("dataset " + where + "/active_rows: expected one row per iteration");
+    plans.active_rows.resize(static_cast<std::size_t>(k * families));
+    if (!plans.active_rows.empty()) set.read(plans.active_rows.data(), H5::PredType::NATIVE_INT);
+    plans.families = static_cast<int>(families);
+  }
+}
+
 std::vector<std::string> runGroupNames(const H5::Group& runs) {
   std::vector<std::string> names;
   hsize_t position = 0;
@@ -413,6 +463,9 @@ StoredRun readFile(const std::string& path, const std::string& run_name) {
     for (hsize_t i = 0; i < k; ++i) {
       t.mpc[i].commanded_velocity = Eigen::Map<const Eigen::Vector2d>(velocity.data() + 2 * i);
     }
+  }
+  if (mpc.nameExists("plan") && mpc.childObjType("plan") == H5O_TYPE_GROUP) {
+    readPlans(path, mpc.openGroup("plan"), run_path + "/mpc/plan", k, t);
   }
   return stored;
 }
