@@ -8,6 +8,7 @@
 
 #include "wpg/obstacle_tangent.hpp"
 #include "wpg/nmpc/builtin_families.hpp"
+#include "wpg/nmpc/extension_registry.hpp"
 #include "wpg/swing_foot_reach.hpp"
 
 namespace wpg {
@@ -19,6 +20,14 @@ NmpcModel makeModel(const WalkingParameters& parameters, const GeneratorSettings
                     qp::HessianFactorCache& hessian_factors) {
   NmpcModel model(parameters, settings.max_obstacles_in_qp, &hessian_factors);
   for (const auto& family : extra_families) model.addConstraintFamily(family);
+  // The registered extensions the settings name (extension_registry.hpp), for each cadence's
+  // parameters; walks start at the origin (reset()'s default; a checked start elsewhere is the
+  // caller's: checkConstraintFamily / checkCostTerm).
+  ExtensionContext context;
+  context.walking = parameters;
+  for (const ExtensionUse& use : settings.constraints)
+    model.addConstraintFamily(makeConstraintFamily(use, context));
+  for (const ExtensionUse& use : settings.costs) model.addCostTerm(makeCostTerm(use, context));
   return model;
 }
 

@@ -14,7 +14,8 @@ SAMPLES = {"time": (), "com": (3,), "com_vel": (3,), "com_acc": (3,), "cop": (2,
 STEPS = {"footsteps": (4,), "footstep_side": ()}
 MPC = ("time", "solve_time", "qp_iterations", "sqp_iterations", "status", "cost",
        "relaxed_families")
-# the NMPC's constraint families, one slack column each (libwpg/include/wpg/nmpc.hpp)
+# the NMPC's constraint families, one slack column each (libwpg/include/wpg/nmpc.hpp), then
+# those of the scenario's `constraints:` section (docs/extending.md)
 FAMILIES = "cop, step_feasibility, yaw_bound, obstacle, landing_bound, landing_yaw_bound, swing_reach"
 ROOT_ATTRS = ("schema_version", "wpg_version", "scenario")
 
@@ -75,11 +76,14 @@ def main():
                               % (where, key, mpc[key].shape, (k,)))
                 slack = mpc.get("slack")
                 if check(slack is not None, where + "/mpc/slack missing"):
-                    check(slack.attrs.get("columns") == FAMILIES,
-                          "%s/mpc/slack columns %r, expected %r"
-                          % (where, slack.attrs.get("columns"), FAMILIES))
-                    check(slack.shape == (k, 7), "%s/mpc/slack shape %s, expected %s"
-                          % (where, slack.shape, (k, 7)))
+                    columns = slack.attrs.get("columns") or ""
+                    added = columns[len(FAMILIES):].split(", ")[1:]
+                    check(columns.startswith(FAMILIES) and all(added),
+                          "%s/mpc/slack columns %r, expected %r (then the scenario's)"
+                          % (where, columns, FAMILIES))
+                    width = 7 + len(added)
+                    check(slack.shape == (k, width), "%s/mpc/slack shape %s, expected %s"
+                          % (where, slack.shape, (k, width)))
                     check(np.all(slack[()] >= 0), where + "/mpc/slack negative")
                     relaxed = mpc["relaxed_families"][()]
                     # a family's bit is set exactly when its slack is positive (above rounding)

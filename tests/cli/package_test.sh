@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # package_test.sh CMAKE BUILD_DIR DOWNSTREAM_SOURCE [CMAKE_ARG...]: installs the existing build
 # tree into a temporary prefix (no rebuild), then configures, builds and runs a downstream
-# project that uses find_package(wpg), and one beside it (downstream_core/) that asks for the
-# core component only with every other dependency of wpg unfindable; finally checks that the
+# project that uses find_package(wpg), one beside it (downstream_core/) that asks for the
+# core component only with every other dependency of wpg unfindable, and one that extends the
+# NMPC with its own family and cost term (downstream_extensions/); finally checks that the
 # installed wpg finds its installed data. The CMAKE_ARGs go to the downstream configure (an instrumented build passes its compiler
 # and sanitizer flags: its libraries need the same runtime in the downstream executable).
 set -euo pipefail
@@ -45,6 +46,16 @@ if cat <(grep -E '^CXX_(INCLUDES|DEFINES)' "$WORKDIR/core/CMakeFiles/wpg_downstr
   fail "the core-only project compiles or links against a dependency of another component"
 fi
 "$WORKDIR/core/wpg_downstream_core" "$version" || fail "the core-only downstream executable failed"
+
+# A project that extends the NMPC through the public API (docs/extending.md): its own family
+# and cost term registered by name, their finite-difference checks, a walk with both.
+"$cmake" -S "$(dirname "$downstream")/downstream_extensions" -B "$WORKDIR/extensions" \
+  -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$prefix" "${hidden[@]}" "$@" \
+  >"$WORKDIR/extensions-configure.log" 2>&1 \
+  || { cat "$WORKDIR/extensions-configure.log"; fail "configuring the extensions project"; }
+"$cmake" --build "$WORKDIR/extensions" -j2 >"$WORKDIR/extensions-build.log" 2>&1 \
+  || { cat "$WORKDIR/extensions-build.log"; fail "building the extensions project"; }
+"$WORKDIR/extensions/wpg_downstream_extensions" || fail "the extensions project's checks failed"
 
 # The installed executable with the installed data (robots, scenarios, plot script).
 data="$(dirname "$(find "$prefix" -path '*/wpg/robots' -not -path '*/doc/*' -type d | head -n1)")"

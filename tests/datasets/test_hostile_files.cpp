@@ -236,30 +236,6 @@ TEST_F(HostileFiles, DeclaredSizesBeyondTheLimitAreRefusedBeforeAllocation) {
                              {"/runs/walk_forward/footsteps declares 200000000 rows"});
 }
 
-// mpc/plan/ is read back as it was written, every number bit for bit, so that a replayed or
-// rewritten run keeps what each NMPC iteration predicted.
-TEST_F(HostileFiles, ThePlanIsReadBackAsWritten) {
-  const Scenario scenario = wpg::datasets::loadScenario(
-      wpg_test::kScenariosDir + "/walk_forward.yaml", {"duration=4"}, wpg_test::kRobotsDir);
-  const wpg::WalkResult result = wpg::generateWalk(scenario.walking, scenario.request);
-  const wpg::PlanLog& written = result.trajectory.plans;
-  ASSERT_EQ(written.size(), 40u);
-  const wpg::PlanLog& read_back = read(copy("plan.h5")).result.trajectory.plans;
-  EXPECT_EQ(read_back.max_samples, written.max_samples);
-  EXPECT_EQ(read_back.steps, written.steps);
-  EXPECT_EQ(read_back.families, written.families);
-  EXPECT_EQ(read_back.sampling_period, written.sampling_period);
-  EXPECT_EQ(read_back.samples, written.samples);
-  EXPECT_EQ(read_back.com_position, written.com_position);
-  EXPECT_EQ(read_back.com_velocity, written.com_velocity);
-  EXPECT_EQ(read_back.com_acceleration, written.com_acceleration);
-  EXPECT_EQ(read_back.jerk, written.jerk);
-  EXPECT_EQ(read_back.cop, written.cop);
-  EXPECT_EQ(read_back.step, written.step);
-  EXPECT_EQ(read_back.step_side, written.step_side);
-  EXPECT_EQ(read_back.active_rows, written.active_rows);
-}
-
 // A plan's sizes come from its attributes, bounded before any dataset is read; each dataset
 // must hold exactly its iterations' rows.
 TEST_F(HostileFiles, APlanOfBadSizesIsRefusedWithItsDataset) {

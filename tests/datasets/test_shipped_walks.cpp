@@ -103,7 +103,7 @@ INSTANTIATE_TEST_SUITE_P(Scenarios, ShippedWalk,
                                            "obstacle_gap", "obstacle_enclosure",
                                            "obstacle_turning", "obstacle_lateral",
                                            "obstacle_wall", "obstacle_staggered_boxes",
-                                           "obstacle_narrow_doorway"));
+                                           "obstacle_narrow_doorway", "corridor"));
 
 TEST(ShippedWalks, EveryShippedScenarioIsCovered) {
   int count = 0;
@@ -111,7 +111,7 @@ TEST(ShippedWalks, EveryShippedScenarioIsCovered) {
     if (entry.path().extension() == ".yaml") ++count;
   // + the four walks to a goal (goal_*.yaml), run by tests/planning/test_goal_scenarios.cpp:
   // they need the route planner.
-  EXPECT_EQ(count, 23 + 4) << "a new shipped scenario must be added to the list above";
+  EXPECT_EQ(count, 24 + 4) << "a new shipped scenario must be added to the list above";
 }
 
 TEST(ShippedWalks, WalkForwardTracksTheCommandedSpeed) {

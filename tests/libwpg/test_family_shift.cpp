@@ -6,7 +6,8 @@
 //   cop               the CoP of the same instant against the same foot (eq. 9-13);
 //   step_feasibility  the same step against the step before it (eq. 14-15);
 //   yaw_bound         the same pair of steps (eq. 16-17);
-//   obstacle          the same step against the same obstacle (eq. 18-19).
+//   obstacle          the same step against the same obstacle (eq. 18-19);
+//   corridor          the CoP of the same instant, the same step, against the same wall.
 // The landing bounds (Sec. III-C3) keep their axis and sign during a swing (the same Jacobian
 // row) and leave when the swing ends. A family that does not shift its rows (r' = r) fails
 // here: its row r at the next sample measures a later instant or another step.
@@ -69,6 +70,9 @@ Walk walkTransitions(WalkingParameters w) {
   w.max_landing_yaw_rate = 1.5;
   wpg::GeneratorSettings settings;
   settings.max_obstacles_in_qp = 3;
+  // wpg's corridor (builtin_extensions.hpp) with walls beyond the obstacles: its rows are
+  // evaluated at every sample but never active, so the walk is the one without it.
+  settings.constraints = {{"corridor", {{"left", 5.0}, {"right", -5.0}}}};
   wpg::PatternGenerator generator(w, settings);
   generator.setObstacles(wpg_test::obstacleCorridor(12, 0.9));
   const NmpcModel& model = generator.model();
@@ -205,6 +209,15 @@ TEST_F(FamilyShift, CopRowsFollowTheirInstant) {
   const ShiftCheck check = checkValues(model(), transitions(), "cop");
   EXPECT_EQ(check.left, static_cast<int>(transitions().size()) * wpg::CopRows::kEdges);
   expectSameValues("cop", 3000, 300);
+}
+
+TEST_F(FamilyShift, CorridorRowsFollowTheirInstantAndStep) {
+  // The first sample's 2 rows leave at every transition, step 0's 2 at every completed step.
+  int completed = 0;
+  for (const Transition& t : transitions()) completed += t.step_completed ? 1 : 0;
+  const ShiftCheck check = checkValues(model(), transitions(), "corridor");
+  EXPECT_EQ(check.left, 2 * static_cast<int>(transitions().size()) + 2 * completed);
+  expectSameValues("corridor", 1500, 150);
 }
 
 TEST_F(FamilyShift, StepFeasibilityRowsFollowTheirStep) {

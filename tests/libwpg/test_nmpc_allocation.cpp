@@ -325,6 +325,22 @@ TEST(NmpcAllocation, NmpcCurve) {
   expectNoAllocation(r, "NMPC, curve");
 }
 
+// The registered extensions (wpg/nmpc/extension_registry.hpp) in the loop: the corridor's rows
+// and the look-at cost, whose Q + R'R is factored every QP in the workspace's storage.
+TEST(NmpcAllocation, NmpcWithCorridorAndLookAt) {
+  if (!counterAvailable()) GTEST_SKIP() << "no allocation counter (needs glibc or ASan)";
+  WalkingParameters w;
+  w.max_step_yaw_change = 0.17;
+  GeneratorSettings settings;
+  settings.constraints = {{"corridor", {{"left", 0.25}, {"right", -0.35}}}};
+  settings.costs = {{"look_at", {{"x", 6.0}, {"y", 1.0}, {"weight", 50.0}}}};
+  const Vector3d drift(0.2, 0.05, 0.0);
+  const LoopResult r = countOverLoop(w, settings, {{30, drift}}, {{60, drift}},
+                                     [](PatternGenerator&, int&) {});
+  EXPECT_EQ(r.patterns_seen & maskOf(kAllWalkingPatterns), maskOf(kAllWalkingPatterns));
+  expectNoAllocation(r, "NMPC with a corridor and a look-at cost");
+}
+
 TEST(NmpcAllocation, LmpcWalkForwardAndCurve) {
   if (!counterAvailable()) GTEST_SKIP() << "no allocation counter (needs glibc or ASan)";
   WalkingParameters w;

@@ -20,12 +20,39 @@
 #include "online_session.hpp"
 #include "wpg/analysis/run_metrics.hpp"
 #include "wpg/datasets/input/input_error.hpp"
+#include "wpg/nmpc/extension_registry.hpp"
 #include "wpg/walk_trajectory.hpp"
 
 namespace py = pybind11;
 
 namespace wpg::python {
 namespace {
+
+// The registered extensions of one kind (wpg/nmpc/extension_registry.hpp) as
+// [{"name", "description", "parameters": [{"name", "unit", "description", "required",
+// "default"}]}], sorted by name.
+template <class Spec>
+py::list extensionList(const std::vector<Spec>& specs) {
+  py::list list;
+  for (const Spec& spec : specs) {
+    py::list parameters;
+    for (const ExtensionParameter& p : spec.parameters) {
+      py::dict parameter;
+      parameter["name"] = p.name;
+      parameter["unit"] = p.unit;
+      parameter["description"] = p.description;
+      parameter["required"] = p.required;
+      parameter["default"] = p.required ? py::object(py::none()) : py::float_(p.default_value);
+      parameters.append(parameter);
+    }
+    py::dict entry;
+    entry["name"] = spec.name;
+    entry["description"] = spec.description;
+    entry["parameters"] = parameters;
+    list.append(entry);
+  }
+  return list;
+}
 
 // A read-only view of rows x cols doubles at `data` (strides in bytes) kept alive by `base`.
 template <typename T>
@@ -466,4 +493,6 @@ PYBIND11_MODULE(_wpg, m) {
   m.def("resolve_scenario", &resolveScenarioPath, py::arg("scenario"));
   m.def("data_directory", &dataDirectory);
   m.def("metric_table", [] { return metricRows(nullptr); });
+  m.def("families", [] { return extensionList(wpg::registeredConstraintFamilies()); });
+  m.def("costs", [] { return extensionList(wpg::registeredCostTerms()); });
 }

@@ -20,8 +20,8 @@ from ._online import OnlineGenerator
 from ._studies import batch, compare
 from . import io
 
-__all__ = ["run", "batch", "compare", "scenarios", "data_directory", "Run", "OnlineGenerator",
-           "InputError", "io"]
+__all__ = ["run", "batch", "compare", "scenarios", "families", "costs", "data_directory", "Run",
+           "OnlineGenerator", "InputError", "io"]
 
 InputError.__module__ = "wpg"
 InputError.__doc__ = ("Bad input (scenario, override, study, file): the one-line message of "
@@ -51,6 +51,18 @@ def run(scenario="walk_forward", overrides=None, replay=False, filter=False):  #
     for warning in result.warnings:  # as `wpg run` prints them (the run records them too)
         _warnings.warn(warning, UserWarning, stacklevel=2)
     return result
+
+
+def families():
+    """The registered constraint families a scenario's `constraints:` section (or an override
+    "constraints.<name>.<parameter>") may use: [{"name", "description", "parameters": [{"name",
+    "unit", "description", "required", "default"}]}], sorted by name (docs/extending.md)."""
+    return list(_wpg.families())
+
+
+def costs():
+    """The registered cost terms of `costs:` ("costs.<name>.<parameter>"), as families()."""
+    return list(_wpg.costs())
 
 
 def scenarios():

@@ -8,6 +8,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "extension_sections.hpp"
 #include "goal_sections.hpp"
 #include "parameter_fields.hpp"
 #include "plain_scalar.hpp"
@@ -108,6 +109,10 @@ std::string emitResolved(const Scenario& scenario) {
       out << false;
     }
   });
+
+  // Only when given: the resolved scenarios without extensions read as before.
+  emitExtensions(out, ExtensionKind::kConstraint, generator.constraints);
+  emitExtensions(out, ExtensionKind::kCost, generator.costs);
 
   emitKey(out, "replay");
   out << scenario.replay;

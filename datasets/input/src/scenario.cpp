@@ -7,6 +7,7 @@
 //   scenario_overrides  the --set grammar (dotted paths, [index]) and its assignment
 //   parameter_fields    the tables binding walking/generator/filter keys to struct fields
 //   scenario_sections   the section readers (reference, pushes, obstacles, ...) and the robot
+//   extension_sections  `constraints:` and `costs:`: the NMPC's registered extensions
 //   resolved_scenario   the emitter of the resolved YAML
 #include "wpg/datasets/input/scenario.hpp"
 
@@ -16,6 +17,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "extension_sections.hpp"
 #include "goal_sections.hpp"
 #include "parameter_fields.hpp"
 #include "resolved_scenario.hpp"
@@ -117,6 +119,11 @@ Scenario loadScenarioTree(YAML::Node root, const std::string& path,
                                                  "a positive mass in kg", source);
     }
     scenario.request.generator = readGenerator(entry(entries, "generator"), source);
+    // Registered extensions, checked against the merged walking parameters.
+    scenario.request.generator.constraints = readExtensions(
+        entry(entries, "constraints"), ExtensionKind::kConstraint, scenario.walking, source);
+    scenario.request.generator.costs = readExtensions(entry(entries, "costs"),
+                                                      ExtensionKind::kCost, scenario.walking, source);
     // A goal replaces the velocity command: the path follower gives it.
     const bool has_goal = present(entries, "goal");
     if (has_goal && entry(entries, "reference").IsDefined()) {

@@ -134,7 +134,7 @@ const std::vector<std::string>& topLevelKeys() {
   static const std::vector<std::string> keys = {
       "name",   "robot",     "duration", "robot_mass", "generator",      "reference",
       "pushes", "obstacles", "walking",  "replay",     "filter",         "filter_settings",
-      "goal",   "planner"};
+      "goal",   "planner",   "constraints", "costs"};
   return keys;
 }
 

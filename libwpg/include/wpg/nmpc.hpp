@@ -19,11 +19,17 @@
 //       obstacle avoidance                       (18)-(19)  1 row per step and obstacle slot
 //       swing foot's landing bound      Sec. III-C3 last paragraph: x, y (4 rows) and yaw (2 rows)
 //                                       as two families, each off by default
-//   wpg/nmpc/numdiff.hpp            finite-difference check of any family's Jacobian
+//   wpg/nmpc/cost_term.hpp          the interface of added cost terms 1/2 |r(U)|^2 (Gauss-Newton)
+//   wpg/nmpc/extension_registry.hpp families and cost terms registered by name with parameters
+//   wpg/nmpc/builtin_extensions.hpp wpg's registered ones: corridor (family), look_at (cost)
+//   wpg/nmpc/numdiff.hpp            finite-difference check of any family's or term's Jacobian
 //   wpg/nmpc/solver.hpp             Gauss-Newton SQP, staged relaxation, LMPC baseline
+#include "wpg/nmpc/builtin_extensions.hpp"
 #include "wpg/nmpc/builtin_families.hpp"
 #include "wpg/nmpc/constraint_family.hpp"
 #include "wpg/nmpc/cost.hpp"
+#include "wpg/nmpc/cost_term.hpp"
+#include "wpg/nmpc/extension_registry.hpp"
 #include "wpg/nmpc/layout.hpp"
 #include "wpg/nmpc/model.hpp"
 #include "wpg/nmpc/numdiff.hpp"

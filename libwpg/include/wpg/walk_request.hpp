@@ -1,6 +1,7 @@
 #pragma once
 // What a walk is asked to do: a piecewise-constant velocity command, perturbations, and how
 // the pattern generator solves its problem. Plain data; datasets/ fills it from a scenario.
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -29,6 +30,14 @@ constexpr int kMaxSqpIterations = 1000;     // generator.sqp_iterations, max_sqp
 constexpr int kMaxQpIterations = 100000;    // generator.max_qp_iterations
 constexpr double kMaxWalkDuration = 3600.0;  // [s] duration of one walk
 constexpr int kMaxBlockedWindowCycles = 100;  // generator.blocked_window_cycles (160 s for HRP-2)
+
+// A registered constraint family or cost term (wpg/nmpc/extension_registry.hpp) that the NMPC
+// uses, by name, with the values of its parameters (by parameter name, in their units).
+using ExtensionArguments = std::map<std::string, double>;
+struct ExtensionUse {
+  std::string name;
+  ExtensionArguments arguments;
+};
 
 struct GeneratorSettings {
   GeneratorAlgorithm algorithm = GeneratorAlgorithm::kNmpc;
@@ -70,6 +79,11 @@ struct GeneratorSettings {
   // generators (the runs of a study share one, loadStudyScenarios), or null: the generator
   // makes its own. Not a setting of the walk: the results are the same bits either way.
   std::shared_ptr<qp::HessianFactorCache> hessian_factors;
+  // Extension points (wpg/nmpc/extension_registry.hpp): registered constraint families and
+  // cost terms that every NMPC model of the generator adds after the paper's, in this order.
+  // Empty (the default): the paper's problem, solved as without them.
+  std::vector<ExtensionUse> constraints;
+  std::vector<ExtensionUse> costs;
 
   // Throws std::invalid_argument naming the bad field ("generator.<field>") and what was
   // expected.

@@ -32,7 +32,11 @@ void buildCostGradient(const NmpcModel& model, const NmpcProblem& problem,
 double evaluateCost(const NmpcModel& model, const NmpcProblem& problem,
                     const Eigen::Ref<const Eigen::VectorXd>& U) {
   checkSizes("evaluateCost", "U", U.size(), model, problem);
-  return nmpc_internal::cost(model, problem, U);
+  const double cost = nmpc_internal::cost(model, problem, U);
+  if (model.costTermCount() == 0) return cost;
+  Eigen::VectorXd residuals(model.residualCount());  // allocates: not the solver's path
+  nmpc_internal::stackResiduals(model, problem, U, residuals, nullptr);
+  return cost + 0.5 * residuals.squaredNorm();
 }
 
 void nmpc_internal::costGradient(const NmpcModel& model, const NmpcProblem& problem,

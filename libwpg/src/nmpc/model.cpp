@@ -129,6 +129,17 @@ void NmpcModel::appendFamily(std::shared_ptr<const ConstraintFamily> family) {
   family_first_row_.push_back(family_first_row_.back() + rows);
 }
 
+void NmpcModel::addCostTerm(std::shared_ptr<const CostTerm> term) {
+  if (!term) throw std::invalid_argument("cost term: expected a term, got null");
+  const int residuals = term->residualCount(*this);
+  if (residuals < 0) {
+    throw std::invalid_argument("cost term '" + std::string(term->name()) +
+                                "': negative residual count");
+  }
+  cost_terms_.push_back(std::move(term));
+  term_first_residual_.push_back(term_first_residual_.back() + residuals);
+}
+
 int ConstraintFamily::jerkSamplesOfRow(const NmpcModel& model, int) const {
   return model.layout().horizon;
 }
@@ -287,6 +298,37 @@ void nmpc_internal::stackConstraints(const NmpcModel& model, const NmpcProblem& 
       model.family(k).evaluate(model, problem, U, g.segment(first, rows), nullptr);
     }
     eigen_assert(g.segment(first, rows).allFinite() && "a family wrote a non-finite row");
+  }
+}
+
+void evaluateCostTerms(const NmpcModel& model, const NmpcProblem& problem,
+                       const Eigen::Ref<const Eigen::VectorXd>& U, Eigen::Ref<Eigen::VectorXd> r,
+                       Eigen::MatrixXd* jacobian) {
+  const int n = model.layout().variableCount(), m = model.residualCount();
+  if (U.size() != n || r.size() != m ||
+      (jacobian && (jacobian->rows() != m || jacobian->cols() != n))) {
+    throw std::invalid_argument("evaluateCostTerms: expected U of " + std::to_string(n) +
+                                ", r of " + std::to_string(m) + " and a " + std::to_string(m) +
+                                " x " + std::to_string(n) + " Jacobian");
+  }
+  model.checkProblem(problem);
+  nmpc_internal::stackResiduals(model, problem, U, r, jacobian);
+}
+
+void nmpc_internal::stackResiduals(const NmpcModel& model, const NmpcProblem& problem,
+                                   const Eigen::Ref<const Eigen::VectorXd>& U,
+                                   Eigen::Ref<Eigen::VectorXd> r, Eigen::MatrixXd* jacobian) {
+  if (jacobian) jacobian->setZero();
+  for (int k = 0; k < model.costTermCount(); ++k) {
+    const int first = model.costTermFirstResidual(k), count = model.costTermResidualCount(k);
+    if (count == 0) continue;
+    if (jacobian) {
+      Eigen::Ref<Eigen::MatrixXd> block(jacobian->middleRows(first, count));
+      model.costTerm(k).evaluate(model, problem, U, r.segment(first, count), &block);
+    } else {
+      model.costTerm(k).evaluate(model, problem, U, r.segment(first, count), nullptr);
+    }
+    eigen_assert(r.segment(first, count).allFinite() && "a cost term wrote a non-finite residual");
   }
 }
 

@@ -30,6 +30,11 @@ inline void clearStepColumns(JacobianRows& G, const NmpcLayout& L) {
   G.middleCols(L.stepX(), L.steps).setZero();
   G.middleCols(L.stepY(), 2 * L.steps).setZero();  // F_y and F_theta are adjacent
 }
+// The residuals of the model's cost terms (wpg/nmpc/cost_term.hpp), stacked, with their
+// Jacobian (zeroed first) when not null.
+void stackResiduals(const NmpcModel& model, const NmpcProblem& problem,
+                    const Eigen::Ref<const Eigen::VectorXd>& U, Eigen::Ref<Eigen::VectorXd> r,
+                    Eigen::MatrixXd* jacobian);
 void costGradient(const NmpcModel& model, const NmpcProblem& problem,
                   Eigen::Ref<Eigen::VectorXd> gradient);
 double cost(const NmpcModel& model, const NmpcProblem& problem,

@@ -79,6 +79,16 @@ NmpcWorkspace::NmpcWorkspace(const NmpcModel& model)
   orientation_equality_vector = Eigen::VectorXd::Zero(nf);
   orientation_gradient = Eigen::VectorXd::Zero(nf);
   orientation_solution = Eigen::VectorXd::Zero(nf);
+  const int r = model.residualCount();
+  residuals = Eigen::VectorXd::Zero(r);
+  shifted_residuals = Eigen::VectorXd::Zero(r);
+  residual_jacobian = Eigen::MatrixXd::Zero(r, n);
+  if (model.costTermCount() > 0) {
+    term_gradient = Eigen::VectorXd::Zero(n);
+    term_hessian = model.hessian(0);
+    term_cholesky.compute(term_hessian);  // sizes its storage
+    term_factor.compute(term_hessian, term_cholesky);
+  }
   solver.setInequalityProfile(model.jacobianProfile());
 }
 
@@ -110,7 +120,30 @@ void NmpcSolver::rememberActiveSet(const qp::DenseQpSolver& solver, int inequali
   }
 }
 
-qp::QpStatus NmpcSolver::solveRelaxed(const qp::HessianFactor& factor, int me, double rho,
+bool NmpcSolver::linearizeCostTerms(const NmpcProblem& problem) {
+  const NmpcModel& model = *model_;
+  NmpcWorkspace& ws = workspace_;
+  // 1/2 |r(U0) + R (U - U0)|^2 = 1/2 U'R'RU + (R'(r - R U0))'U + const
+  nmpc_internal::stackResiduals(model, problem, ws.linearization, ws.residuals,
+                                &ws.residual_jacobian);
+  ws.shifted_residuals = ws.residuals;
+  ws.shifted_residuals.noalias() -= ws.residual_jacobian * ws.linearization;
+  ws.term_gradient = ws.gradient;
+  ws.term_gradient.noalias() += ws.residual_jacobian.transpose() * ws.shifted_residuals;
+  ws.term_hessian = model.hessian(problem.phase.pattern);
+  ws.term_hessian.noalias() += ws.residual_jacobian.transpose() * ws.residual_jacobian;
+  return ws.term_factor.compute(ws.term_hessian, ws.term_cholesky);
+}
+
+double NmpcSolver::totalCost(const NmpcProblem& problem, const Eigen::VectorXd& U) {
+  double cost = nmpc_internal::cost(*model_, problem, U);
+  if (model_->costTermCount() == 0) return cost;
+  nmpc_internal::stackResiduals(*model_, problem, U, workspace_.residuals, nullptr);
+  return cost + 0.5 * workspace_.residuals.squaredNorm();
+}
+
+qp::QpStatus NmpcSolver::solveRelaxed(const qp::HessianFactor& factor,
+                                      const Eigen::VectorXd& gradient, int me, double rho,
                                       RelaxationGroup relaxed_up_to, NmpcSolveResult& result) {
   const NmpcModel& model = *model_;
   NmpcWorkspace& ws = workspace_;
@@ -122,7 +155,7 @@ qp::QpStatus NmpcSolver::solveRelaxed(const qp::HessianFactor& factor, int me, d
   auto& J = ws.relaxed_factor.inverse_factor_transposed;
   J.topLeftCorner(n, n) = factor.inverse_factor_transposed;
   J.diagonal().tail(F).setConstant(1.0 / std::sqrt(rho));
-  ws.relaxed_gradient.head(n) = ws.gradient;
+  ws.relaxed_gradient.head(n) = gradient;
   ws.relaxed_gradient.tail(F).setConstant(rho);
   ws.relaxed_jacobian.topLeftCorner(mi, n) = ws.jacobian;
   ws.relaxed_jacobian.topRightCorner(mi, F).setZero();
@@ -170,12 +203,16 @@ NmpcSolveResult NmpcSolver::runSqp(const NmpcProblem& problem, const GeneratorSe
   NmpcWorkspace& ws = workspace_;
   const NmpcLayout& L = model.layout();
   const int mi = model.inequalityCount();
-  const qp::HessianFactor& factor = model.hessianFactor(problem.phase.pattern);
+  const bool has_terms = model.costTermCount() > 0;
+  // Without cost terms the Hessian is the model's constant one, its factor precomputed.
+  const qp::HessianFactor& factor =
+      has_terms ? ws.term_factor : model.hessianFactor(problem.phase.pattern);
+  const Eigen::VectorXd& gradient = has_terms ? ws.term_gradient : ws.gradient;
   NmpcSolveResult result;
   // A QP that cannot be used: keep the time-shifted previous plan (plan_ is untouched).
   auto fall_back = [&](IterationStatus status) {
     raise(result, status);
-    result.cost = nmpc_internal::cost(model, problem, plan_);
+    result.cost = totalCost(problem, plan_);
     return result;
   };
 
@@ -206,9 +243,10 @@ NmpcSolveResult NmpcSolver::runSqp(const NmpcProblem& problem, const GeneratorSe
                                     &ws.jacobian, true);
     model.jacobianProfile().multiplySubtract(ws.jacobian, ws.linearization, ws.constraints,
                                              ws.upper);
+    if (has_terms && !linearizeCostTerms(problem)) return fall_back(IterationStatus::kFallback);
     ws.solver.setActiveSetGuess(active_set_.data(), active_count_);
     const qp::QpStatus status =
-        ws.solver.solve(factor, ws.gradient, ws.equality_matrix.topRows(me),
+        ws.solver.solve(factor, gradient, ws.equality_matrix.topRows(me),
                         ws.equality_vector.head(me), ws.jacobian, ws.upper, ws.qp_solution);
     result.qp_iterations += ws.solver.iterations();
     result.qp_warm_start_updates += ws.solver.warmStartUpdates();
@@ -225,7 +263,7 @@ NmpcSolveResult NmpcSolver::runSqp(const NmpcProblem& problem, const GeneratorSe
         for (int k = 0; k < model.familyCount() && !any; ++k)
           any = model.family(k).group() == stage && model.familyRowCount(k) > 0;
         if (!any) continue;
-        relaxed = solveRelaxed(factor, me, settings.slack_weight, stage, result);
+        relaxed = solveRelaxed(factor, gradient, me, settings.slack_weight, stage, result);
         if (relaxed != qp::QpStatus::kInfeasible) break;
       }
       if (relaxed == qp::QpStatus::kIterationLimit)
@@ -245,7 +283,7 @@ NmpcSolveResult NmpcSolver::runSqp(const NmpcProblem& problem, const GeneratorSe
   if (iterations == 0 && result.last_step_norm >= settings.sqp_tolerance)
     raise(result, IterationStatus::kNotConverged);
   plan_ = ws.linearization;
-  result.cost = nmpc_internal::cost(model, problem, plan_);
+  result.cost = totalCost(problem, plan_);
   return result;
 }
 

@@ -10,11 +10,17 @@
 namespace wpg::qp {
 
 bool HessianFactor::compute(const Eigen::Ref<const Eigen::MatrixXd>& hessian) {
+  Eigen::LLT<Eigen::MatrixXd> llt;
+  return compute(hessian, llt);
+}
+
+bool HessianFactor::compute(const Eigen::Ref<const Eigen::MatrixXd>& hessian,
+                            Eigen::LLT<Eigen::MatrixXd>& llt) {
   size = 0;
   if (hessian.rows() != hessian.cols() || !hessian.allFinite()) return false;
   const Eigen::Index n = hessian.rows();
   // Only the lower triangle of H is read (as by Eigen::LLT).
-  const Eigen::LLT<Eigen::MatrixXd> llt(hessian);
+  llt.compute(hessian);
   if (llt.info() != Eigen::Success) return false;
   // Numerically singular H passes LLT with tiny pivots; the dual method would then take
   // huge steps. Reject pivots below the rounding level of the diagonal.

@@ -12,6 +12,7 @@
 #include "wpg/convex_polygon.hpp"
 #include "wpg/lipm_prediction.hpp"
 #include "wpg/nmpc/constraint_family.hpp"
+#include "wpg/nmpc/cost_term.hpp"
 #include "wpg/nmpc/layout.hpp"
 #include "wpg/nmpc/problem.hpp"
 #include "wpg/qp/dense_qp_solver.hpp"
@@ -45,6 +46,18 @@ class NmpcModel {
   // Index of the family owning inequality row `row`, -1 past the last (a search over at most
   // kMaxConstraintFamilies ranges; no allocation).
   int familyOfRow(int row) const;
+  // Appends a cost term (wpg/nmpc/cost_term.hpp) after the registered ones: its residuals
+  // start where theirs end. Call it before building a solver on this model. Throws
+  // std::invalid_argument for a null term or a negative residual count.
+  void addCostTerm(std::shared_ptr<const CostTerm> term);
+  int costTermCount() const { return static_cast<int>(cost_terms_.size()); }
+  const CostTerm& costTerm(int index) const { return *cost_terms_[index]; }
+  int costTermFirstResidual(int index) const { return term_first_residual_[index]; }
+  int costTermResidualCount(int index) const {
+    return term_first_residual_[index + 1] - term_first_residual_[index];
+  }
+  // All residuals of the cost terms, stacked in registration order (0 without terms).
+  int residualCount() const { return term_first_residual_.back(); }
   // All inequality rows: the families' rows, stacked in registration order.
   int inequalityCount() const { return family_first_row_.back(); }
   // Where the constraint Jacobian (inequalityCount() x variables) may be nonzero: the step
@@ -99,6 +112,8 @@ class NmpcModel {
   // Families are stateless (const): models share them when copied.
   std::vector<std::shared_ptr<const ConstraintFamily>> families_;
   std::vector<int> family_first_row_;  // familyCount() + 1 entries
+  std::vector<std::shared_ptr<const CostTerm>> cost_terms_;  // stateless, shared like families
+  std::vector<int> term_first_residual_{0};                  // costTermCount() + 1 entries
   qp::ColumnProfile jacobian_profile_;  // of the families registered so far
   // addConstraintFamily without the profile, which the constructor computes once for the
   // paper's families (each update goes over every row of every family).

@@ -21,4 +21,9 @@ JacobianCheck checkConstraintJacobian(const NmpcModel& model, const NmpcProblem&
                                       const Eigen::Ref<const Eigen::VectorXd>& U, int family = -1,
                                       double h = 1e-6);
 
+// The same for cost term `term`'s residuals (term < 0: every term's, stacked).
+JacobianCheck checkCostJacobian(const NmpcModel& model, const NmpcProblem& problem,
+                                const Eigen::Ref<const Eigen::VectorXd>& U, int term = -1,
+                                double h = 1e-6);
+
 }  // namespace wpg

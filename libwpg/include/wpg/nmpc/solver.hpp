@@ -49,6 +49,13 @@ class NmpcWorkspace {
   qp::HessianFactor relaxed_factor;
   Eigen::MatrixXd relaxed_jacobian, relaxed_equality_matrix;
   Eigen::VectorXd relaxed_gradient, relaxed_upper, relaxed_solution;
+  // Cost terms (wpg/nmpc/cost_term.hpp; sized 0 when the model has none): their residuals r
+  // and Jacobian R at the linearization point, the Gauss-Newton Hessian Q + R'R with its
+  // factor, and the linear term p + R'(r - R U_lin) of each QP.
+  Eigen::VectorXd residuals, shifted_residuals, term_gradient;
+  Eigen::MatrixXd residual_jacobian, term_hessian;
+  Eigen::LLT<Eigen::MatrixXd> term_cholesky;
+  qp::HessianFactor term_factor;
   // LMPC orientation QP (nf yaws)
   qp::DenseQpSolver orientation_solver;
   qp::HessianFactor orientation_factor;
@@ -94,8 +101,15 @@ class NmpcSolver {
                          int iterations, const Eigen::VectorXd* fixed_yaws);
   // Solves the QP with slacks on the families of the groups up to `relaxed_up_to`; on kOptimal
   // the solution is in the workspace's qp_solution and `result` records the relaxation.
-  qp::QpStatus solveRelaxed(const qp::HessianFactor& factor, int equalities, double slack_weight,
-                            RelaxationGroup relaxed_up_to, NmpcSolveResult& result);
+  qp::QpStatus solveRelaxed(const qp::HessianFactor& factor, const Eigen::VectorXd& gradient,
+                            int equalities, double slack_weight, RelaxationGroup relaxed_up_to,
+                            NmpcSolveResult& result);
+  // The QP's Hessian factor and linear term with the model's cost terms linearized at the
+  // workspace's linearization point (into the workspace); false when Q + R'R cannot be
+  // factored.
+  bool linearizeCostTerms(const NmpcProblem& problem);
+  // cost (5) at `U` plus the cost terms' 1/2 |r(U)|^2.
+  double totalCost(const NmpcProblem& problem, const Eigen::VectorXd& U);
   void rememberActiveSet(const qp::DenseQpSolver& solver, int inequality_rows);
 
   const NmpcModel* model_;

@@ -10,6 +10,7 @@
 // is loaded into the factorization before the dual iterations start; guessed constraints that
 // are linearly dependent or get negative multipliers are dropped, then the ordinary dual
 // method continues. A good guess leaves zero or few iterations.
+#include <Eigen/Cholesky>
 #include <Eigen/Core>
 
 #include "wpg/qp/column_profile.hpp"
@@ -31,6 +32,9 @@ struct HessianFactor {
   // Returns false (and leaves size = 0) when H is not symmetric positive definite (numerically:
   // a Cholesky pivot below the rounding level). Reads the lower triangle of H only.
   bool compute(const Eigen::Ref<const Eigen::MatrixXd>& hessian);
+  // The same with the caller's Cholesky storage: no allocation once `llt` and this factor
+  // have held a Hessian of this size (a Hessian that changes every solve: NMPC cost terms).
+  bool compute(const Eigen::Ref<const Eigen::MatrixXd>& hessian, Eigen::LLT<Eigen::MatrixXd>& llt);
   // Solves H x = b in place using the factor (x := H^{-1} b).
   void solveInPlace(Eigen::Ref<Eigen::VectorXd> b) const;
 };

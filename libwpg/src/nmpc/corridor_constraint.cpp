@@ -1,0 +1,119 @@
+// The corridor constraint family (wpg/nmpc/builtin_extensions.hpp): CoP samples and step
+// centres between two walls y = right and y = left.
+#include <sstream>
+
+#include "wpg/nmpc/builtin_extensions.hpp"
+#include "wpg/nmpc/model.hpp"
+
+namespace wpg {
+namespace {
+
+class CorridorConstraint final : public NamedConstraintFamily {
+ public:
+  CorridorConstraint(double left, double right)
+      : NamedConstraintFamily("corridor", "m", RelaxationGroup::kObstacle),
+        left_(left),
+        right_(right) {}
+
+  int rowCount(const NmpcModel& model) const override {
+    return CorridorRows::count(model.layout().horizon, model.layout().steps);
+  }
+
+  void evaluate(const NmpcModel& model, const NmpcProblem& problem,
+                const Eigen::Ref<const Eigen::VectorXd>& U, Eigen::Ref<Eigen::VectorXd> g,
+                JacobianRows* jacobian) const override {
+    const NmpcLayout& L = model.layout();
+    const LipmPrediction& P = model.prediction();
+    const auto jerk_y = U.segment(L.jerkY(), L.horizon);
+    for (int j = 0; j < L.horizon; ++j) {
+      // z_y of sample j (eq. 3): lower triangular in the jerks
+      const double zy = P.cop_state.row(j).dot(problem.com_y) +
+                        P.cop_jerk.row(j).head(j + 1).dot(jerk_y.head(j + 1));
+      g(CorridorRows::copRow(j, true)) = zy - left_;
+      g(CorridorRows::copRow(j, false)) = right_ - zy;
+      if (!jacobian) continue;
+      for (int k = 0; k <= j; ++k) {
+        (*jacobian)(CorridorRows::copRow(j, true), L.jerkY() + k) = P.cop_jerk(j, k);
+        (*jacobian)(CorridorRows::copRow(j, false), L.jerkY() + k) = -P.cop_jerk(j, k);
+      }
+    }
+    for (int i = 0; i < L.steps; ++i) {
+      const int upper = CorridorRows::stepRow(L.horizon, i, true);
+      const int lower = CorridorRows::stepRow(L.horizon, i, false);
+      if (problem.phase.step_fixed(i)) {  // fixed by equality: nothing to decide
+        g(upper) = g(lower) = -1.0;
+        continue;
+      }
+      const double y = U(L.stepY() + i);
+      g(upper) = y - left_;
+      g(lower) = right_ - y;
+      if (!jacobian) continue;
+      (*jacobian)(upper, L.stepY() + i) = 1.0;
+      (*jacobian)(lower, L.stepY() + i) = -1.0;
+    }
+  }
+
+  int jerkSamplesOfRow(const NmpcModel& model, int row) const override {
+    return row < 2 * model.layout().horizon ? row / 2 + 1 : 0;
+  }
+
+  // A CoP sample's rows become the sample before's; a step's the step before's once a step is
+  // completed (step 0's leave the horizon).
+  int shiftedRow(const NmpcModel& model, int row, bool step_completed) const override {
+    const int N = model.layout().horizon;
+    const bool left = row % 2 == 0;
+    if (row < 2 * N) {
+      const int sample = row / 2;
+      return sample == 0 ? -1 : CorridorRows::copRow(sample - 1, left);
+    }
+    const int step = (row - 2 * N) / 2;
+    if (!step_completed) return row;
+    return step == 0 ? -1 : CorridorRows::stepRow(N, step - 1, left);
+  }
+
+ private:
+  double left_, right_;  // [m] world y of the walls
+};
+
+std::string metres(double value) {
+  std::ostringstream text;
+  text << value << " m";
+  return text.str();
+}
+
+}  // namespace
+
+std::unique_ptr<ConstraintFamily> makeCorridorConstraint(double left, double right) {
+  return std::make_unique<CorridorConstraint>(left, right);
+}
+
+ConstraintFamilySpec corridorConstraintSpec() {
+  ConstraintFamilySpec spec;
+  spec.name = "corridor";
+  spec.description = "step centres and CoP between the walls y = right and y = left (world)";
+  spec.parameters = {{"left", "m", "the world y of the left wall", true, 0.0},
+                     {"right", "m", "the world y of the right wall", true, 0.0}};
+  spec.check = [](const ExtensionArguments& a, const ExtensionContext& context) {
+    const double width = a.at("left") - a.at("right");
+    const double least = context.walking.leastStepWidth();
+    if (!(width >= least)) {
+      throw ExtensionError("left", "expected left - right of at least " + metres(least) +
+                                       " (two feet side by side: the least step width of the "
+                                       "robot's feasibility polygon; its sole is " +
+                                       metres(context.walking.foot_width) + " wide), got " +
+                                       metres(width));
+    }
+    const double y = context.start_pose.y();
+    if (!(y < a.at("left") && y > a.at("right"))) {
+      throw ExtensionError("left", "expected walls on either side of the walk's start (y = " +
+                                       metres(y) + ")");
+    }
+  };
+  spec.make = [](const ExtensionArguments& a, const ExtensionContext&) {
+    return std::shared_ptr<const ConstraintFamily>(
+        makeCorridorConstraint(a.at("left"), a.at("right")));
+  };
+  return spec;
+}
+
+}  // namespace wpg
