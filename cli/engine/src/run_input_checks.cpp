@@ -35,7 +35,7 @@ void checkGoalRequest(const datasets::Scenario& scenario, const std::string& ori
 void checkRunInput(const datasets::Scenario& scenario, const std::string& origin,
                    RobotModelCache& models) {
   if (scenario.replay) {
-    (void)models.model(scenario.robot);
+    (void)models.model(scenario.robot, scenario.multibody);
     if (scenario.filter) checkFilterSettings(scenario, origin);
   }
   checkGoalRequest(scenario, origin);
@@ -44,9 +44,9 @@ void checkRunInput(const datasets::Scenario& scenario, const std::string& origin
 void checkStudyRobotModels(const datasets::Study& study, const std::string& robots_directory) {
   std::set<std::string> replayed_robots;
   for (const datasets::StudyRun& run : study.runs) {
-    if (run.scenario.replay) replayed_robots.insert(run.scenario.robot);
+    if (run.scenario.replay && replayed_robots.insert(run.scenario.robot).second)
+      (void)loadRobotModel(robots_directory, run.scenario.robot, run.scenario.multibody);
   }
-  for (const std::string& robot : replayed_robots) (void)loadRobotModel(robots_directory, robot);
 }
 
 }  // namespace wpg::engine
