@@ -90,15 +90,18 @@ NumericalLegIkResult NumericalLegIk::solve(const Pose& root, const Pose& sole,
 
   NumericalLegIkResult result;
   Eigen::Matrix<double, 6, Eigen::Dynamic, 0, 6, kMaxLegJoints> jacobian;
-  Eigen::Matrix<double, 6, 1> error;
+  Eigen::Matrix<double, 6, 1> error, candidate_error;
   using Square = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxLegJoints, kMaxLegJoints>;
   Square normal;
-  Angles gradient, step;
+  Angles gradient, step, candidate;
   bool held[kMaxLegJoints];
-  for (;;) {
-    const Pose reached = evaluate(root, angles, &jacobian);
-    error << sole.position - reached.position,
+  const auto soleError = [&](const Pose& reached, Eigen::Matrix<double, 6, 1>& e) {
+    e << sole.position - reached.position,
         rotationVector(sole.rotation * reached.rotation.transpose());
+  };
+  soleError(evaluate(root, angles, &jacobian), error);
+  double lambda = settings_.damping * error.norm();
+  for (;;) {
     result.position_error = error.head<3>().norm();
     result.rotation_error = error.tail<3>().norm();
     if (result.position_error <= settings_.position_tolerance &&
@@ -108,9 +111,8 @@ NumericalLegIkResult NumericalLegIk::solve(const Pose& root, const Pose& sole,
     }
     if (result.iterations >= settings_.max_iterations) return result;
     ++result.iterations;
-    const double lambda = settings_.damping * error.norm();
     // Solve with every joint free, then hold at its limit each joint the step pushes beyond
-    // it, and solve again, until no held set changes (at most n rounds).
+    // it, and solve again, until the held set no longer changes (at most n rounds).
     std::fill(held, held + n, false);
     for (int round = 0; round <= n; ++round) {
       normal.noalias() = jacobian.transpose() * jacobian;
@@ -134,8 +136,20 @@ NumericalLegIkResult NumericalLegIk::solve(const Pose& root, const Pose& sole,
       }
       if (!changed) break;
     }
+    candidate = angles;
     for (int i = 0; i < n; ++i)
-      angles(i) = std::clamp(angles(i) + step(i), lower(joints_[i]), upper(joints_[i]));
+      candidate(i) = std::clamp(angles(i) + step(i), lower(joints_[i]), upper(joints_[i]));
+    soleError(evaluate(root, candidate, nullptr), candidate_error);
+    // Levenberg-Marquardt: a step that does not reduce the error is refused and the damping
+    // raised (the straight knee's singularity pulls Gauss-Newton's steps too far); an accepted
+    // one lowers it back towards damping x |e|, Gauss-Newton's near the solution.
+    if (candidate_error.norm() < error.norm()) {
+      angles = candidate;
+      soleError(evaluate(root, angles, &jacobian), error);
+      lambda = std::max(0.25 * lambda, settings_.damping * error.norm());
+    } else {
+      lambda = std::max(4.0 * lambda, 1e-6);
+    }
   }
 }
 

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 namespace wpg::test {
 
@@ -20,6 +21,12 @@ struct GeneratedJoint {
 struct GeneratedLeg {
   std::vector<GeneratedJoint> joints;
   Eigen::Vector3d sole;  // sole frame in the last joint's frame
+};
+
+// A generated leg and the nominal axis of each joint ('x', 'y', 'z': hip yaw 'z', knee 'y'...).
+struct GeneralLegShape {
+  GeneratedLeg leg;
+  std::vector<char> kind;
 };
 
 // HRP-2's leg structure (hip yaw z, roll x, pitch y, knee y, ankle pitch y, roll x; hip and
@@ -42,21 +49,31 @@ inline GeneratedLeg hrp2LikeLeg(std::mt19937& rng, double side) {
   return leg;
 }
 
-// Any leg of `joints` (6 or more) revolute joints: random unit axes, offsets of a few cm
-// between every joint (no two axes need meet), two long links (thigh, shank) in the middle.
-inline GeneratedLeg generalLeg(std::mt19937& rng, double side, int joints) {
+// A leg of HRP-2's order of joints (hip yaw, roll, pitch, knee, ankle pitch, roll; with 7
+// joints a second yaw above the ankle) whose axes are tilted by up to 0.3 rad and whose joints
+// are 1-5 cm apart: no two hip axes meet, the analytic IK does not apply.
+inline GeneralLegShape generalLeg(std::mt19937& rng, double side, int joints) {
   std::uniform_real_distribution<double> u(-1.0, 1.0);
-  GeneratedLeg leg;
+  const Eigen::Vector3d x = Eigen::Vector3d::UnitX(), y = Eigen::Vector3d::UnitY(),
+                        z = Eigen::Vector3d::UnitZ();
+  std::vector<Eigen::Vector3d> axes = {z, x, y, y, y, x};
+  if (joints >= 7) axes.insert(axes.begin() + 4, z);
+  while (static_cast<int>(axes.size()) < joints) axes.insert(axes.begin() + 1, x);
+  axes.resize(static_cast<std::size_t>(joints));
+  GeneralLegShape shape;
   for (int i = 0; i < joints; ++i) {
     GeneratedJoint joint;
-    joint.origin = 0.05 * Eigen::Vector3d(u(rng), u(rng), u(rng));
+    joint.origin = Eigen::Vector3d(0.01 + 0.04 * std::abs(u(rng)), 0.02 * u(rng),
+                                   -(0.01 + 0.04 * std::abs(u(rng))));
     if (i == 0) joint.origin.y() += side * 0.1;
-    if (i == joints / 2 - 1 || i == joints / 2) joint.origin.z() -= 0.3 + 0.1 * u(rng);
-    joint.axis = Eigen::Vector3d(u(rng), u(rng), u(rng)).normalized();
-    leg.joints.push_back(joint);
+    if (axes[i] == y && i > 0 && axes[i - 1] == y) joint.origin.z() -= 0.25 + 0.1 * u(rng);
+    const Eigen::Vector3d tilt(u(rng), u(rng), u(rng));
+    joint.axis = (Eigen::AngleAxisd(0.3 * std::abs(u(rng)), tilt.normalized()) * axes[i]).normalized();
+    shape.leg.joints.push_back(joint);
+    shape.kind.push_back(axes[i] == z ? 'z' : axes[i] == x ? 'x' : 'y');
   }
-  leg.sole = Eigen::Vector3d(0.0, 0.0, -0.1);
-  return leg;
+  shape.leg.sole = Eigen::Vector3d(0.0, 0.0, -0.1);
+  return shape;
 }
 
 inline std::string vector3(const Eigen::Vector3d& v) {

@@ -4,10 +4,11 @@
 // sole pose relative to the root. Damped least squares (Levenberg-Marquardt) with the joint
 // limits: each iteration solves (J' J + lambda^2 I) dq = J' e for the 6-D sole error e
 // (position; rotation as the axis-angle vector of R_target R'), with J the sole's geometric
-// Jacobian (revolute column (a x (p - o); a), prismatic (a; 0)) and lambda = damping x |e|, so
-// that the damping vanishes at the solution and the last steps are Gauss-Newton's (quadratic
-// convergence: the walking IK's 1e-12 tolerances are reached). A joint at a limit whose step
-// points beyond it is held there (its column removed) and the step solved again.
+// Jacobian (revolute column (a x (p - o); a), prismatic (a; 0)). A step that does not reduce
+// |e| is refused and lambda raised (x 4); an accepted one lowers it (/ 4) down to damping x |e|,
+// which vanishes at the solution: the last steps are Gauss-Newton's (quadratic convergence, to
+// 1e-13). A joint at a limit whose step points beyond it is held there (its column removed)
+// and the step solved again.
 // The analytic IK of WalkingIk (HRP-2-like legs) is the reference it is tested against.
 // solve() is const and does not allocate (at most kMaxLegJoints joints).
 #include <string>
