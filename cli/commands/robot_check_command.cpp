@@ -45,9 +45,11 @@ int robotCheckCommand(const RobotCheckOptions& options) {
     std::printf("  URDF             %s: %d joints, links' mass %.3f kg\n", check.urdf.c_str(),
                 check.joints, check.urdf_mass);
     std::printf("  legs             %s %d joints, %s %d joints; straight %.4f m, %.4f m (hip "
-                "to sole)\n",
+                "to sole); IK %s, %s\n",
                 m.left_sole_frame.c_str(), check.leg_joints[0], m.right_sole_frame.c_str(),
-                check.leg_joints[1], check.leg_length[0], check.leg_length[1]);
+                check.leg_joints[1], check.leg_length[0], check.leg_length[1],
+                check.analytic_leg[0] ? "analytic" : "numerical",
+                check.analytic_leg[1] ? "analytic" : "numerical");
     std::printf("  CoM height       standing posture %s %.4f m; walkable %.3f to %.3f m (feet "
                 "%.3f m apart); declared %.4f m\n",
                 m.standing_posture.c_str(), check.standing_com_height, check.lowest_com,

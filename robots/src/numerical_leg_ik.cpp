@@ -21,7 +21,7 @@ Eigen::Vector3d rotationVector(const Eigen::Matrix3d& r) {
 }  // namespace
 
 NumericalLegIk::NumericalLegIk(const RobotModel& model, const std::string& sole_frame,
-                               NumericalLegIkSettings settings)
+                               NumericalLegIkSettings settings, std::vector<int> locked)
     : model_(model), settings_(settings) {
   const Frame& frame = model_.frames()[model_.frameIndex(sole_frame)];
   joints_ = jointsToFrame(model_, sole_frame);
@@ -34,12 +34,20 @@ NumericalLegIk::NumericalLegIk(const RobotModel& model, const std::string& sole_
     throw std::invalid_argument("numerical leg IK: settings must be positive");
   }
   for (const int k : joints_) between_.push_back(model_.joints()[k].origin);
+  locked_.assign(joints_.size(), false);
+  for (const int i : locked) {
+    if (i < 0 || i >= static_cast<int>(joints_.size()) || locked_[static_cast<std::size_t>(i)])
+      throw std::invalid_argument("numerical leg IK: bad locked joint " + std::to_string(i));
+    locked_[static_cast<std::size_t>(i)] = true;
+  }
+  if (joints_.size() - locked.size() < 6)
+    throw std::invalid_argument("numerical leg IK: fewer than six joints left free");
   sole_ = frame.placement;
 }
 
 Pose NumericalLegIk::evaluate(
     const Pose& root, const Eigen::Ref<const Eigen::VectorXd>& angles,
-    Eigen::Matrix<double, 6, Eigen::Dynamic, 0, 6, kMaxLegJoints>* jacobian) const {
+    Eigen::Matrix<double, 6, Eigen::Dynamic, 0, 6, kMaxLegJoints>* jacobian, Pose* bodies) const {
   const int n = jointCount();
   Eigen::Vector3d axes[kMaxLegJoints], origins[kMaxLegJoints];
   bool prismatic[kMaxLegJoints];
@@ -55,6 +63,7 @@ Pose NumericalLegIk::evaluate(
     } else {
       pose.rotation = pose.rotation * Eigen::AngleAxisd(angles(i), joint.axis).toRotationMatrix();
     }
+    if (bodies != nullptr) bodies[i] = pose;
   }
   const Pose sole = pose * sole_;
   if (jacobian != nullptr) {
@@ -76,6 +85,25 @@ Pose NumericalLegIk::forwardKinematics(const Pose& root,
     throw std::invalid_argument("numerical leg IK: " + std::to_string(angles.size()) +
                                 " angles for a leg of " + std::to_string(jointCount()));
   return evaluate(root, angles, nullptr);
+}
+
+Pose NumericalLegIk::forwardKinematics(const Pose& root,
+                                       const Eigen::Ref<const Eigen::VectorXd>& angles,
+                                       Pose* bodies) const {
+  if (angles.size() != jointCount())
+    throw std::invalid_argument("numerical leg IK: " + std::to_string(angles.size()) +
+                                " angles for a leg of " + std::to_string(jointCount()));
+  return evaluate(root, angles, nullptr, bodies);
+}
+
+Eigen::Matrix<double, 6, Eigen::Dynamic> NumericalLegIk::jacobian(
+    const Pose& root, const Eigen::Ref<const Eigen::VectorXd>& angles) const {
+  if (angles.size() != jointCount())
+    throw std::invalid_argument("numerical leg IK: " + std::to_string(angles.size()) +
+                                " angles for a leg of " + std::to_string(jointCount()));
+  Eigen::Matrix<double, 6, Eigen::Dynamic, 0, 6, kMaxLegJoints> out;
+  evaluate(root, angles, &out);
+  return out;
 }
 
 NumericalLegIkResult NumericalLegIk::solve(const Pose& root, const Pose& sole,
@@ -113,7 +141,7 @@ NumericalLegIkResult NumericalLegIk::solve(const Pose& root, const Pose& sole,
     ++result.iterations;
     // Solve with every joint free, then hold at its limit each joint the step pushes beyond
     // it, and solve again, until the held set no longer changes (at most n rounds).
-    std::fill(held, held + n, false);
+    for (int i = 0; i < n; ++i) held[i] = locked_[static_cast<std::size_t>(i)];
     for (int round = 0; round <= n; ++round) {
       normal.noalias() = jacobian.transpose() * jacobian;
       normal.diagonal().array() += lambda * lambda;

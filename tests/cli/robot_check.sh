@@ -14,7 +14,7 @@ hrp2="$WPG_DATA_DIR/robots/hrp2"
 "$wpg" robot check hrp2 >"$WORKDIR/hrp2.txt" 2>"$WORKDIR/hrp2.err" || fail "hrp2: exit status $?"
 cat "$WORKDIR/hrp2.txt"
 [[ ! -s "$WORKDIR/hrp2.err" ]] || fail "hrp2: unexpected stderr: $(cat "$WORKDIR/hrp2.err")"
-for expected in "LLEG_SOLE 6 joints, RLEG_SOLE 6 joints" "straight 0.7" "walkable" \
+for expected in "LLEG_SOLE 6 joints, RLEG_SOLE 6 joints" "straight 0.7" "IK analytic, analytic" "walkable" \
     "declared        (-0.280, 0.200)" "reached by IK   ("; do
   grep -qF "$expected" "$WORKDIR/hrp2.txt" || fail "hrp2: no '$expected' in the report"
 done

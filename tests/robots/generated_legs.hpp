@@ -51,7 +51,7 @@ inline GeneratedLeg hrp2LikeLeg(std::mt19937& rng, double side) {
 
 // A leg of HRP-2's order of joints (hip yaw, roll, pitch, knee, ankle pitch, roll; with 7
 // joints a second yaw above the ankle) whose axes are tilted by up to 0.3 rad and whose joints
-// are 1-5 cm apart: no two hip axes meet, the analytic IK does not apply.
+// are 1-6 cm apart: no two hip axes meet, the analytic IK does not apply.
 inline GeneralLegShape generalLeg(std::mt19937& rng, double side, int joints) {
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   const Eigen::Vector3d x = Eigen::Vector3d::UnitX(), y = Eigen::Vector3d::UnitY(),
@@ -63,8 +63,7 @@ inline GeneralLegShape generalLeg(std::mt19937& rng, double side, int joints) {
   GeneralLegShape shape;
   for (int i = 0; i < joints; ++i) {
     GeneratedJoint joint;
-    joint.origin = Eigen::Vector3d(0.01 + 0.04 * std::abs(u(rng)), 0.02 * u(rng),
-                                   -(0.01 + 0.04 * std::abs(u(rng))));
+    joint.origin = Eigen::Vector3d(0.03 * u(rng), 0.02 * u(rng), -(0.01 + 0.04 * std::abs(u(rng))));
     if (i == 0) joint.origin.y() += side * 0.1;
     if (axes[i] == y && i > 0 && axes[i - 1] == y) joint.origin.z() -= 0.25 + 0.1 * u(rng);
     const Eigen::Vector3d tilt(u(rng), u(rng), u(rng));

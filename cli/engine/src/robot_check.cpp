@@ -87,6 +87,8 @@ RobotFolderCheck checkRobotFolder(const std::string& directory) {
     fail(out.urdf, e.what());
   }
   const robots::WalkingIk& ik = *built;
+  out.analytic_leg[0] = ik.analyticLeg(robots::WalkingIk::kLeft);
+  out.analytic_leg[1] = ik.analyticLeg(robots::WalkingIk::kRight);
   const Eigen::VectorXd standing =
       model.referenceConfiguration(multibody.standing_posture, {frames[0], frames[1]});
   out.standing_com_height = model.centerOfMass(standing).z();

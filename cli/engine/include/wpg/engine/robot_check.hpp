@@ -19,6 +19,7 @@ struct RobotFolderCheck {
   int joints = 0;                      // actuated joints of the URDF
   int leg_joints[2] = {0, 0};          // left, right: from the root to the sole frame
   double leg_length[2] = {0.0, 0.0};   // [m] hip to sole, leg straight (walking_reach.hpp)
+  bool analytic_leg[2] = {false, false};  // solved in closed form (else NumericalLegIk)
   double standing_com_height = 0.0;    // [m] CoM of the standing posture, soles on the ground
   double lowest_com = 0.0, highest_com = 0.0;  // [m] walkable CoM heights (walking_reach.hpp)
   std::vector<Eigen::Vector2d> declared_polygon;  // feasibility_x/y, a left step
