@@ -12,6 +12,11 @@ filter that ran (online: the loop of Fig. 3, or offline) and, for filter_setting
 the offline pass's errors beside the online ones.
 
     /usr/bin/python3 plot_run.py RUN.h5 [-o FIG.png] [--run NAME]
+    /usr/bin/python3 plot_run.py RUN.h5 --plan [--at T ...] [-o FIG.png] [--run NAME]
+
+With --plan, the figure is predicted against executed instead (run_figure/plan_figure.py): what
+the NMPC previewed (mpc/plan/) at the iterations at or before the times of --at (default four
+spread over the walk) beside the walk, and the prediction error against the look-ahead.
 
 Needs Debian's python3-h5py and python3-matplotlib (run it with /usr/bin/python3: a pyenv
 python3 does not see them). The PNG is written atomically (temporary file, then rename).
@@ -48,7 +53,32 @@ except ImportError as error:
     sys.exit(2)
 
 from run_figure.figure import draw, save_atomically  # noqa: E402
+from run_figure.plan_figure import draw_plan_figure  # noqa: E402
+from run_figure.plan_reading import read_plan  # noqa: E402
 from run_figure.reading import read_runs  # noqa: E402
+from run_figure.scenario_text import scenario_obstacles, scenario_pushes  # noqa: E402
+from run_figure.styles import DEFAULT_FOOT_LENGTH, DEFAULT_FOOT_WIDTH  # noqa: E402
+from wpg_file_reading import walking_number  # noqa: E402
+
+
+def draw_plan(runs, path, at_times):
+    """The predicted-against-executed figure of the file's one run (or the --run one)."""
+    if len(runs) != 1:
+        raise BadFile("%s: /runs: --plan draws one run, the file holds %d (name one with --run, "
+                      "e.g. --run %s)" % (path, len(runs), runs[0]["name"]))
+    run = runs[0]
+    plan = read_plan(path, run["name"])
+    walk = (float(run["time"][0]), float(run["time"][-1]))
+    for t in at_times or ():
+        if not walk[0] <= t <= walk[1]:
+            raise BadFile("--at %g: expected a time of the walk, in [%g, %g] s" % (t, *walk))
+    scenario = run["scenario"]
+    fig = plt.figure(figsize=(15, 8))
+    draw_plan_figure(fig, run, plan, at_times,
+                     walking_number(scenario, "foot_length", DEFAULT_FOOT_LENGTH),
+                     walking_number(scenario, "foot_width", DEFAULT_FOOT_WIDTH),
+                     scenario_obstacles(scenario), bool(scenario_pushes(scenario)))
+    return fig
 
 
 def main():
@@ -57,13 +87,19 @@ def main():
     parser.add_argument("run_file", help="HDF5 dataset written by `wpg run`")
     parser.add_argument("-o", "--output", help="PNG to write (default: RUN with .png)")
     parser.add_argument("--run", help="draw only this group of /runs/ (default: all)")
+    parser.add_argument("--plan", action="store_true",
+                        help="draw what the NMPC previewed against what the robot did")
+    parser.add_argument("--at", type=float, nargs="+", metavar="T",
+                        help="with --plan: the previews of the iterations at these times [s]")
     args = parser.parse_args()
-    output = args.output or os.path.splitext(args.run_file)[0] + ".png"
+    if args.at and not args.plan:
+        raise BadFile("--at: expected with --plan only")
+    output = args.output or os.path.splitext(args.run_file)[0] + (".plan" if args.plan else "") + ".png"
     runs = read_runs(args.run_file, args.run)
     if not os.path.isdir(os.path.dirname(os.path.abspath(output))):
         raise BadFile("%s: cannot write it: no such folder" % output)
     try:
-        fig = draw(runs, args.run_file)
+        fig = draw_plan(runs, args.run_file, args.at) if args.plan else draw(runs, args.run_file)
     except (ValueError, TypeError, KeyError, IndexError, OverflowError, AttributeError) as error:
         # numbers the checks let through that matplotlib cannot place (e.g. 1e300 m)
         raise BadFile("%s: cannot draw it: %s: %s" % (args.run_file, type(error).__name__,

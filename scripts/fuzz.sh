@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # scripts/fuzz.sh [SECONDS] [TARGET...]: runs each libFuzzer target (tests/fuzz/README.md) for
-# SECONDS (default 30: CI's smoke run, 4 x 30 s) in the sanitizer tree build-sanitize/ (or
+# SECONDS (default 30; CI's smoke run gives 10) in the sanitizer tree build-sanitize/ (or
 # $WPG_SANITIZE_BUILD_DIR; built when needed). Targets: fuzz_scenario_loader,
 # fuzz_run_dataset_reader, fuzz_study_loader, fuzz_shard_reader, fuzz_view_page (default: all five). The corpus grows in BUILD/fuzz/<target>/corpus and is
 # kept between runs; the seeds and tests/fuzz/regressions/<target>/ are run first. Fails on a

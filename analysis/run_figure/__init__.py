@@ -7,7 +7,9 @@
 - top_view: footsteps, CoM and CoP paths, obstacles, the goal and the routes;
 - time_panels: CoM and CoP against time, the NMPC solve time and status;
 - fig6: the paper's Fig. 6 analogue (multibody ZMP before and after the dynamic filter);
-- figure: the panels laid out per run, and the PNG written atomically.
+- figure: the panels laid out per run, and the PNG written atomically;
+- plan_reading, plan_figure: `--plan`, what the NMPC previewed (mpc/plan/) against what the
+  robot did, and the prediction error against the look-ahead.
 
 The modules import numpy and matplotlib at their top: plot_run.py checks that they can be
 imported (one line and exit 2 otherwise) before it imports this package.

@@ -115,6 +115,8 @@ struct PlotOptions {
   std::string input;
   std::string output;  // empty: the input with its extension replaced by .png (.RUN.png with --run)
   std::string run;     // --run NAME: that run of a file with several
+  bool plan = false;   // --plan: predicted against executed (the NMPC's plans, mpc/plan/)
+  std::vector<double> at;  // --at T...: with --plan, the iterations at these times [s]
 };
 int plotCommand(const PlotOptions& options);
 

@@ -350,6 +350,14 @@ void registerPlotCommand(CLI::App& app, CommandAction& action) {
       ->type_name("FIG.png");
   plot_app->add_option("--run", plot.run, "Draw only this run of the file (a batch file holds many)")
       ->type_name("NAME");
+  plot_app->add_flag("--plan", plot.plan,
+                     "Draw what the NMPC previewed (mpc/plan/) against what the robot did, and "
+                     "the prediction error against the look-ahead (default PNG: RUN.plan.png)");
+  plot_app->add_option("--at", plot.at,
+                       "With --plan: the previews of the iterations at these times (default: "
+                       "four spread over the walk)")
+      ->type_name("T [s]")
+      ->expected(1, 16);
   setExitCodes(plot_app,
                "0 the figure is drawn, 2 bad input or the plot script failed (no figure), " +
                    std::string(kIncompleteReading));

@@ -45,23 +45,36 @@ PY
   refused 2 "/runs/tiny_0: external link to 's0.h5': no such file" analyze idx.h5
   ;;
 expansion_cap)
-  # Runs are counted before they are expanded, against a cap of 10^6, without wrapping; keys
-  # are checked first.
+  # Runs are counted before anything is computed, against a cap of 2^31 - 1 (the batch files'
+  # int32 run numbers), without wrapping; keys are checked first.
   values() { "$PYTHON" -c "print('[' + ', '.join(str($2 + i) for i in range($1)) + ']')"; }
+  # 7 keys of 1001 values: 1.007 x 10^21 runs, over 2^63 (and 2^64).
   { echo "name: huge"; echo "base: walk_forward"; echo "sweep:"; echo "  grid:"
-    echo "    walking.weight_cop: $(values 1001 100)"; echo "    walking.weight_jerk: $(values 1000 1)"
+    for key in walking.weight_cop walking.weight_jerk walking.weight_velocity walking.weight_yaw \
+               walking.com_height robot_mass duration; do
+      start=100; [[ $key == walking.com_height ]] && start=0.8  # run 0 is checked first
+      echo "    $key: $(values 1001 $start)"
+    done
   } >grid.yaml
-  refused 2 "expected at most 1000000 runs" batch grid.yaml -o grid.h5 --no-plot
+  refused 2 "grid.yaml: key .sweep.: expected at most 2147483647 runs (2^31 - 1), got more" \
+    batch grid.yaml -o grid.h5 --no-plot
   # 16 keys of 16 values: 2^64 runs, a product that wraps to 0 in 64 bits.
   { echo "name: wraps"; echo "base: walk_forward"; echo "sweep:"; echo "  grid:"
     for k in $(seq 0 15); do echo "    no_such_key_$k: $(values 16 0)"; done
   } >wrap.yaml
   refused 2 "no_such_key_0" batch wrap.yaml -o wrap.h5 --no-plot
+  # 2 x 2^30 = 2^31 runs: one over the cap.
   sed -e 's/^name: tiny/name: samples/' study.yaml >samples.yaml
-  printf '  random: {samples: 2000000, seed: 1, keys: {walking.com_height: {uniform: [0.78, 0.84]}}}\n' >>samples.yaml
-  refused 2 "sweep.random.samples.*at most 1000000" batch samples.yaml -o samples.h5 --no-plot
+  printf '  random: {samples: 1073741824, seed: 1, keys: {walking.com_height: {uniform: [0.78, 0.84]}}}\n' >>samples.yaml
+  refused 2 "samples.yaml: key .sweep.: expected at most 2147483647 runs" batch samples.yaml -o samples.h5 --no-plot
+  # 2 x 10^7 runs: a study, but over one batch file's 10^7 rows: in slices.
+  sed -e 's/^name: tiny/name: twenty_million/' study.yaml >slices.yaml
+  printf '  random: {samples: 10000000, seed: 1, keys: {walking.com_height: {uniform: [0.78, 0.84]}}}\n' >>slices.yaml
+  refused 2 "at most 10000000 per batch file (run it in slices: --shard K/N with N >= 2)" \
+    batch slices.yaml -o slices.h5 --no-plot
   sed -e 's/^seeds: 1$/seeds: 2000000/' compare.yaml >seeds.yaml
   refused 2 "seeds.*at most 1000000" compare seeds.yaml -o seeds --no-plot
+  [[ ! -e slices.h5 ]] || fail "an output was written"
   [[ ! -e grid.h5 && ! -e wrap.h5 && ! -e samples.h5 && ! -e seeds ]] || fail "an output was written"
   ;;
 run_name_collision)
@@ -103,7 +116,7 @@ with h5py.File("s1.h5", "r+") as f:
     table = f["batch/summary"]
     attrs = dict(table["exit_status"].attrs)
     del table["exit_status"]
-    column = table.create_dataset("exit_status", data=[b"x", b"y"])
+    column = table.create_dataset("exit_status", data=[b"x"] * len(table["done"]))
     for name, value in attrs.items():
         column.attrs[name] = value
 PY
@@ -126,8 +139,8 @@ for path, name in (("s0.h5", "name"), ("s1.h5", "done")):
         del table[name]
         table.create_dataset(name, shape=(2**40,), dtype=dtype, chunks=(1024,))
 PY
-  refused 2 "s0.h5: /batch/summary/name: expected at most 1000000 runs" merge idx.h5 s0.h5 --no-plot
-  refused 2 "s1.h5: /batch/summary/done: expected at most 1000000 runs" merge idx.h5 s1.h5 --no-plot
+  refused 2 "s0.h5: /batch/summary/name: expected at most 10000000 runs" merge idx.h5 s0.h5 --no-plot
+  refused 2 "s1.h5: /batch/summary/done: expected at most 10000000 runs" merge idx.h5 s1.h5 --no-plot
   [[ ! -e idx.h5 ]] || fail "an index was written"
   ;;
 shard_attribute_shapes)

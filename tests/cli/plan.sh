@@ -2,7 +2,9 @@
 # plan.sh WPG: `wpg run` stores what each NMPC iteration predicted (mpc/plan/, datasets/
 # SCHEMA.md): one row per iteration, the first previewed CoM is the CoM executed at the next
 # iteration (1e-12), every landed step is the previewed step 0 of the iteration before its
-# landing. A study's `plan: false` leaves it out of every run; `plan: maybe` is one line naming
+# landing. `wpg replay` keeps the plan as it was, bit for bit. `wpg plot --plan` draws it
+# against the walk (RUN.plan.png); a run without a plan, --at outside the walk and --at without
+# --plan are one line, exit 2, no figure. A study's `plan: false` leaves it out of every run; `plan: maybe` is one line naming
 # the key, exit 2, no file.
 set -euo pipefail
 # shellcheck source=common.sh
@@ -32,6 +34,40 @@ with h5py.File(sys.argv[1], "r") as f:
         assert np.array_equal(steps[i, 0], row), (steps[i, 0], row)
     assert plan["active_rows"].shape == (k, run["mpc/slack"].shape[1])
 PY
+"$wpg" replay "$WORKDIR/curve.h5" --no-filter --no-plot -o "$WORKDIR/replayed.h5" >/dev/null
+"$PYTHON" - "$WORKDIR/curve.h5" "$WORKDIR/replayed.h5" <<'PY' || fail "wpg replay changed mpc/plan"
+import sys
+import h5py
+import numpy as np
+with h5py.File(sys.argv[1], "r") as a, h5py.File(sys.argv[2], "r") as b:
+    before, after = a["runs/curve/mpc/plan"], b["runs/curve/mpc/plan"]
+    assert sorted(before) == sorted(after), (sorted(before), sorted(after))
+    for name in before:
+        assert np.array_equal(before[name][()], after[name][()]), name
+    for name in ("samples", "steps", "sampling_period"):
+        assert before.attrs[name] == after.attrs[name], name
+    assert "q" in b["runs/curve"]
+PY
+# Predicted against executed: the PNG beside the run, then the refusals.
+"$wpg" plot "$WORKDIR/curve.h5" --plan --at 3 7.5 >"$WORKDIR/stdout" || fail "plot --plan: exit $?"
+grep -qx "figure: $WORKDIR/curve.plan.png" "$WORKDIR/stdout" || fail "plot --plan: $(cat "$WORKDIR/stdout")"
+[[ "$(head -c 8 "$WORKDIR/curve.plan.png" | od -An -tx1 | tr -d ' ')" == 89504e470d0a1a0a ]] ||
+  fail "curve.plan.png is not a PNG"
+"$wpg" run walk_forward --no-plot --set duration=3 --set generator.record_plan=false \
+  -o "$WORKDIR/no_plan.h5" >/dev/null
+refused() {  # refused EXPECTED PNG ARGS...: exit 2, one line holding EXPECTED, no PNG
+  local expected="$1" png="$2" status=0
+  shift 2
+  "$wpg" plot "$@" >/dev/null 2>"$WORKDIR/stderr" || status=$?
+  [[ $status == 2 ]] || fail "plot $*: exit $status, expected 2"
+  [[ "$(wc -l <"$WORKDIR/stderr")" == 1 ]] || fail "plot $*: expected one line: $(cat "$WORKDIR/stderr")"
+  grep -qF -- "$expected" "$WORKDIR/stderr" || fail "plot $*: $(cat "$WORKDIR/stderr")"
+  [[ ! -e "$png" ]] || fail "plot $*: wrote $png"
+}
+refused "/runs/walk_forward/mpc/plan: expected the NMPC's plans, missing" \
+  "$WORKDIR/no_plan.plan.png" "$WORKDIR/no_plan.h5" --plan
+refused "--at 99: expected a time of the walk" "$WORKDIR/late.png" "$WORKDIR/curve.h5" --plan --at 99 -o "$WORKDIR/late.png"
+refused "--at: expected with --plan only" "$WORKDIR/curve.png" "$WORKDIR/curve.h5" --at 3
 cat >"$WORKDIR/study.yaml" <<'YAML'
 name: no_plans
 plan: false

@@ -21,15 +21,20 @@ for k in 0 1 2; do
     fail "--shard $k/3: exit $? ($(cat stderr))"
   grep -q "shard $k/3: " stdout || fail "--shard $k/3: $(cat stdout)"
 done
-# Slice k holds the runs i with i mod 3 = k, and only them.
-"$PYTHON" - shards/part-*.h5 <<'PY' || fail "the slices do not hold runs i mod 3 = k"
+# Slice k holds the runs i with i mod 3 = k, and only them: its table has their rows only
+# (a slice of a study of 10^7 runs starts as quickly as one of 10), its `index` names them.
+"$PYTHON" - "$total" shards/part-*.h5 <<'PY' || fail "the slices do not hold runs i mod 3 = k"
 import sys, h5py
-for k, path in enumerate(sys.argv[1:]):
+total = int(sys.argv[1])
+for k, path in enumerate(sys.argv[2:]):
     with h5py.File(path, "r") as f:
         assert f.attrs["shard"] == f"{k}/3", f.attrs["shard"]
-        done = f["batch/summary/done"][:]
-        assert [i for i, d in enumerate(done) if d] == list(range(k, len(done), 3)), done
-        assert len(f["runs"]) == int(done.sum())
+        assert f.attrs["run_count"] == total, f.attrs["run_count"]
+        index, done = f["batch/summary/index"][:], f["batch/summary/done"][:]
+        assert list(index) == list(range(k, total, 3)), index
+        assert done.all(), done
+        names = [n.decode() for n in f["batch/summary/name"][:]]
+        assert sorted(f["runs"]) == sorted(names), (list(f["runs"]), names)
 PY
 
 "$wpg" merge index.h5 shards/part-0.h5 shards/part-1.h5 shards/part-2.h5 --no-plot >stdout 2>stderr ||

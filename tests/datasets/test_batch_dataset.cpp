@@ -52,11 +52,12 @@ TEST_F(BatchFiles, RunsAndSummaryRowsAsTheyFinish) {
   {
     auto writer = BatchDatasetWriter::create(path, study, kColumns);
     BatchRunRecord record;
-    record.run = &study.runs[0];
+    const StudyRun run0 = study.runs[0], run2 = study.runs[2];
+    record.run = &run0;
     record.result = &direct;
     record.values = {1.5, 3.0};
     writer->write(record);
-    record.run = &study.runs[2];
+    record.run = &run2;
     record.result = &prepared_result;
     record.exit_status = 1;
     record.values = {2.5, 7.0};
@@ -117,9 +118,10 @@ TEST_F(BatchFiles, ChecksOfTheRecordAreTheOnesWritten) {
     record.result = &result;
     record.checks = &checks;
     record.values = {1.0, 1.0};
-    record.run = &study.runs[0];
+    const StudyRun run0 = study.runs[0], run1 = study.runs[1];
+    record.run = &run0;
     writer->write(record);
-    record.run = &study.runs[1];
+    record.run = &run1;
     const PreparedRun prepared = BatchDatasetWriter::prepare(record);
     writer->write(record, &prepared);
     writer->close();
@@ -140,14 +142,16 @@ TEST_F(BatchFiles, ResumeKnowsTheDoneRunsAndRefusesAnotherStudy) {
   {
     auto writer = BatchDatasetWriter::create(path, study, kColumns);
     BatchRunRecord record;
-    record.run = &study.runs[1];
+    const StudyRun run1 = study.runs[1];
+    record.run = &run1;
     record.result = &result;
     record.values = {1.0, 1.0};
     writer->write(record);
   }
   {
     auto writer = BatchDatasetWriter::resume(path, study, kColumns);
-    EXPECT_EQ(writer->done(), (std::vector<bool>{false, true, false}));
+    EXPECT_EQ((std::vector<bool>{writer->done(0), writer->done(1), writer->done(2)}),
+              (std::vector<bool>{false, true, false}));
   }
   const std::string before = bytes(path);
   const Study other = load("three", "{robot_mass: [50.0, 55.0, 61.0]}");  // same name

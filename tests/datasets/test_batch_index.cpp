@@ -42,7 +42,8 @@ class BatchIndexFiles : public ScratchDirectoryTest {
     const wpg::WalkResult result = handMadeResult(300, 4, 6, 0.0);
     for (const std::size_t run : runs) {
       BatchRunRecord record;
-      record.run = &study_.runs[run];
+      const StudyRun made = study_.runs[run];
+      record.run = &made;
       record.result = &result;
       record.values = {10.0 * static_cast<double>(run) + offset};
       writer->write(record);

@@ -236,6 +236,60 @@ TEST_F(HostileFiles, DeclaredSizesBeyondTheLimitAreRefusedBeforeAllocation) {
                              {"/runs/walk_forward/footsteps declares 200000000 rows"});
 }
 
+// mpc/plan/ is read back as it was written, every number bit for bit, so that a replayed or
+// rewritten run keeps what each NMPC iteration predicted.
+TEST_F(HostileFiles, ThePlanIsReadBackAsWritten) {
+  const Scenario scenario = wpg::datasets::loadScenario(
+      wpg_test::kScenariosDir + "/walk_forward.yaml", {"duration=4"}, wpg_test::kRobotsDir);
+  const wpg::WalkResult result = wpg::generateWalk(scenario.walking, scenario.request);
+  const wpg::PlanLog& written = result.trajectory.plans;
+  ASSERT_EQ(written.size(), 40u);
+  const wpg::PlanLog& read_back = read(copy("plan.h5")).result.trajectory.plans;
+  EXPECT_EQ(read_back.max_samples, written.max_samples);
+  EXPECT_EQ(read_back.steps, written.steps);
+  EXPECT_EQ(read_back.families, written.families);
+  EXPECT_EQ(read_back.sampling_period, written.sampling_period);
+  EXPECT_EQ(read_back.samples, written.samples);
+  EXPECT_EQ(read_back.com_position, written.com_position);
+  EXPECT_EQ(read_back.com_velocity, written.com_velocity);
+  EXPECT_EQ(read_back.com_acceleration, written.com_acceleration);
+  EXPECT_EQ(read_back.jerk, written.jerk);
+  EXPECT_EQ(read_back.cop, written.cop);
+  EXPECT_EQ(read_back.step, written.step);
+  EXPECT_EQ(read_back.step_side, written.step_side);
+  EXPECT_EQ(read_back.active_rows, written.active_rows);
+}
+
+// A plan's sizes come from its attributes, bounded before any dataset is read; each dataset
+// must hold exactly its iterations' rows.
+TEST_F(HostileFiles, APlanOfBadSizesIsRefusedWithItsDataset) {
+  const std::string plan = "/runs/walk_forward/mpc/plan";
+  const std::string huge = copy("huge_plan.h5");
+  {
+    H5::H5File f(huge, H5F_ACC_RDWR);
+    H5::Group group = f.openGroup(plan);
+    group.removeAttr("samples");
+    group.createAttribute("samples", H5::PredType::NATIVE_INT, H5::DataSpace(H5S_SCALAR))
+        .write(H5::PredType::NATIVE_INT, std::vector<int>{1000000000}.data());
+  }
+  wpg_test::expectInputError([&] { read(huge); }, huge,
+                             {plan + ":samples: expected an integer in [1, 200]"});
+
+  const std::string short_com = copy("short_plan.h5");
+  declareRows(short_com, plan + "/com", 39, 2);
+  wpg_test::expectInputError([&] { read(short_com); }, short_com,
+                             {plan + "/com has 39 rows, expected 640"});
+
+  const std::string declared = copy("declared_plan.h5");
+  declareRows(declared, plan + "/cop", 200000000, 2);
+  wpg_test::expectInputError([&] { read(declared); }, declared,
+                             {plan + "/cop declares 200000000 rows: expected at most 640"});
+
+  const std::string nan = copy("nan_plan.h5");
+  writeDoubleAt(nan, plan + "/steps", 7, 2, std::nan(""));
+  wpg_test::expectInputError([&] { read(nan); }, nan, {plan + "/steps row 7 column 2"});
+}
+
 // Attributes read into one value must hold one (an array would be written past it).
 TEST_F(HostileFiles, ArrayAttributesWhereOneValueIsExpectedAreRefused) {
   const std::string file = copy("array_success.h5");

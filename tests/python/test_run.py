@@ -169,6 +169,18 @@ def test_the_figure_is_the_cli_figure(walk):
     assert any("run walk_forward" in title for title in titles)
 
 
+def test_the_plan_figure_is_the_cli_one(walk):
+    import matplotlib.figure
+    figure = walk.figure(plan=True, at=[3.0])
+    assert isinstance(figure, matplotlib.figure.Figure)
+    legends = [t.get_text() for ax in figure.axes if ax.get_legend()
+               for t in ax.get_legend().get_texts()]
+    assert "preview at t = 3.0 s (16 samples, 2 steps)" in legends, legends
+    titles = [ax.get_title() for ax in figure.axes]
+    assert any(t.startswith("prediction error over %d iterations" % len(walk.mpc))
+               for t in titles), titles
+
+
 def test_scenarios_are_the_shipped_files():
     import os
     names = wpg.scenarios()

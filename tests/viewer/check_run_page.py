@@ -4,6 +4,8 @@ The page of a replayed walk_forward (`wpg view`) in headless Chromium with the n
 - opened at #t=0 and at #t=6 (the camera held still: follow=0), it logs no error, no warning,
   no exception, and requests nothing but its own file;
 - it opens paused at the time of the fragment (the contract of `#t=SECONDS`);
+- the NMPC preview shown is the plan of the iteration at the fragment's time (mpc/time holds
+  0, 0.1, ... s: exactly t), with the steps it previewed (at least one while walking at 6 s);
 - the two screenshots differ where the robot is (its box on the screen, which the page
   publishes) and not in a corner of the sky away from it: the robot walked, the view held;
 - with --max-bytes, the page is at most that large;
@@ -65,6 +67,11 @@ def main():
             if abs(shown - t) > 1e-3 or playing:
                 fail("#t=%d: the page shows t = %s s, %s (expected paused at %d s)"
                      % (t, shown, "playing" if playing else "paused", t))
+            preview = page.evaluate("document.body.dataset.wpgPreview")
+            iteration, ghosts = (float(v) for v in preview.split(","))
+            if abs(iteration - t) > 1e-4 or (t == 6 and ghosts == 0):
+                fail("#t=%d: the preview shows the plan of t = %s s with %d ghost steps (expected "
+                     "t = %d s%s)" % (t, iteration, ghosts, t, ", some" if t == 6 else ""))
             path = os.path.join(args.out, "t%d.png" % t)
             page.screenshot(path)
             shots[t] = image.imread(path)[:, :, :3]

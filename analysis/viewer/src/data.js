@@ -98,6 +98,7 @@ export const COLOURS = {
   unknownObstacle: '#d97706',
   goal: '#f5c518',
   push: '#e11d48',
+  preview: '#0d9488',
 };
 
 export const STATUS_STYLE = {

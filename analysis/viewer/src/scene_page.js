@@ -6,6 +6,7 @@ import { Player, parseFragment } from './player.js';
 import { SceneView } from './scene_view.js';
 import { SimpleFigure, UrdfRobot } from './robot_figure.js';
 import { WalkMarkers } from './walk_markers.js';
+import { PlanPreview, decodePreview } from './plan_preview.js';
 import { buildTimePlots } from './time_plots.js';
 
 // The run's arrays decoded, with names the views use.
@@ -27,6 +28,7 @@ function decodeWalk(data) {
     plans: data.plans,
     pushes: data.pushes,
     mpc: { time: floats(data.mpc.time), solveTime: floats(data.mpc.solve_time), status: uint8s(data.mpc.status) },
+    preview: decodePreview(data.preview),
   };
   if (!walk.time.length) throw new Error('the run has no samples');
   return walk;
@@ -59,6 +61,7 @@ function buildLegend(walk, hasRobot) {
     if (plan.route.length >= 2) items.push(legendItem(COLOURS.route[i % COLOURS.route.length], `route ${i + 1} (${plan.trigger}, t = ${format(plan.time, 3)} s)`));
   });
   if (walk.goal) items.push(legendItem(COLOURS.goal, 'goal and its tolerance', 'dot'));
+  if (walk.preview) items.push(legendItem(COLOURS.preview, 'NMPC preview at this time: predicted CoM, ghost steps'));
   if (walk.pushes.length) items.push(legendItem(COLOURS.push, `push${walk.pushes.length > 1 ? 'es' : ''} (arrow at the CoM while it acts)`));
   if (!hasRobot) items.push(element('div', { class: 'legend-note', text: 'not replayed: the feet and the CoM as a simple figure (wpg run --replay for the robot)' }));
   return element('div', { class: 'legend' }, items);
@@ -82,6 +85,7 @@ export function scenePage(app, data) {
     figure = new SimpleFigure(view.scene, walk);
   }
   const markers = new WalkMarkers(view.scene, walk);
+  const preview = walk.preview ? new PlanPreview(view.scene, walk, walk.preview) : null;
   viewport.append(buildLegend(walk, !!(q && data.urdf)), status);
 
   const follow = element('label', { class: 'toggle' }, [element('input', { type: 'checkbox', checked: '' }), 'follow']);
@@ -90,6 +94,16 @@ export function scenePage(app, data) {
     view.follow = false;
     follow.firstChild.checked = false;
   }
+  // The preview's toggle (#preview=0 in the URL: off).
+  const previewToggle = element('label', { class: 'toggle' }, [element('input', { type: 'checkbox', checked: '' }), 'preview']);
+  if (preview) {
+    const box = previewToggle.firstChild;
+    box.addEventListener('change', () => { preview.visible = box.checked; view.requestRender(); });
+    if (parseFragment(window.location.hash).preview === '0') {
+      box.checked = false;
+      preview.visible = false;
+    }
+  }
   const pushTimes = walk.pushes.map((p) => p.t);
   const supportNames = ['double support', 'left support', 'right support'];
   let plotList = [];
@@ -97,6 +111,7 @@ export function scenePage(app, data) {
     const i = sampleAt(walk.time, t);
     figure.show(i);
     markers.show(i, t);
+    if (preview) preview.show(i, t);
     view.followPoint(new THREE.Vector3(walk.com[3 * i], walk.com[3 * i + 1], 0));
     const pushing = walk.pushes.some((p) => t >= p.t && t < p.t + p.duration);
     if (text) status.textContent = `${supportNames[walk.support[i]] || ''}${pushing ? ' · pushed' : ''}`;
@@ -120,6 +135,8 @@ export function scenePage(app, data) {
     const ys = corners.map((c) => c[1]);
     document.body.dataset.robotBox = [lowest(xs), lowest(ys), highest(xs), highest(ys)].map((v) => v.toFixed(1)).join(',');
     document.body.dataset.wpgTime = player.t.toFixed(4);
+    // The plan shown: its iteration's time and the ghost steps drawn ("" without a plan).
+    document.body.dataset.wpgPreview = preview ? `${preview.iterationTime.toFixed(4)},${preview.shownSteps}` : '';
     document.body.dataset.wpgReady = '1';
   };
   const render = () => {
@@ -130,6 +147,7 @@ export function scenePage(app, data) {
   const player = new Player(controls, start, end, showTime, render, (interval) => view.adapt(interval));
   player.scale = () => view.scale;
   controls.append(follow);
+  if (preview) controls.append(previewToggle);
   if (pushTimes.length) {
     controls.append(element('span', { class: 'jumps' }, [
       'pushes:',

@@ -2,6 +2,7 @@
 #include "wpg/engine/batch_study_run.hpp"
 
 #include "study_request_checks.hpp"
+#include "wpg/datasets/input/input_limits.hpp"
 #include "wpg/datasets/storage/output_file.hpp"
 #include "wpg/engine/data_paths.hpp"
 #include "wpg/engine/run_input_checks.hpp"
@@ -27,6 +28,17 @@ BatchStudyResult runBatchStudy(const StudyRequest& request, StudyObserver& obser
     study = datasets::loadStudy(
         request.study, [](const std::string& base) { return resolveScenarioPath(base); },
         robotsDirectory(), request.jobs);
+    // One file's summary table holds at most kMaxBatchFileRuns rows: a larger study in slices.
+    const std::size_t file_runs =
+        request.shard ? sliceRuns(study, *request.shard) : study.runs.size();
+    if (file_runs > datasets::kMaxBatchFileRuns) {
+      throw datasets::InputError(
+          request.study + ": " + std::to_string(study.runs.size()) + " runs, " +
+          std::to_string(file_runs) + " in one file: expected at most " +
+          std::to_string(datasets::kMaxBatchFileRuns) + " per batch file (run it in slices: " +
+          request.names.shard + " K/N with N >= " +
+          std::to_string((study.runs.size() - 1) / datasets::kMaxBatchFileRuns + 1) + ")");
+    }
     // Never over the study, a device, a folder, a link or a file of another kind, for the
     // batch file and every file beside it (output_file.hpp); a slice has no summary files.
     std::vector<datasets::PlannedOutput> outputs = batchOutputs(request.output, request.figures);

@@ -52,8 +52,8 @@ ComparisonStudyResult runComparisonStudy(const StudyRequest& request, StudyObser
     comparison = datasets::loadComparisonStudy(
         request.study, [](const std::string& base) { return resolveScenarioPath(base); },
         robotsDirectory(), request.jobs);
-    for (const datasets::StudyRun& run : comparison.study.runs) {
-      if (!run.scenario.goal.enabled) {
+    for (const datasets::Study::CheckedRun& run : comparison.study.checked) {  // every run
+      if (!run.goal) {
         throw datasets::InputError(request.study + ": world '" +
                                    comparison.worlds[comparison.runs[run.index].world] +
                                    "': expected a walk to a goal (a scenario with `goal:`)");

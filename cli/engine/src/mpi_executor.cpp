@@ -77,21 +77,22 @@ std::vector<bool> prepareShardFolder(const datasets::Study& study, const StudyOu
     observer.movedDamagedFile(file, datasets::moveDamagedFileAside(file), true);
   }
   for (const datasets::ShardContents& shard : shards) {
-    for (std::size_t i = 0; i < done.size() && i < shard.done.size(); ++i) {
-      done[i] = done[i] || shard.done[i];
+    for (std::size_t row = 0; row < shard.done.size(); ++row) {
+      if (shard.done[row] && shard.runs[row] < done.size()) done[shard.runs[row]] = true;
     }
   }
   return done;
 }
 
-// The runs of this rank, pulled one at a time: `next(finished, report)` gets the run the calling
-// worker just finished (null at its first call) with its report, and returns the worker's next
-// run (null: no more). Each run is written into `writer` as it finishes: the order of the
+// The runs of this rank, pulled one at a time: `next(finished, report)` gets the index of the
+// run the calling worker just finished (none at its first call) with its report, and returns
+// the worker's next run's (none: no more), which the worker makes from it (study_runs.hpp). Each run is written into `writer` as it finishes: the order of the
 // groups in the shard differs from run to run, not their contents. Exceptions stop the workers
 // and the first is rethrown.
-using RunSource = std::function<const datasets::StudyRun*(const datasets::StudyRun* finished,
-                                                          std::vector<double>&& report)>;
-void runPulled(const RunSource& next, int threads, const std::string& robots_directory,
+using RunSource = std::function<std::optional<std::size_t>(std::optional<std::size_t> finished,
+                                                           std::vector<double>&& report)>;
+void runPulled(const datasets::Study& study, const RunSource& next, int threads,
+               const std::string& robots_directory,
                datasets::BatchDatasetWriter& writer, const RunNumbers& values,
                const RunNumbers& report) {
   std::mutex mutex;  // the writer and the first error
@@ -99,24 +100,25 @@ void runPulled(const RunSource& next, int threads, const std::string& robots_dir
   const auto worker = [&]() {
     RobotModelCache models(robots_directory);
     const RunSettings settings{robots_directory, &models};
-    const datasets::StudyRun* finished = nullptr;
+    std::optional<std::size_t> finished;
     std::vector<double> finished_report;
     try {
-      while (const datasets::StudyRun* run = next(finished, std::move(finished_report))) {
+      while (const std::optional<std::size_t> index = next(finished, std::move(finished_report))) {
         {
           std::lock_guard<std::mutex> lock(mutex);
           if (error) return;
         }
-        const RunResult result = runScenario(run->scenario, settings);
-        BatchRunRecordOf record(*run, result);
+        const datasets::StudyRun run = study.runs[*index];
+        const RunResult result = runScenario(run.scenario, settings);
+        BatchRunRecordOf record(run, result);
         const datasets::PreparedRun prepared = datasets::BatchDatasetWriter::prepare(record.record());
-        record.record().values = values(*run, result);
+        record.record().values = values(run, result);
         {
           std::lock_guard<std::mutex> lock(mutex);
           writer.write(record.record(), &prepared);
         }
-        finished = run;
-        finished_report = report(*run, result);
+        finished = run.index;
+        finished_report = report(run, result);
       }
     } catch (...) {
       std::lock_guard<std::mutex> lock(mutex);
@@ -207,7 +209,7 @@ bool MpiExecutor::run(const datasets::Study& study, const StudyOutput& output,
                         shardFolderOf(output.path));
     }
     observer.started(todo.size());
-    reports.resize(study.runs.size());
+    if (handling.collect) reports.resize(study.runs.size());  // a comparison's: small
   }
   mpi::RunDispenser dispenser(
       world_, todo, workers_,
@@ -216,16 +218,14 @@ bool MpiExecutor::run(const datasets::Study& study, const StudyOutput& output,
                    // message = [exit status, the caller's report...]
                    observer.runFinished(!message.empty() && message[0] != 0.0);
                    if (!message.empty()) message.erase(message.begin());
-                   reports[run] = std::move(message);
+                   if (run < reports.size()) reports[run] = std::move(message);
                  })
            : nullptr);
   try {
     runPulled(
-        [&](const datasets::StudyRun* finished, std::vector<double>&& message) {
-          const std::optional<std::size_t> next = dispenser.next(
-              finished ? std::optional<std::size_t>(finished->index) : std::nullopt,
-              std::move(message));
-          return next ? &study.runs[*next] : nullptr;
+        study,
+        [&](std::optional<std::size_t> finished, std::vector<double>&& message) {
+          return dispenser.next(finished, std::move(message));
         },
         workers_, robots_directory_, *writer, handling.summary_values,
         [&](const datasets::StudyRun& run, const RunResult& result) {

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "wpg/datasets/input/input_error.hpp"
+#include "wpg/datasets/input/robot_file.hpp"
 #include "wpg/planning/goal_walk.hpp"
 #include "wpg/preview_control.hpp"
 
@@ -43,9 +44,15 @@ void checkRunInput(const datasets::Scenario& scenario, const std::string& origin
 
 void checkStudyRobotModels(const datasets::Study& study, const std::string& robots_directory) {
   std::set<std::string> replayed_robots;
-  for (const datasets::StudyRun& run : study.runs) {
-    if (run.scenario.replay && replayed_robots.insert(run.scenario.robot).second)
-      (void)loadRobotModel(robots_directory, run.scenario.robot, run.scenario.multibody);
+  // The checked runs take every value of the swept keys (a swept robot's every name).
+  for (const datasets::Study::CheckedRun& run : study.checked) {
+    if (run.replay) replayed_robots.insert(run.robot);
+  }
+  // Each robot's multibody model as its walking file names it.
+  for (const std::string& robot : replayed_robots) {
+    const datasets::RobotFile file =
+        datasets::loadRobotFile(robotWalkingFilePath(robots_directory, robot));
+    (void)loadRobotModel(robots_directory, robot, file.multibody);
   }
 }
 

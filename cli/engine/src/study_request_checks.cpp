@@ -39,11 +39,7 @@ std::optional<MpiWorld> checkStudyInput(const StudyRequest& request,
 }
 
 std::vector<std::string> studyWarnings(const datasets::Study& study) {
-  std::vector<std::string> warnings;
-  for (const datasets::StudyRun& run : study.runs) {
-    warnings.insert(warnings.end(), run.scenario.warnings.begin(), run.scenario.warnings.end());
-  }
-  return warnings;
+  return study.warnings;
 }
 
 std::unique_ptr<StudyExecutor> makeStudyExecutor(const StudyRequest& request,
@@ -54,11 +50,7 @@ std::unique_ptr<StudyExecutor> makeStudyExecutor(const StudyRequest& request,
 }
 
 std::size_t sliceRuns(const datasets::Study& study, const ShardSlice& slice) {
-  std::size_t runs = 0;
-  for (const datasets::StudyRun& run : study.runs) {
-    runs += datasets::inShardSlice(run.index, slice.index, slice.count);
-  }
-  return runs;
+  return datasets::sliceRunCount(study.runs.size(), slice.index, slice.count);
 }
 
 }  // namespace wpg::engine

@@ -24,7 +24,8 @@ void checkStudyRequest(const StudyRequest& request, const std::string& what_outp
 std::optional<MpiWorld> checkStudyInput(const StudyRequest& request,
                                         const std::function<void()>& check);
 
-// Every run's scenario warnings, in study order.
+// The checked runs' scenario warnings (every run's in a study of at most kCheckedStudyRuns), in
+// study order.
 std::vector<std::string> studyWarnings(const datasets::Study& study);
 
 // The executor of the request: the ranks of `world` (one worker per rank unless jobs was

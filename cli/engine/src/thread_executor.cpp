@@ -34,21 +34,30 @@ class ThreadExecutor : public StudyExecutor {
     std::unique_ptr<datasets::BatchDatasetWriter> writer =
         openWriter(study, output, handling, shard_label, observer, claim);
 
-    std::vector<const datasets::StudyRun*> todo;
-    std::size_t slice_runs = 0;
-    for (const datasets::StudyRun& run : study.runs) {
-      if (!datasets::inShardSlice(run.index, slice.index, slice.count)) continue;
-      ++slice_runs;
-      if (!writer || !writer->done()[run.index]) todo.push_back(&run);
+    // The slice's runs, by index arithmetic; resuming, the list of those not in the file yet.
+    const datasets::BatchRows rows{static_cast<std::size_t>(slice.index),
+                                   static_cast<std::size_t>(slice.count)};
+    const datasets::BatchRows file_rows = study.slices_hold_every_row ? datasets::BatchRows{} : rows;
+    const std::size_t slice_runs = rows.count(study.runs.size());
+    std::vector<std::size_t> todo;
+    const bool resuming = writer != nullptr;  // else the file is created once workers start
+    if (resuming) {
+      for (std::size_t row = 0; row < slice_runs; ++row) {
+        if (!writer->done(rows.runOf(row))) todo.push_back(rows.runOf(row));
+      }
+      if (todo.size() < slice_runs) observer.resuming(slice_runs - todo.size(), slice_runs, output.path);
     }
-    if (todo.size() < slice_runs) observer.resuming(slice_runs - todo.size(), slice_runs, output.path);
-    observer.started(todo.size());
+    const std::size_t count = resuming ? todo.size() : slice_runs;
+    const auto runAt = [&](std::size_t position) {
+      return resuming ? todo[position] : rows.runOf(position);
+    };
+    observer.started(count);
     // A new file is created once every worker thread has started: a thread the system refuses
     // leaves no file (exit 3), and an old file in its place untouched.
-    runInto(todo, handling, writer, observer, [&] {
+    runInto(study, count, runAt, handling, writer, observer, [&] {
       if (!writer) {
         writer = datasets::BatchDatasetWriter::create(output.path, study, handling.columns,
-                                                      shard_label);
+                                                      shard_label, file_rows);
       }
     });
     observer.finished();
@@ -92,7 +101,13 @@ class ThreadExecutor : public StudyExecutor {
       claim.reset();
       claim = std::make_unique<datasets::OutputClaim>(path);
     } else if (existing) {
-      return datasets::BatchDatasetWriter::resume(path, study, handling.columns);
+      const ShardSlice slice = output.shard.value_or(ShardSlice{});
+      const datasets::BatchRows file_rows =
+          study.slices_hold_every_row
+              ? datasets::BatchRows{}
+              : datasets::BatchRows{static_cast<std::size_t>(slice.index),
+                                    static_cast<std::size_t>(slice.count)};
+      return datasets::BatchDatasetWriter::resume(path, study, handling.columns, file_rows);
     }
     return nullptr;  // created by run() once its workers have started
   }
@@ -101,28 +116,32 @@ class ThreadExecutor : public StudyExecutor {
   // file is, on the worker (the walk, its checks and metrics, the chunks compressed, the summary
   // row and the caller's report), so that the writer, one thread at a time, only writes.
   struct FinishedRun {
+    datasets::StudyRun run;  // made on the worker from its index (study_runs.hpp)
     RunResult result;
     datasets::PreparedRun prepared;
     std::vector<double> values;  // the summary row (handling.summary_values)
     std::vector<double> report;  // handling.report, when collected
   };
 
-  // The runs on the workers, their datasets compressed there, written in study order.
-  void runInto(const std::vector<const datasets::StudyRun*>& runs,
+  // The runs on the workers (run `run_at(position)` for each position < count), made from
+  // their index and their datasets compressed there, written in study order.
+  void runInto(const datasets::Study& study, std::size_t count,
+               const std::function<std::size_t(std::size_t)>& run_at,
                const StudyRunHandling& handling,
                std::unique_ptr<datasets::BatchDatasetWriter>& writer, StudyObserver& observer,
                const std::function<void()>& ready) {
     // Never more workers than runs (runOrdered): one robot model cache each.
     const int workers = static_cast<int>(
-        std::max<std::size_t>(1, std::min<std::size_t>(static_cast<std::size_t>(threads_), runs.size())));
+        std::max<std::size_t>(1, std::min<std::size_t>(static_cast<std::size_t>(threads_), count)));
     std::vector<RobotModelCache> models;
     for (int worker = 0; worker < workers; ++worker) models.emplace_back(robots_directory_);
     runOrdered<FinishedRun>(
-        runs.size(), workers,
+        count, workers,
         [&](std::size_t position, int worker) {
-          const datasets::StudyRun& run = *runs[position];
           RunSettings settings{robots_directory_, &models[static_cast<std::size_t>(worker)]};
           FinishedRun finished;
+          finished.run = study.runs[run_at(position)];
+          const datasets::StudyRun& run = finished.run;
           finished.result = runScenario(run.scenario, settings);
           BatchRunRecordOf record(run, finished.result);
           finished.prepared = datasets::BatchDatasetWriter::prepare(record.record());
@@ -132,8 +151,8 @@ class ThreadExecutor : public StudyExecutor {
           }
           return finished;
         },
-        [&](std::size_t position, FinishedRun&& finished) {
-          const datasets::StudyRun& run = *runs[position];
+        [&](std::size_t, FinishedRun&& finished) {
+          const datasets::StudyRun& run = finished.run;
           BatchRunRecordOf record(run, finished.result);
           record.record().values = std::move(finished.values);
           writer->write(record.record(), &finished.prepared);

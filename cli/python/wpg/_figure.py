@@ -38,8 +38,9 @@ def _plot_module():
     return module
 
 
-def run_figure(path, name=None):
-    """The matplotlib Figure `wpg plot PATH [--run NAME]` draws."""
+def run_figure(path, name=None, plan=False, at=None):
+    """The matplotlib Figure `wpg plot PATH [--run NAME]` draws; with `plan`, the one of
+    `--plan [--at T...]` (predicted against executed)."""
     plot = _plot_module()
     runs = plot.read_runs(path, name)
-    return plot.draw(runs, path)
+    return plot.draw_plan(runs, path, list(at or ())) if plan else plot.draw(runs, path)

@@ -212,14 +212,16 @@ class Run:
         a path that is a folder, a device, an input or a file that is not HDF5."""
         self._core.save(os.fspath(path))
 
-    def figure(self):
-        """The run's figure as `wpg plot` draws it (a matplotlib Figure)."""
+    def figure(self, plan=False, at=None):
+        """The run's figure as `wpg plot` draws it (a matplotlib Figure). With plan=True, the
+        one of `wpg plot --plan`: what the NMPC previewed at the iterations at the times `at`
+        [s] (default four spread over the walk) against what the robot did."""
         if self._core.stored_file:
-            return run_figure(self._core.stored_file, self.name)
+            return run_figure(self._core.stored_file, self.name, plan, at)
         with tempfile.TemporaryDirectory(prefix="wpg-figure-") as folder:
             path = os.path.join(folder, "run.h5")
             self.save(path)
-            return run_figure(path, self.name)
+            return run_figure(path, self.name, plan, at)
 
 
 def _stored_dataset(path, run_name, name):

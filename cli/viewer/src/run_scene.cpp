@@ -92,6 +92,46 @@ std::string subtitleOf(const LoadedRun& run) {
   return text;
 }
 
+// The plan of each NMPC iteration (mpc/plan/), for the page's preview at the time shown (the
+// ghost steps and the predicted CoM): per iteration its time, its previewed samples, the CoM
+// predicted at each (x, y) and the previewed steps (landing time, x, y, yaw, side). Null when
+// the run has no plan (`generator.record_plan: false`, or a file written before it). The
+// iterations are decimated evenly when they would take more than half the page's floats.
+void writePlanPreview(Json& json, const WalkTrajectory& t) {
+  const PlanLog& plans = t.plans;
+  if (plans.empty() || plans.size() != t.mpc.size() || plans.max_samples <= 0) {
+    json.null();
+    return;
+  }
+  const std::size_t k = plans.size();
+  const auto n = static_cast<std::size_t>(plans.max_samples);
+  const auto nf = static_cast<std::size_t>(plans.steps);
+  const std::size_t per_iteration = 2 * n + 4 * nf + 1;
+  const std::size_t budget = kMaxPageFloats / 2;
+  const std::size_t step = std::max<std::size_t>(1, (k * per_iteration + budget - 1) / budget);
+  std::vector<float> time, com, steps;
+  std::vector<std::uint8_t> count, side;
+  for (const std::size_t i : keptSamples(k, step)) {
+    time.push_back(static_cast<float>(t.mpc[i].time));
+    count.push_back(static_cast<std::uint8_t>(std::min(plans.samples[i], 255)));
+    for (std::size_t j = 0; j < 2 * n; ++j) com.push_back(static_cast<float>(plans.com_position[i * 2 * n + j]));
+    for (std::size_t s = 0; s < nf; ++s) {
+      for (std::size_t c = 0; c < 4; ++c) steps.push_back(static_cast<float>(plans.step[(i * nf + s) * 4 + c]));
+      side.push_back(plans.step_side[i * nf + s]);
+    }
+  }
+  json.beginObject();
+  json.key("samples").integer(static_cast<long long>(n));
+  json.key("steps").integer(static_cast<long long>(nf));
+  json.key("decimation").integer(static_cast<long long>(step));
+  json.key("time").floats(time);
+  json.key("count").bytes(count);
+  json.key("com").floats(com);
+  json.key("step").floats(steps);
+  json.key("side").bytes(side);
+  json.endObject();
+}
+
 }  // namespace
 
 LoadedRun loadRun(const std::string& path, const std::string& run_name,
@@ -210,6 +250,8 @@ std::string runSceneJson(const LoadedRun& run, const std::string& back,
   json.key("solve_time").floats(solve_time);
   json.key("status").bytes(status);
   json.endObject();
+  json.key("preview");
+  writePlanPreview(json, t);
 
   json.key("obstacles");
   writeObstacles(json, run.scenario);

@@ -50,13 +50,6 @@ H5::FileAccPropList smallMetadataCache() {
   return access;
 }
 
-bool sweptKeyIsNumeric(const Study& study, std::size_t k) {
-  for (const StudyRun& run : study.runs) {
-    if (!run.swept[k].numeric) return false;
-  }
-  return true;
-}
-
 // The table's column names, in order: index, name, the swept keys, done, exit_status, the
 // caller's columns.
 std::vector<std::string> columnNames(const Study& study, const std::vector<SummaryColumn>& columns) {
@@ -113,10 +106,72 @@ H5::StrType stringType() {
   return type;
 }
 
-void writeStrings(H5::DataSet& dataset, const std::vector<std::string>& values) {
+// The study's columns of the table (index, name, each swept key), `kBlockRows` rows at a time
+// from the runs' descriptions (study_runs.hpp): the memory does not grow with the rows.
+constexpr std::size_t kBlockRows = 4096;
+
+void writeStudyColumns(H5::Group& table, const Study& study, BatchRows rows, hsize_t count) {
+  Column index = createColumn(table, "index", count, H5::PredType::STD_I32LE,
+                              H5::PredType::NATIVE_INT, nullptr, "1",
+                              "index of the run in the study's expansion");
+  Column name = createColumn(table, "name", count, stringType(), stringType(), nullptr, "1",
+                             "group of the run under /runs");
+  std::vector<Column> swept;
+  for (std::size_t k = 0; k < study.keys.size(); ++k) {
+    const std::string description = "swept value of '" + study.keys[k] + "'";
+    if (study.key_numeric[k]) {
+      swept.push_back(createColumn(table, sweepColumn(study.keys[k]), count,
+                                   H5::PredType::IEEE_F64LE, H5::PredType::NATIVE_DOUBLE, nullptr,
+                                   "as the scenario key", description));
+    } else {
+      swept.push_back(createColumn(table, sweepColumn(study.keys[k]), count, stringType(),
+                                   stringType(), nullptr, "as the scenario key",
+                                   description + " (YAML flow text)"));
+    }
+  }
+  std::vector<int> indices;
+  std::vector<std::string> names;
+  std::vector<std::vector<double>> numbers(study.keys.size());
+  std::vector<std::vector<std::string>> texts(study.keys.size());
   std::vector<const char*> pointers;
-  for (const std::string& value : values) pointers.push_back(value.c_str());
-  dataset.write(pointers.data(), stringType());
+  for (hsize_t start = 0; start < count; start += kBlockRows) {
+    const hsize_t block = std::min<hsize_t>(kBlockRows, count - start);
+    indices.clear();
+    names.clear();
+    for (auto& column : numbers) column.clear();
+    for (auto& column : texts) column.clear();
+    for (hsize_t row = start; row < start + block; ++row) {
+      const StudyRun run = study.runs.describe(rows.runOf(row));
+      indices.push_back(static_cast<int>(run.index));
+      names.push_back(run.name);
+      for (std::size_t k = 0; k < study.keys.size(); ++k) {
+        if (study.key_numeric[k]) {
+          numbers[k].push_back(run.swept[k].number);
+        } else {
+          texts[k].push_back(run.swept[k].value);
+        }
+      }
+    }
+    const H5::DataSpace memory(1, &block);
+    const auto write = [&](Column& column, const void* data, const H5::DataType& type) {
+      column.space.selectHyperslab(H5S_SELECT_SET, &block, &start);
+      column.dataset.write(data, type, memory, column.space);
+    };
+    const auto writeTexts = [&](Column& column, const std::vector<std::string>& values) {
+      pointers.clear();
+      for (const std::string& value : values) pointers.push_back(value.c_str());
+      write(column, pointers.data(), stringType());
+    };
+    write(index, indices.data(), H5::PredType::NATIVE_INT);
+    writeTexts(name, names);
+    for (std::size_t k = 0; k < study.keys.size(); ++k) {
+      if (study.key_numeric[k]) {
+        write(swept[k], numbers[k].data(), H5::PredType::NATIVE_DOUBLE);
+      } else {
+        writeTexts(swept[k], texts[k]);
+      }
+    }
+  }
 }
 
 [[noreturn]] void rethrowHdf5(const std::string& path, const std::string& what,
@@ -134,8 +189,9 @@ struct BatchDatasetWriter::Handles {
   std::vector<Column> columns;  // the caller's, in order
 };
 
-BatchDatasetWriter::BatchDatasetWriter(std::string path, std::vector<SummaryColumn> columns)
-    : path_(std::move(path)), columns_(std::move(columns)), handles_(new Handles) {}
+BatchDatasetWriter::BatchDatasetWriter(std::string path, std::vector<SummaryColumn> columns,
+                                       BatchRows rows)
+    : path_(std::move(path)), columns_(std::move(columns)), rows_(rows), handles_(new Handles) {}
 
 BatchDatasetWriter::~BatchDatasetWriter() {
   try {
@@ -167,9 +223,10 @@ void BatchDatasetWriter::close() {
 
 std::unique_ptr<BatchDatasetWriter> BatchDatasetWriter::create(
     const std::string& path, const Study& study, const std::vector<SummaryColumn>& columns,
-    const std::string& shard_label) {
-  std::unique_ptr<BatchDatasetWriter> writer(new BatchDatasetWriter(path, columns));
-  writer->done_.assign(study.runs.size(), false);
+    const std::string& shard_label, BatchRows rows) {
+  std::unique_ptr<BatchDatasetWriter> writer(new BatchDatasetWriter(path, columns, rows));
+  const hsize_t count = rows.count(study.runs.size());
+  writer->done_.assign(count, false);
   std::lock_guard<std::mutex> lock(hdf5Mutex());
   H5::Exception::dontPrint();
   try {
@@ -193,55 +250,26 @@ std::unique_ptr<BatchDatasetWriter> BatchDatasetWriter::create(
     H5::Group batch = h.file.createGroup("batch");
     H5::Group table = batch.createGroup("summary");
     writeStringAttribute(table, "description",
-                         "one row per run of the study (row = index); result columns hold their "
-                         "fill value (-1, NaN) until the run is done");
+                         rows.stride == 1 && rows.first == 0 ? kSummaryDescription
+                                                             : kSliceSummaryDescription);
     writeStringListAttribute(table, "columns", columnNames(study, columns));
 
-    const hsize_t rows = study.runs.size();
-    std::vector<int> indices;
-    std::vector<std::string> names;
-    for (const StudyRun& run : study.runs) {
-      indices.push_back(static_cast<int>(run.index));
-      names.push_back(run.name);
-    }
-    createColumn(table, "index", rows, H5::PredType::STD_I32LE, H5::PredType::NATIVE_INT, nullptr,
-                 "1", "index of the run in the study's expansion")
-        .dataset.write(indices.data(), H5::PredType::NATIVE_INT);
-    Column name_set = createColumn(table, "name", rows, stringType(), stringType(), nullptr,
-                                   "1", "group of the run under /runs");
-    writeStrings(name_set.dataset, names);
-    for (std::size_t k = 0; k < study.keys.size(); ++k) {
-      const std::string description = "swept value of '" + study.keys[k] + "'";
-      if (sweptKeyIsNumeric(study, k)) {
-        std::vector<double> values;
-        for (const StudyRun& run : study.runs) values.push_back(run.swept[k].number);
-        createColumn(table, sweepColumn(study.keys[k]), rows, H5::PredType::IEEE_F64LE,
-                     H5::PredType::NATIVE_DOUBLE, nullptr, "as the scenario key", description)
-            .dataset.write(values.data(), H5::PredType::NATIVE_DOUBLE);
-      } else {
-        std::vector<std::string> values;
-        for (const StudyRun& run : study.runs) values.push_back(run.swept[k].value);
-        Column set = createColumn(table, sweepColumn(study.keys[k]), rows, stringType(),
-                                  stringType(), nullptr, "as the scenario key",
-                                  description + " (YAML flow text)");
-        writeStrings(set.dataset, values);
-      }
-    }
+    writeStudyColumns(table, study, rows, count);
     const unsigned char not_done = 0;
-    h.done = createColumn(table, "done", rows, H5::PredType::STD_U8LE, H5::PredType::NATIVE_UCHAR,
+    h.done = createColumn(table, "done", count, H5::PredType::STD_U8LE, H5::PredType::NATIVE_UCHAR,
                           &not_done, "1", "1 when the run is in the file");
     const int no_status = -1;
-    h.exit_status = createColumn(table, "exit_status", rows, H5::PredType::STD_I32LE,
+    h.exit_status = createColumn(table, "exit_status", count, H5::PredType::STD_I32LE,
                                  H5::PredType::NATIVE_INT, &no_status, "1",
                                  "as `wpg run`: 0 the walk succeeded, 1 it failed; -1 not run");
     const double nan = std::numeric_limits<double>::quiet_NaN();
     for (const SummaryColumn& column : columns) {
       if (column.integer) {
-        h.columns.emplace_back(createColumn(table, column.name, rows, H5::PredType::STD_I32LE,
+        h.columns.emplace_back(createColumn(table, column.name, count, H5::PredType::STD_I32LE,
                                             H5::PredType::NATIVE_INT, &no_status,
                                             column.units.c_str(), column.description));
       } else {
-        h.columns.emplace_back(createColumn(table, column.name, rows, H5::PredType::IEEE_F64LE,
+        h.columns.emplace_back(createColumn(table, column.name, count, H5::PredType::IEEE_F64LE,
                                             H5::PredType::NATIVE_DOUBLE, &nan,
                                             column.units.c_str(), column.description));
       }
@@ -254,8 +282,9 @@ std::unique_ptr<BatchDatasetWriter> BatchDatasetWriter::create(
 }
 
 std::unique_ptr<BatchDatasetWriter> BatchDatasetWriter::resume(
-    const std::string& path, const Study& study, const std::vector<SummaryColumn>& columns) {
-  std::unique_ptr<BatchDatasetWriter> writer(new BatchDatasetWriter(path, columns));
+    const std::string& path, const Study& study, const std::vector<SummaryColumn>& columns,
+    BatchRows batch_rows) {
+  std::unique_ptr<BatchDatasetWriter> writer(new BatchDatasetWriter(path, columns, batch_rows));
   std::lock_guard<std::mutex> lock(hdf5Mutex());
   H5::Exception::dontPrint();
   const auto refuse = [&](const std::string& why) {
@@ -301,7 +330,7 @@ std::unique_ptr<BatchDatasetWriter> BatchDatasetWriter::resume(
     h.done = Column(table.openDataSet("done"));
     h.exit_status = Column(table.openDataSet("exit_status"));
     for (const SummaryColumn& column : columns) h.columns.emplace_back(table.openDataSet(column.name));
-    const std::size_t rows = study.runs.size();
+    const std::size_t rows = batch_rows.count(study.runs.size());
     if (h.done.space.getSimpleExtentNpoints() != static_cast<hssize_t>(rows)) {
       refuse("its summary has another number of rows");
     }
@@ -309,7 +338,7 @@ std::unique_ptr<BatchDatasetWriter> BatchDatasetWriter::resume(
     h.done.dataset.read(done.data(), H5::PredType::NATIVE_UCHAR);
     writer->done_.assign(rows, false);
     for (std::size_t i = 0; i < rows; ++i) {
-      const std::string& name = study.runs[i].name;
+      const std::string name = study.runs.describe(batch_rows.runOf(i)).name;
       const bool group = h.runs.nameExists(name);
       if (done[i] && group) {
         writer->done_[i] = true;
@@ -370,7 +399,7 @@ void BatchDatasetWriter::write(const BatchRunRecord& record, const PreparedRun* 
     // one of the last flush (the metadata lives in HDF5's cache; the summary is written in
     // place). Should the cache spill a new group's metadata earlier, the group has no `done`
     // and --resume removes it and runs it again.
-    const hsize_t row = run.index;
+    const hsize_t row = rows_.rowOf(run.index);
     for (std::size_t c = 0; c < columns_.size(); ++c) {
       if (columns_[c].integer) {
         const double value = record.values[c];
@@ -391,7 +420,7 @@ void BatchDatasetWriter::write(const BatchRunRecord& record, const PreparedRun* 
   } catch (const H5::Exception& error) {
     rethrowHdf5(path_, "write run " + run.name, error);
   }
-  done_[run.index] = true;
+  done_[rows_.rowOf(run.index)] = true;
 }
 
 bool isBatchFile(const std::string& path) {

@@ -1,15 +1,16 @@
 // Shard files and the index that joins them (wpg/datasets/storage/batch_index.hpp; layout:
 // datasets/SCHEMA.md, "Sharded batches").
 //
-// The index is built from the first shard's objects, not written anew: its root attributes
-// (but `shard`) and /batch (H5Ocopy: the summary table with its fill values, layouts and
-// attributes) are copied, so that it is the batch file `wpg batch` would write, bit for bit;
-// then each run's row of the result columns (from `done` on) is copied from the shard that
-// holds the run, reading only those rows (point selections: the work grows with the runs, not
-// with runs x shards).
+// The index is built from the first shard's objects: its root attributes (but `shard`), and a
+// summary table of every run whose columns have the first shard's types, layouts, fill values
+// and attributes, so that it holds what `wpg batch` would write; then each run's row of every
+// column is copied from the shard that holds the run, reading only those rows (point
+// selections: the work grows with the runs, not with runs x shards). A slice's table holds its
+// runs only (its `index` column names them), an MPI rank's every run.
 #include "wpg/datasets/storage/batch_index.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <map>
 #include <mutex>
@@ -23,6 +24,7 @@
 #include "hdf5_writing.hpp"
 #include "wpg/datasets/input/input_error.hpp"
 #include "wpg/datasets/input/input_limits.hpp"
+#include "wpg/datasets/storage/batch_dataset.hpp"
 #include "wpg/datasets/storage/output_file.hpp"
 #include "wpg/datasets/storage/run_dataset.hpp"
 
@@ -66,18 +68,37 @@ void copyAttributes(hid_t from, hid_t to, const std::string& skip) {
   }
 }
 
-// Copies the elements `rows` of a 1-D dataset of fixed-size elements.
-void copyRows(const H5::DataSet& from, H5::DataSet& to, const std::vector<hsize_t>& rows) {
-  if (rows.empty()) return;
+// Copies the elements `from_rows` of a 1-D dataset to the elements `to_rows` of another of the
+// same type (variable-length strings too: read as pointers, written, then reclaimed).
+void copyRows(const H5::DataSet& from, H5::DataSet& to, const std::vector<hsize_t>& from_rows,
+              const std::vector<hsize_t>& to_rows) {
+  if (from_rows.empty()) return;
   const H5::DataType type = from.getDataType();
-  std::vector<unsigned char> buffer(rows.size() * type.getSize());
+  std::vector<unsigned char> buffer(from_rows.size() * type.getSize());
   H5::DataSpace from_space = from.getSpace(), to_space = to.getSpace();
-  from_space.selectElements(H5S_SELECT_SET, rows.size(), rows.data());
-  to_space.selectElements(H5S_SELECT_SET, rows.size(), rows.data());
-  const hsize_t count = rows.size();
+  from_space.selectElements(H5S_SELECT_SET, from_rows.size(), from_rows.data());
+  to_space.selectElements(H5S_SELECT_SET, to_rows.size(), to_rows.data());
+  const hsize_t count = from_rows.size();
   const H5::DataSpace memory(1, &count);
   from.read(buffer.data(), type, memory, from_space);
-  to.write(buffer.data(), type, memory, to_space);
+  const bool variable = H5Tis_variable_str(type.getId()) > 0;
+  try {
+    to.write(buffer.data(), type, memory, to_space);
+  } catch (...) {
+    if (variable) H5Dvlen_reclaim(type.getId(), memory.getId(), H5P_DEFAULT, buffer.data());
+    throw;
+  }
+  if (variable) H5Dvlen_reclaim(type.getId(), memory.getId(), H5P_DEFAULT, buffer.data());
+}
+
+// A column of `rows` rows like `like` (type, layout, fill value, attributes) in `table`.
+H5::DataSet createColumnLike(const H5::DataSet& like, H5::Group& table, const std::string& name,
+                             hsize_t rows) {
+  const H5::DataSpace space(1, &rows);
+  const H5::DSetCreatPropList properties = like.getCreatePlist();
+  H5::DataSet column = table.createDataSet(name, like.getDataType(), space, properties);
+  copyAttributes(like.getId(), column.getId(), "");
+  return column;
 }
 
 // "runs 3, 7, 11, ... (12 of 48)"
@@ -167,19 +188,29 @@ ShardContents readShardContents(const std::string& path) {
     shard.study_fingerprint = detail::readStringAttribute(file, "study_fingerprint", path, "/:");
     if (file.attrExists("shard")) shard.label = detail::readStringAttribute(file, "shard", path, "/:");
     if (file.attrExists("created_by")) shard.created_by = detail::readStringAttribute(file, "created_by", path, "/:");
+    const double run_count =
+        file.attrExists("run_count") ? detail::readNumberAttribute(file, "run_count", path, "/:") : -1.0;
+    if (!(run_count >= 0 && run_count <= static_cast<double>(kMaxSweepRuns)) ||
+        run_count != std::floor(run_count)) {
+      throw InputError(path + ": expected a root attribute run_count, a number of runs from 0 to " +
+                       std::to_string(kMaxSweepRuns));
+    }
+    shard.run_count = static_cast<std::size_t>(run_count);
     const H5::Group table = file.openGroup(kSummaryPath);
+    if (!table.nameExists("index")) throw InputError(path + ": " + kSummaryPath + " has no index column");
     const H5::DataSet done = table.openDataSet("done");
     const H5::DataSet name = table.openDataSet("name");
-    // One row per run of the study: sizes checked before anything is allocated (a shard can
+    const H5::DataSet index = table.openDataSet("index");
+    // One row per run of the file: sizes checked before anything is allocated (a shard can
     // declare 2^40 names in a few kB).
     for (const auto& [column, dataset] : {std::pair<const char*, const H5::DataSet*>{"name", &name},
-                                          {"done", &done}}) {
+                                          {"done", &done}, {"index", &index}}) {
       const H5::DataSpace space = dataset->getSpace();
       const hssize_t rows = space.getSimpleExtentNpoints();
       if (space.getSimpleExtentNdims() != 1 || rows < 0 ||
-          static_cast<std::uint64_t>(rows) > kMaxStudyRuns) {
+          static_cast<std::uint64_t>(rows) > kMaxBatchFileRuns) {
         throw InputError(path + ": " + kSummaryPath + "/" + column + ": expected at most " +
-                         std::to_string(kMaxStudyRuns) + " runs (one row each), got " +
+                         std::to_string(kMaxBatchFileRuns) + " runs (one row each), got " +
                          std::to_string(rows) + " values");
       }
     }
@@ -188,14 +219,29 @@ ShardContents readShardContents(const std::string& path) {
     detail::checkVariableDataUnder(file.openGroup("/"), path);
     const std::vector<std::string> names = detail::readVariableStrings(name, path, "dataset /batch/summary/name");
     std::vector<unsigned char> flags(names.size());
-    if (done.getSpace().getSimpleExtentNpoints() != static_cast<hssize_t>(names.size())) {
-      throw InputError(path + ": /batch/summary/done and name have different lengths");
+    std::vector<long long> indices(names.size());
+    if (done.getSpace().getSimpleExtentNpoints() != static_cast<hssize_t>(names.size()) ||
+        index.getSpace().getSimpleExtentNpoints() != static_cast<hssize_t>(names.size())) {
+      throw InputError(path + ": /batch/summary/done, index and name have different lengths");
+    }
+    if (index.getTypeClass() != H5T_INTEGER) {
+      throw InputError(path + ": /batch/summary/index: expected integers");
     }
     done.read(flags.data(), H5::PredType::NATIVE_UCHAR);
+    index.read(indices.data(), H5::PredType::NATIVE_LLONG);
     const H5::Group runs = file.openGroup("runs");
+    shard.runs.resize(names.size());
     shard.done.assign(names.size(), false);
-    // A flag counts with its group only (batch_dataset.cpp writes the flag after the group).
     for (std::size_t i = 0; i < names.size(); ++i) {
+      // Runs of the study, each once, in order: a table of another shape is not merged.
+      if (indices[i] < 0 || static_cast<std::uint64_t>(indices[i]) >= shard.run_count ||
+          (i > 0 && indices[i] <= indices[i - 1])) {
+        throw InputError(path + ": /batch/summary/index: expected increasing run indices below " +
+                         std::to_string(shard.run_count) + ", got " + std::to_string(indices[i]) +
+                         " in row " + std::to_string(i));
+      }
+      shard.runs[i] = static_cast<std::size_t>(indices[i]);
+      // A flag counts with its group only (batch_dataset.cpp writes the flag after the group).
       shard.done[i] = flags[i] && runs.nameExists(names[i]);
     }
   } catch (const H5::Exception& error) {
@@ -223,7 +269,7 @@ IndexReport writeBatchIndex(const std::string& output, const std::vector<std::st
                                             std::string(kSummaryPath) + ":");
         if (&shard == &first) first_columns = columns;
         if (shard.study_name != first.study_name ||
-            shard.study_fingerprint != first.study_fingerprint || shard.done.size() != first.done.size()) {
+            shard.study_fingerprint != first.study_fingerprint || shard.run_count != first.run_count) {
           throw InputError(shard.path + ": holds study '" + shard.study_name + "' (fingerprint " +
                            shard.study_fingerprint + "), not '" + first.study_name +
                            "' (fingerprint " + first.study_fingerprint + ") as " + first.path);
@@ -265,11 +311,23 @@ IndexReport writeBatchIndex(const std::string& output, const std::vector<std::st
       throw InputError("merge: cannot read the shards' summary tables (" + error.getDetailMsg() + ")");
     }
   }
-  const std::size_t total = first.done.size();
+  const std::size_t total = first.run_count;
+  if (total > kMaxBatchFileRuns) {
+    throw InputError("merge: study '" + first.study_name + "' has " + std::to_string(total) +
+                     " runs, over the " + std::to_string(kMaxBatchFileRuns) +
+                     " an index file holds (nothing written)");
+  }
+  // Each run from the first file that holds it: its shard and its row there.
   std::vector<int> owner(total, -1);
+  std::vector<std::vector<hsize_t>> from_rows(contents.size()), to_rows(contents.size());
   for (std::size_t s = 0; s < contents.size(); ++s) {
-    for (std::size_t i = 0; i < total; ++i) {
-      if (owner[i] < 0 && contents[s].done[i]) owner[i] = static_cast<int>(s);
+    for (std::size_t row = 0; row < contents[s].done.size(); ++row) {
+      const std::size_t run = contents[s].runs[row];
+      if (owner[run] < 0 && contents[s].done[row]) {
+        owner[run] = static_cast<int>(s);
+        from_rows[s].push_back(row);
+        to_rows[s].push_back(run);
+      }
     }
   }
   std::vector<std::size_t> missing;
@@ -290,12 +348,9 @@ IndexReport writeBatchIndex(const std::string& output, const std::vector<std::st
                      hint + " (nothing written)");
   }
 
-  // Runs per shard, in index order.
-  std::vector<std::vector<hsize_t>> rows(contents.size());
-  for (std::size_t i = 0; i < total; ++i) rows[static_cast<std::size_t>(owner[i])].push_back(i);
   IndexReport report;
   report.runs = total;
-  for (const auto& shard_rows : rows) report.shards_used += !shard_rows.empty();
+  for (const auto& shard_rows : from_rows) report.shards_used += !shard_rows.empty();
 
   TemporaryOutput temporary(output);
   // HDF5 1.10's H5Ocopy crashes (a segfault in its own clean-up) when a write inside it fails:
@@ -307,34 +362,32 @@ IndexReport writeBatchIndex(const std::string& output, const std::vector<std::st
     try {
       H5::H5File index(temporary.path(), H5F_ACC_TRUNC);
       forgoWriteOutOnClose(temporary.path());  // a copied index is a study's size
-      std::vector<std::string> names;
+      H5::Group runs = index.createGroup("runs");
+      H5::Group table = index.createGroup("batch").createGroup("summary");
+      std::vector<H5::DataSet> columns;
       {
         const H5::H5File source(first.path, H5F_ACC_RDONLY);
         copyAttributes(source.getId(), index.getId(), "shard");
-        if (H5Ocopy(source.getId(), "batch", index.getId(), "batch", H5P_DEFAULT, H5P_DEFAULT) < 0) {
-          throw H5::Exception("H5Ocopy", "cannot copy /batch from " + first.path);
+        copyAttributes(source.openGroup("batch").getId(), index.openGroup("batch").getId(), "");
+        const H5::Group source_table = source.openGroup(kSummaryPath);
+        copyAttributes(source_table.getId(), table.getId(), "description");
+        detail::writeStringAttribute(table, "description", kSummaryDescription);
+        for (const std::string& column : first_columns) {
+          columns.push_back(createColumnLike(source_table.openDataSet(column), table, column, total));
         }
-        names = detail::readVariableStrings(source.openDataSet(std::string(kSummaryPath) + "/name"),
-                                            first.path, "dataset /batch/summary/name");
       }
-      // The result columns: `done` and every column after it (batch_dataset.cpp's order).
-      const auto done_column = std::find(first_columns.begin(), first_columns.end(), "done");
-      const std::vector<std::string> results(done_column, first_columns.end());
-      H5::Group runs = index.createGroup("runs");
-      H5::Group table = index.openGroup(kSummaryPath);
       for (std::size_t s = 0; s < contents.size(); ++s) {
-        if (rows[s].empty()) continue;
+        if (from_rows[s].empty()) continue;
         const H5::H5File source(contents[s].path, H5F_ACC_RDONLY);
-        if (s > 0) {
-          const H5::Group source_table = source.openGroup(kSummaryPath);
-          for (const std::string& column : results) {
-            H5::DataSet target = table.openDataSet(column);
-            copyRows(source_table.openDataSet(column), target, rows[s]);
-          }
+        const H5::Group source_table = source.openGroup(kSummaryPath);
+        for (std::size_t c = 0; c < first_columns.size(); ++c) {
+          copyRows(source_table.openDataSet(first_columns[c]), columns[c], from_rows[s], to_rows[s]);
         }
+        const std::vector<std::string> names = detail::readVariableStrings(
+            source_table.openDataSet("name"), contents[s].path, "dataset /batch/summary/name");
         const std::string link_target =
             layout == IndexLayout::kLinks ? relativeTo(contents[s].path, output) : std::string();
-        for (const hsize_t row : rows[s]) {
+        for (const hsize_t row : from_rows[s]) {
           const std::string& name = names[row];
           const std::string object = "/runs/" + name;
           const herr_t status =
@@ -346,6 +399,7 @@ IndexReport writeBatchIndex(const std::string& output, const std::vector<std::st
           if (status < 0) throw H5::Exception("writeBatchIndex", "cannot add run " + name);
         }
       }
+      columns.clear();
       runs.close();
       table.close();
       index.close();

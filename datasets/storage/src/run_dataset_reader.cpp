@@ -38,9 +38,9 @@ class Reader {
   }
 
   // The dataset `name` (below the run group) with `columns` columns (0: 1-D), of type class
-  // `type_class`, at most kMaxStoredSamples rows; returns its rows. Only the dataspace is read.
+  // `type_class`, at most `max_rows` rows; returns its rows. Only the dataspace is read.
   H5::DataSet open(const std::string& name, hsize_t columns, H5T_class_t type_class,
-                   hsize_t* rows) const {
+                   hsize_t* rows, hsize_t max_rows = kMaxStoredSamples) const {
     const std::string where = "dataset " + run_path_ + "/" + name;
     if (!run_.nameExists(name)) fail(where + " is missing");
     if (run_.childObjType(name) != H5O_TYPE_DATASET) fail(run_path_ + "/" + name + " is not a dataset");
@@ -56,9 +56,11 @@ class Reader {
     }
     space.getSimpleExtentDims(dims);
     if (columns != 0 && dims[1] != columns) fail(where + " has the wrong shape: expected " + expected);
-    if (dims[0] > kMaxStoredSamples) {
+    if (dims[0] > max_rows) {
       fail(where + " declares " + std::to_string(dims[0]) + " rows: expected at most " +
-           std::to_string(kMaxStoredSamples) + " (3600 s at 5 ms, datasets/SCHEMA.md, Reading)");
+           std::to_string(max_rows) +
+           (max_rows == kMaxStoredSamples ? " (3600 s at 5 ms, datasets/SCHEMA.md, Reading)"
+                                          : " (datasets/SCHEMA.md, Reading)"));
     }
     if (dataset.getTypeClass() != type_class) {
       fail(where + " has the wrong type: expected " +
@@ -69,8 +71,9 @@ class Reader {
   }
 
   // Finite numbers only: a NaN or an infinity would be copied into every later output.
-  std::vector<double> doubles(const std::string& name, hsize_t columns, hsize_t* rows) const {
-    H5::DataSet dataset = open(name, columns, H5T_FLOAT, rows);
+  std::vector<double> doubles(const std::string& name, hsize_t columns, hsize_t* rows,
+                              hsize_t max_rows = kMaxStoredSamples) const {
+    H5::DataSet dataset = open(name, columns, H5T_FLOAT, rows, max_rows);
     const std::size_t width = columns == 0 ? 1 : static_cast<std::size_t>(columns);
     std::vector<double> values(static_cast<std::size_t>(*rows) * width);
     if (!values.empty()) dataset.read(values.data(), H5::PredType::NATIVE_DOUBLE);
@@ -97,9 +100,11 @@ class Reader {
     return values;
   }
 
-  std::vector<int> integers(const std::string& name, hsize_t* rows) const {
-    H5::DataSet dataset = open(name, 0, H5T_INTEGER, rows);
-    std::vector<int> values(static_cast<std::size_t>(*rows));
+  // `columns` integers a row (0: 1-D).
+  std::vector<int> integers(const std::string& name, hsize_t* rows, hsize_t columns = 0,
+                            hsize_t max_rows = kMaxStoredSamples) const {
+    H5::DataSet dataset = open(name, columns, H5T_INTEGER, rows, max_rows);
+    std::vector<int> values(static_cast<std::size_t>(*rows) * std::max<hsize_t>(columns, 1));
     if (!values.empty()) dataset.read(values.data(), H5::PredType::NATIVE_INT);
     return values;
   }
@@ -119,9 +124,10 @@ class Reader {
   }
 
   // Integers in [low, high], one per row, exactly `expected_rows` of them.
-  std::vector<int> codes(const std::string& name, hsize_t expected_rows, int low, int high) const {
+  std::vector<int> codes(const std::string& name, hsize_t expected_rows, int low, int high,
+                         hsize_t max_rows = kMaxStoredSamples) const {
     hsize_t rows = 0;
-    std::vector<int> values = integers(name, &rows);
+    std::vector<int> values = integers(name, &rows, 0, max_rows);
     expectRows(name, rows, expected_rows);
     for (std::size_t i = 0; i < values.size(); ++i) {
       if (values[i] < low || values[i] > high) {
@@ -169,6 +175,79 @@ std::vector<Eigen::Matrix<double, Size, 1>> rowsOf(const std::vector<double>& va
     rows[i] = Eigen::Map<const Eigen::Matrix<double, Size, 1>>(values.data() + Size * i);
   }
   return rows;
+}
+
+// mpc/plan/ (datasets/SCHEMA.md), when the walk recorded it, into `plans`: k iterations of N
+// previewed samples and nf previewed steps. The sizes come from the attributes, bounded
+// (read_limits.hpp) before any dataset is opened; every dataset must have exactly its rows.
+void readPlans(const std::string& path, const H5::Group& mpc, const std::string& mpc_path,
+               hsize_t k, std::size_t families, PlanLog& plans) {
+  if (!mpc.nameExists("plan")) return;
+  if (mpc.childObjType("plan") != H5O_TYPE_GROUP) {
+    throw InputError(path + ": " + mpc_path + "/plan is not a group");
+  }
+  const H5::Group group = mpc.openGroup("plan");
+  const std::string where = mpc_path + "/plan";
+  const Reader reader(path, group, where);
+  const auto bounded = [&](const char* name, std::uint64_t low, std::uint64_t high) {
+    const double value = detail::readNumberAttribute(group, name, path, where + ":");
+    if (!(value >= static_cast<double>(low) && value <= static_cast<double>(high)) ||
+        value != std::floor(value)) {
+      reader.fail("attribute " + where + ":" + name + ": expected an integer in [" +
+                  std::to_string(low) + ", " + std::to_string(high) + "], got " +
+                  std::to_string(value));
+    }
+    return static_cast<hsize_t>(value);
+  };
+  const hsize_t n = bounded("samples", 1, kMaxStoredPlanSamples);
+  const hsize_t nf = bounded("steps", 1, kMaxStoredPlanSteps);
+  const double period = detail::readNumberAttribute(group, "sampling_period", path, where + ":");
+  if (!(period > 0.0 && std::isfinite(period))) {
+    reader.fail("attribute " + where + ":sampling_period: expected a positive number of seconds");
+  }
+  if (k * n * 4 > kMaxReadElements) {
+    reader.fail(where + ": " + std::to_string(k) + " iterations of " + std::to_string(n) +
+                " samples: expected at most " + std::to_string(kMaxReadElements / 4) +
+                " previewed samples in all (datasets/SCHEMA.md, Reading)");
+  }
+  const auto exactly = [&](const char* name, hsize_t rows, hsize_t expected, const char* per) {
+    if (rows != expected) {
+      reader.fail("dataset " + where + "/" + name + " has " + std::to_string(rows) +
+                  " rows, expected " + std::to_string(expected) + " (" + per + ")");
+    }
+  };
+  plans.max_samples = static_cast<int>(n);
+  plans.steps = static_cast<int>(nf);
+  plans.sampling_period = period;
+  plans.samples = reader.codes("sample_count", k, 0, static_cast<int>(n));
+  hsize_t rows = 0;
+  const auto per_sample = [&](const char* name) {
+    std::vector<double> values = reader.doubles(name, 2, &rows, k * n);
+    exactly(name, rows, k * n, "mpc iterations x samples");
+    return values;
+  };
+  plans.com_position = per_sample("com");
+  plans.com_velocity = per_sample("com_vel");
+  plans.com_acceleration = per_sample("com_acc");
+  plans.jerk = per_sample("jerk");
+  plans.cop = per_sample("cop");
+  plans.step = reader.doubles("steps", 4, &rows, k * nf);
+  exactly("steps", rows, k * nf, "mpc iterations x steps");
+  for (const int side : reader.codes("step_side", k * nf, 0, 2, k * nf))
+    plans.step_side.push_back(static_cast<std::uint8_t>(side));
+  plans.families = 0;
+  if (group.nameExists("active_rows") && families > 0) {
+    std::vector<int> active = reader.integers("active_rows", &rows, families, k);
+    exactly("active_rows", rows, k, "mpc iterations");
+    for (std::size_t i = 0; i < active.size(); ++i) {
+      if (active[i] < 0) {
+        reader.fail("dataset " + where + "/active_rows row " + std::to_string(i / families) +
+                    ": expected a count >= 0, got " + std::to_string(active[i]));
+      }
+    }
+    plans.families = static_cast<int>(families);
+    plans.active_rows = std::move(active);
+  }
 }
 
 // The groups under /runs, and the external links of the index of a sharded batch
@@ -414,6 +493,7 @@ StoredRun readFile(const std::string& path, const std::string& run_name) {
       t.mpc[i].commanded_velocity = Eigen::Map<const Eigen::Vector2d>(velocity.data() + 2 * i);
     }
   }
+  readPlans(path, mpc, run_path + "/mpc", k, t.constraint_families.size(), t.plans);
   return stored;
 }
 

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <mutex>
 #include <set>
 #include <sstream>
@@ -16,6 +17,7 @@
 #include "world_generators.hpp"
 #include "wpg/datasets/input/yaml_input.hpp"
 #include "wpg/nearest_name.hpp"
+#include "wpg/qp/hessian_factor_cache.hpp"
 
 namespace wpg::datasets {
 namespace {
@@ -73,6 +75,101 @@ struct WorldSpec {
   std::string generator;        // a generated world, else empty
   YAML::Node parameters;
   YAML::Node goal;              // entries replacing the goal's (may be undefined)
+};
+
+// What makes comparison run i from i alone (shared by every copy of the study's run list).
+struct ComparisonExpansion {
+  std::string path, robots_dir;
+  std::vector<WorldSpec> worlds;
+  std::vector<std::string> variants;
+  std::vector<std::vector<std::string>> variant_overrides;
+  std::vector<std::string> common;  // set:
+  std::vector<int> seeds;
+  YAML::Node base;  // of the generated worlds
+  int digits = 1;
+  std::shared_ptr<qp::HessianFactorCache> hessian_factors;
+  // yaml-cpp nodes are not thread-safe, not even to read or to assign from: the base, the
+  // worlds' parameters and goals are shared by every run, so a scenario's text is built under
+  // this lock (cheap); parsing and checking it (loadScenarioText) run in parallel.
+  mutable std::mutex shared_nodes;
+
+  // Worlds slowest, then variants, then seeds.
+  ComparisonRun cell(std::size_t index) const {
+    const std::size_t per_world = variants.size() * seeds.size();
+    return {index / per_world, (index / seeds.size()) % variants.size(), seeds[index % seeds.size()]};
+  }
+
+  StudyRun make(std::size_t index, bool with_scenario) const {
+    const ComparisonRun c = cell(index);
+    StudyRun run;
+    run.index = index;
+    char number[32];
+    std::snprintf(number, sizeof number, "%0*d", digits, c.seed);
+    run.name = worlds[c.world].name + "." + variants[c.variant] + "." + number;
+    SweptValue world_value, variant_value, seed_value;
+    world_value.key = "world";
+    world_value.value = worlds[c.world].name;
+    variant_value.key = "variant";
+    variant_value.value = variants[c.variant];
+    seed_value.key = "seed";
+    seed_value.value = std::to_string(c.seed);
+    seed_value.numeric = true;
+    seed_value.number = c.seed;
+    run.swept = {world_value, variant_value, seed_value};
+    if (with_scenario) loadScenarioOf(&run, c);
+    return run;
+  }
+
+  void loadScenarioOf(StudyRun* run, const ComparisonRun& c) const {
+    const Source source(path);
+    const WorldSpec& world = worlds[c.world];
+    const std::string described = "world '" + world.name + "', variant '" + variants[c.variant] +
+                                  "', seed " + std::to_string(c.seed);
+    try {
+      YAML::Node scenario;
+      std::string origin, text;
+      std::unique_lock<std::mutex> lock(shared_nodes);
+      if (world.generator.empty()) {
+        origin = world.scenario_path;
+        scenario = detail::parseYamlText(detail::readTextFile(origin, "scenario file"), origin);
+      } else {
+        origin = path + ":" + world.key;
+        scenario = YAML::Clone(base);
+        const detail::GeneratedWorld generated =
+            detail::generateWorld(world.generator, world.parameters,
+                                  detail::childKey(world.key, world.generator), c.seed, source);
+        scenario["obstacles"] = generated.obstacles;
+        YAML::Node goal = scenario["goal"].IsMap() ? scenario["goal"] : YAML::Node();
+        goal["position"] = YAML::Node(YAML::NodeType::Sequence);
+        goal["position"].push_back(generated.goal.x());
+        goal["position"].push_back(generated.goal.y());
+        goal["position"].SetStyle(YAML::EmitterStyle::Flow);
+        scenario["goal"] = goal;
+      }
+      if (world.goal.IsDefined()) {
+        for (const auto& item : world.goal)
+          scenario["goal"][item.first.Scalar()] = YAML::Clone(item.second);
+      }
+      text = YAML::Dump(scenario) + "\n";
+      scenario = YAML::Node();  // released under the lock: its memory is shared with the base
+      lock.unlock();
+      std::vector<std::string> overrides = common;
+      for (const std::string& entry : variant_overrides[c.variant]) overrides.push_back(entry);
+      overrides.push_back("planner.seed=" + std::to_string(c.seed));
+      overrides.push_back("name=" + run->name);
+      run->scenario = loadScenarioText(text, origin, overrides, robots_dir);
+      run->scenario.walking.validate();
+      run->scenario.request.validate();
+      for (std::string& warning : run->scenario.warnings) {
+        warning = path + ": " + described + ": " + detail::renameOverrides(warning, "override");
+      }
+    } catch (const std::exception& e) {
+      // The loader calls the variant's and `set`'s keys --set overrides.
+      throw InputError(path + ": " + described + ": " +
+                       detail::renameOverrides(detail::oneLine(e.what()), "override"));
+    }
+    run->scenario.request.generator.hessian_factors = hessian_factors;
+  }
 };
 
 WorldSpec readWorld(const YAML::Node& node, std::size_t index, const std::string& path,
@@ -157,6 +254,7 @@ ComparisonStudy loadComparisonStudy(const std::string& path, const BaseResolver&
   Study& study = comparison.study;
   study.source_path = path;
   study.created_by = "wpg compare";
+  study.slices_hold_every_row = true;
   const Source source(path);
   const YAML::Node root = detail::readYamlFile(path, "study file");
   study.text = detail::readTextFile(path, "study file");
@@ -240,95 +338,40 @@ ComparisonStudy loadComparisonStudy(const std::string& path, const BaseResolver&
                                  std::to_string(comparison.seeds.size()) + " seeds");
   }
   study.keys = {"world", "variant", "seed"};
-  std::set<std::string> run_names;
+  study.key_numeric = {false, false, true};
+  auto expansion = std::make_shared<ComparisonExpansion>();
   int widest_seed = 0;
   for (const int seed : comparison.seeds) widest_seed = std::max(widest_seed, seed);
-  const int digits = static_cast<int>(std::to_string(widest_seed).size());
-  for (std::size_t w = 0; w < worlds.size(); ++w) {
-    for (std::size_t v = 0; v < comparison.variants.size(); ++v) {
-      for (const int seed : comparison.seeds) {
-        StudyRun run;
-        run.index = study.runs.size();
-        char number[32];
-        std::snprintf(number, sizeof number, "%0*d", digits, seed);
-        run.name = worlds[w].name + "." + comparison.variants[v] + "." + number;
-        SweptValue world_value, variant_value, seed_value;
-        world_value.key = "world";
-        world_value.value = worlds[w].name;
-        variant_value.key = "variant";
-        variant_value.value = comparison.variants[v];
-        seed_value.key = "seed";
-        seed_value.value = std::to_string(seed);
-        seed_value.numeric = true;
-        seed_value.number = seed;
-        run.swept = {world_value, variant_value, seed_value};
-        // Names join world, variant and seed with '.', which names may hold too: two cells
-        // that give one name ('a.b' x 'c', 'a' x 'b.c') are refused before any walk.
-        if (!run_names.insert(run.name).second) {
-          source.failWith("variants", "world '" + worlds[w].name + "' x variant '" +
-                                          comparison.variants[v] + "' gives the run name '" +
-                                          run.name + "' of another world x variant (rename one)");
-        }
-        study.runs.push_back(std::move(run));
-        comparison.runs.push_back({w, v, seed});
-      }
+  expansion->digits = static_cast<int>(std::to_string(widest_seed).size());
+  expansion->path = path;
+  expansion->robots_dir = robots_dir;
+  expansion->worlds = worlds;
+  expansion->variants = comparison.variants;
+  expansion->variant_overrides = variant_overrides;
+  expansion->common = common;
+  expansion->seeds = comparison.seeds;
+  expansion->base = base;
+  expansion->hessian_factors = std::make_shared<qp::HessianFactorCache>();
+  const std::size_t total = cells * comparison.seeds.size();
+  std::set<std::string> run_names;
+  for (std::size_t i = 0; i < total; ++i) {
+    const ComparisonRun cell = expansion->cell(i);
+    comparison.runs.push_back(cell);
+    // Names join world, variant and seed with '.', which names may hold too: two cells
+    // that give one name ('a.b' x 'c', 'a' x 'b.c') are refused before any walk.
+    const std::string name = expansion->make(i, false).name;
+    if (!run_names.insert(name).second) {
+      source.failWith("variants", "world '" + worlds[cell.world].name + "' x variant '" +
+                                      comparison.variants[cell.variant] + "' gives the run name '" +
+                                      name + "' of another world x variant (rename one)");
     }
   }
-
-  std::mutex shared_nodes;
-  loadStudyScenarios(&study, threads, [&](StudyRun& run) {
-    const ComparisonRun& cell = comparison.runs[run.index];
-    const WorldSpec& world = worlds[cell.world];
-    const std::string described = "world '" + world.name + "', variant '" +
-                                  comparison.variants[cell.variant] + "', seed " +
-                                  std::to_string(cell.seed);
-    try {
-      YAML::Node scenario;
-      std::string origin, text;
-      // yaml-cpp nodes are not thread-safe, not even to read or to assign from: the base, the
-      // world's parameters and goal are shared by every run, so the scenario text is built
-      // under a lock (cheap); parsing and checking it (loadScenarioText) run in parallel.
-      std::unique_lock<std::mutex> lock(shared_nodes);
-      if (world.generator.empty()) {
-        origin = world.scenario_path;
-        scenario = detail::parseYamlText(detail::readTextFile(origin, "scenario file"), origin);
-      } else {
-        origin = path + ":" + world.key;
-        scenario = YAML::Clone(base);
-        const detail::GeneratedWorld generated =
-            detail::generateWorld(world.generator, world.parameters,
-                                  detail::childKey(world.key, world.generator), cell.seed, source);
-        scenario["obstacles"] = generated.obstacles;
-        YAML::Node goal = scenario["goal"].IsMap() ? scenario["goal"] : YAML::Node();
-        goal["position"] = YAML::Node(YAML::NodeType::Sequence);
-        goal["position"].push_back(generated.goal.x());
-        goal["position"].push_back(generated.goal.y());
-        goal["position"].SetStyle(YAML::EmitterStyle::Flow);
-        scenario["goal"] = goal;
-      }
-      if (world.goal.IsDefined()) {
-        for (const auto& item : world.goal)
-          scenario["goal"][item.first.Scalar()] = YAML::Clone(item.second);
-      }
-      text = YAML::Dump(scenario) + "\n";
-      scenario = YAML::Node();  // released under the lock: its memory is shared with the base
-      lock.unlock();
-      std::vector<std::string> overrides = common;
-      for (const std::string& entry : variant_overrides[cell.variant]) overrides.push_back(entry);
-      overrides.push_back("planner.seed=" + std::to_string(cell.seed));
-      overrides.push_back("name=" + run.name);
-      run.scenario = loadScenarioText(text, origin, overrides, robots_dir);
-      run.scenario.walking.validate();
-      run.scenario.request.validate();
-      for (std::string& warning : run.scenario.warnings) {
-        warning = path + ": " + described + ": " + detail::renameOverrides(warning, "override");
-      }
-    } catch (const std::exception& e) {
-      // The loader calls the variant's and `set`'s keys --set overrides.
-      throw InputError(path + ": " + described + ": " +
-                       detail::renameOverrides(detail::oneLine(e.what()), "override"));
-    }
+  study.runs = StudyRuns(total, [expansion](std::size_t index, bool scenario) {
+    return expansion->make(index, scenario);
   });
+  // Every run checked before any walk: a comparison is at most kMaxStudyRuns runs.
+  for (std::size_t i = 0; i < total; ++i) study.checked_runs.push_back(i);
+  checkStudyScenarios(&study, threads);
   return comparison;
 }
 

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 #include <fstream>
 #include <new>
 #include <sstream>
@@ -91,26 +92,35 @@ std::vector<KeyValues> readLists(const YAML::Node& node, const std::string& sect
   return keys;
 }
 
-// `random:` -> one KeyValues per key, `samples` values each, drawn sample by sample in the
-// keys' file order from one generator seeded with `seed`.
-std::vector<KeyValues> readRandom(const YAML::Node& node, const Source& source) {
-  const detail::Entries entries =
-      detail::readMap(node, "sweep.random", {"samples", "seed", "keys"},
-                      "a map with samples, seed and keys", source);
-  const int samples = detail::readInteger(detail::entry(entries, "samples"), "sweep.random.samples",
-                                          1, "a positive number of samples", source);
-  if (static_cast<std::size_t>(samples) > kMaxStudyRuns) {
-    source.failWith("sweep.random.samples", "expected at most " + std::to_string(kMaxStudyRuns) +
-                                                " samples (the most runs of a study), got " +
-                                                std::to_string(samples));
-  }
-  const int seed = detail::readInteger(detail::entry(entries, "seed"), "sweep.random.seed", 0,
-                                       "a non-negative integer seed", source);
+// `random:` -> its keys and ranges, sample count and seed. Sample s of key k is the
+// generator's draw s * keys + k (uniformAt): the draws sample by sample in the keys' file order
+// from one generator seeded with `seed`, each computed from its number alone.
+struct RandomSweep {
   struct Range {
     std::string key;
     double low, high;
   };
   std::vector<Range> ranges;
+  std::size_t samples = 0;
+  std::uint64_t seed = 0;
+
+  SweptValue value(std::size_t sample, std::size_t k) const {
+    const double u = uniformAt(seed, static_cast<std::uint64_t>(sample) * ranges.size() + k);
+    return numberValue(ranges[k].key, ranges[k].low + (ranges[k].high - ranges[k].low) * u);
+  }
+};
+
+RandomSweep readRandom(const YAML::Node& node, const Source& source) {
+  const detail::Entries entries =
+      detail::readMap(node, "sweep.random", {"samples", "seed", "keys"},
+                      "a map with samples, seed and keys", source);
+  const int samples = detail::readInteger(detail::entry(entries, "samples"), "sweep.random.samples",
+                                          1, "a positive number of samples", source);
+  const int seed = detail::readInteger(detail::entry(entries, "seed"), "sweep.random.seed", 0,
+                                       "a non-negative integer seed", source);
+  RandomSweep random;
+  random.samples = static_cast<std::size_t>(samples);
+  random.seed = static_cast<std::uint64_t>(seed);
   for (const auto& [key, law] : orderedEntries(detail::entry(entries, "keys"), "sweep.random.keys",
                                                "a map of dotted scenario keys to {uniform: [low, high]}",
                                                source)) {
@@ -125,20 +135,70 @@ std::vector<KeyValues> readRandom(const YAML::Node& node, const Source& source) 
                           detail::formatNumber(range[0]) + ", " + detail::formatNumber(range[1]) +
                           "]");
     }
-    ranges.push_back({key, range[0], range[1]});
+    random.ranges.push_back({key, range[0], range[1]});
   }
-  std::vector<KeyValues> keys;
-  for (const Range& range : ranges) keys.push_back({range.key, {}});
-  std::uint64_t state = static_cast<std::uint64_t>(seed);
-  for (int s = 0; s < samples; ++s) {
-    for (std::size_t k = 0; k < ranges.size(); ++k) {
-      const double u = nextUniform(&state);
-      keys[k].values.push_back(
-          numberValue(ranges[k].key, ranges[k].low + (ranges[k].high - ranges[k].low) * u));
-    }
-  }
-  return keys;
+  return random;
 }
+
+// What makes run i of a sweep from i alone (shared by every copy of the study's run list and
+// read by any thread: nothing in it changes after loadStudy).
+struct SweepExpansion {
+  std::string path;  // the study file
+  std::string name;
+  std::string base_text, base_origin, robots_dir;
+  std::vector<std::string> constants;  // set: (and plan: false), before the swept values
+  std::vector<KeyValues> grid, zip;
+  RandomSweep random;
+  std::size_t zip_points = 1, random_points = 1;
+  int digits = 1;
+  std::shared_ptr<qp::HessianFactorCache> hessian_factors;
+
+  StudyRun make(std::size_t index, bool with_scenario) const {
+    StudyRun run;
+    run.index = index;
+    char number[32];
+    std::snprintf(number, sizeof number, "%0*zu", digits, index);
+    run.name = name + "_" + number;
+    run.swept.resize(grid.size());
+    std::size_t rest = index / (zip_points * random_points);
+    for (std::size_t k = grid.size(); k-- > 0;) {
+      run.swept[k] = grid[k].values[rest % grid[k].values.size()];
+      rest /= grid[k].values.size();
+    }
+    const std::size_t zip_index = (index / random_points) % zip_points;
+    for (const KeyValues& key : zip) run.swept.push_back(key.values[zip_index]);
+    const std::size_t sample = index % random_points;
+    for (std::size_t k = 0; k < random.ranges.size(); ++k) run.swept.push_back(random.value(sample, k));
+    if (with_scenario) loadScenarioOf(&run);
+    return run;
+  }
+
+  // The base with the run's values, loaded and validated as `wpg run` does.
+  void loadScenarioOf(StudyRun* run) const {
+    std::vector<std::string> overrides = constants;
+    std::string described;
+    for (const SweptValue& value : run->swept) {
+      overrides.push_back(value.key + "=" + value.value);
+      described += (described.empty() ? "" : ", ") + value.key + "=" + value.value;
+    }
+    overrides.push_back("name=" + run->name);
+    try {
+      run->scenario = loadScenarioText(base_text, base_origin, overrides, robots_dir);
+      run->scenario.walking.validate();
+      run->scenario.request.validate();
+      // Its warnings, as its errors would read: the study, the run, the sweep.
+      for (std::string& warning : run->scenario.warnings) {
+        warning = path + ": run " + std::to_string(run->index) + " (" + described +
+                  "): " + detail::renameOverrides(warning, "sweep");
+      }
+    } catch (const std::exception& e) {  // InputError, or invalid_argument of validate()
+      // The loader calls the swept values --set overrides; here they come from the sweep.
+      throw InputError(path + ": run " + std::to_string(run->index) + " (" + described +
+                       "): " + detail::renameOverrides(detail::oneLine(e.what()), "sweep"));
+    }
+    run->scenario.request.generator.hessian_factors = hessian_factors;
+  }
+};
 
 // FNV-1a, 64 bits: a stable digest of text (not for security, for "same study?").
 std::uint64_t fnv1a(const std::string& text, std::uint64_t hash) {
@@ -161,17 +221,57 @@ double nextUniform(std::uint64_t* state) {
   return static_cast<double>(z >> 11) * 0x1.0p-53;
 }
 
-void loadStudyScenarios(Study* study, int threads, const std::function<void(StudyRun&)>& load) {
-  const std::size_t total = study->runs.size();
+double uniformAt(std::uint64_t seed, std::uint64_t n) {
+  std::uint64_t state = seed + n * 0x9e3779b97f4a7c15ull;  // n steps of the counter, wrapping
+  return nextUniform(&state);
+}
+
+std::vector<std::size_t> checkedRuns(const std::vector<std::size_t>& grid, std::size_t zip_points,
+                                     std::size_t random_points) {
+  std::size_t total = zip_points * random_points;
+  for (const std::size_t values : grid) total *= values;
+  std::vector<std::size_t> runs;
+  if (total <= kCheckedStudyRuns) {
+    for (std::size_t i = 0; i < total; ++i) runs.push_back(i);
+    return runs;
+  }
+  // Run 0, then every value of each grid key with the others at their first (the stride of key
+  // k is the product of the points after it), every zip entry, the first random samples.
+  std::vector<std::size_t> candidates = {0};
+  std::size_t stride = zip_points * random_points;
+  for (std::size_t k = grid.size(); k-- > 0;) {
+    for (std::size_t v = 1; v < grid[k] && candidates.size() < kCheckedStudyRuns; ++v)
+      candidates.push_back(v * stride);
+    stride *= grid[k];
+  }
+  for (std::size_t z = 1; z < zip_points && candidates.size() < kCheckedStudyRuns; ++z)
+    candidates.push_back(z * random_points);
+  for (std::size_t r = 1; r < random_points && candidates.size() < kCheckedStudyRuns; ++r)
+    candidates.push_back(r);
+  std::sort(candidates.begin(), candidates.end());
+  candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+  return candidates;
+}
+
+void checkStudyScenarios(Study* study, int threads) {
+  const std::vector<std::size_t>& indices = study->checked_runs;
+  const std::size_t total = indices.size();
   std::vector<std::string> errors(total);
+  std::vector<std::string> digests(total);
+  std::vector<std::vector<std::string>> warnings(total);
+  std::vector<Study::CheckedRun> checked(total);
   std::atomic<bool> out_of_memory{false};
-  const auto loadRun = [&](std::size_t index) {
+  const auto loadRun = [&](std::size_t position) {
     try {
-      load(study->runs[index]);
+      StudyRun run = study->runs[indices[position]];
+      checked[position] = {run.index, run.scenario.robot, run.scenario.replay,
+                           run.scenario.goal.enabled};
+      digests[position] = std::move(run.scenario.resolved_yaml);
+      warnings[position] = std::move(run.scenario.warnings);
     } catch (const std::bad_alloc&) {
       out_of_memory = true;  // not the input's fault: exit 3, as anywhere else
     } catch (const std::exception& e) {
-      errors[index] = detail::oneLine(e.what());
+      errors[position] = detail::oneLine(e.what());
     }
   };
   const std::size_t workers =
@@ -194,19 +294,16 @@ void loadStudyScenarios(Study* study, int threads, const std::function<void(Stud
   for (std::thread& thread : pool) thread.join();
   if (out_of_memory) throw std::bad_alloc();
   std::uint64_t hash = 14695981039346656037ull;
+  study->warnings.clear();
+  study->checked = std::move(checked);
   for (std::size_t i = 0; i < total; ++i) {
     if (!errors[i].empty()) throw InputError(errors[i]);
-    hash = fnv1a(study->runs[i].scenario.resolved_yaml, hash);
+    hash = fnv1a(digests[i], hash);
+    study->warnings.insert(study->warnings.end(), warnings[i].begin(), warnings[i].end());
   }
   char hex[17];
   std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(hash));
   study->fingerprint = hex;
-  // One cache of Hessian factors for the study: its runs mostly sweep keys that leave the
-  // NMPC's Hessians as they are (1200 factors computed for the 200 runs of
-  // speeds_weights_heights.yaml instead of 6000), and the factors are the same bits shared or
-  // not (qp/hessian_factor_cache.hpp).
-  const auto hessian_factors = std::make_shared<qp::HessianFactorCache>();
-  for (StudyRun& run : study->runs) run.scenario.request.generator.hessian_factors = hessian_factors;
 }
 
 Study loadStudy(const std::string& path, const BaseResolver& resolve_base,
@@ -278,7 +375,8 @@ Study loadStudy(const std::string& path, const BaseResolver& resolve_base,
       detail::entry(top, "sweep"), "sweep", {"grid", "zip", "random"},
       "a map with grid, zip and/or random", source);
   if (sweep.empty()) source.failWith("sweep", "expected grid, zip and/or random, got an empty sweep");
-  std::vector<KeyValues> grid, zip, random;
+  std::vector<KeyValues> grid, zip;
+  RandomSweep random;
   if (detail::present(sweep, "grid")) grid = readLists(detail::entry(sweep, "grid"), "sweep.grid", source);
   if (detail::present(sweep, "zip")) {
     zip = readLists(detail::entry(sweep, "zip"), "sweep.zip", source);
@@ -292,19 +390,23 @@ Study loadStudy(const std::string& path, const BaseResolver& resolve_base,
     }
   }
   if (detail::present(sweep, "random")) random = readRandom(detail::entry(sweep, "random"), source);
-  if (grid.empty() && zip.empty() && random.empty()) {
+  if (grid.empty() && zip.empty() && random.ranges.empty()) {
     source.failWith("sweep", "expected grid, zip and/or random with values, got an empty sweep");
   }
-  for (const auto* section : {&grid, &zip, &random}) {
-    for (const KeyValues& key : *section) {
-      for (const std::string& known : study.keys) {
-        if (known == key.key) source.failWith("sweep", "key '" + key.key + "' is swept twice");
-      }
-      study.keys.push_back(key.key);
-      for (const std::string& constant : constants) {
-        if (constant.compare(0, key.key.size() + 1, key.key + "=") == 0)
-          source.failWith("set", "key '" + key.key + "' is also swept: set it or sweep it");
-      }
+  // Every swept key with its first value (run 0's), in the order of Study::keys.
+  std::vector<SweptValue> first_values;
+  for (const auto* section : {&grid, &zip})
+    for (const KeyValues& key : *section) first_values.push_back(key.values.front());
+  for (std::size_t k = 0; k < random.ranges.size(); ++k) first_values.push_back(random.value(0, k));
+  for (const SweptValue& value : first_values) {
+    const std::string& key = value.key;
+    for (const std::string& known : study.keys) {
+      if (known == key) source.failWith("sweep", "key '" + key + "' is swept twice");
+    }
+    study.keys.push_back(key);
+    for (const std::string& constant : constants) {
+      if (constant.compare(0, key.size() + 1, key + "=") == 0)
+        source.failWith("set", "key '" + key + "' is also swept: set it or sweep it");
     }
   }
 
@@ -314,8 +416,7 @@ Study loadStudy(const std::string& path, const BaseResolver& resolve_base,
   // expansion): the scenario must have them all.
   {
     std::vector<std::string> overrides = constants;
-    for (const auto* section : {&grid, &zip, &random})
-      for (const KeyValues& key : *section) overrides.push_back(key.key + "=" + key.values.front().value);
+    for (const SweptValue& value : first_values) overrides.push_back(value.key + "=" + value.value);
     overrides.push_back("name=" + study.name + "_0");
     try {
       (void)loadScenarioText(base_text, base_origin, overrides, robots_dir);
@@ -335,67 +436,52 @@ Study loadStudy(const std::string& path, const BaseResolver& resolve_base,
   std::string factors;
   const auto multiply = [&](std::size_t factor, const std::string& what) {
     factors += (factors.empty() ? "" : " x ") + std::to_string(factor) + " " + what;
-    if (factor != 0 && total > kMaxStudyRuns / factor) {
-      source.failWith("sweep", "expected at most " + std::to_string(kMaxStudyRuns) +
-                                   " runs, got more: " + factors + "...");
+    if (factor != 0 && total > kMaxSweepRuns / factor) {
+      source.failWith("sweep", "expected at most " + std::to_string(kMaxSweepRuns) +
+                                   " runs (2^31 - 1), got more: " + factors + "...");
     }
     total *= factor;
   };
-  std::size_t grid_points = 1;
+  auto expansion = std::make_shared<SweepExpansion>();
+  std::vector<std::size_t> grid_sizes;
   for (const KeyValues& key : grid) {
     multiply(key.values.size(), "values of '" + key.key + "'");
-    grid_points *= key.values.size();
+    grid_sizes.push_back(key.values.size());
   }
-  const std::size_t zip_points = zip.empty() ? 1 : zip.front().values.size();
-  const std::size_t random_points = random.empty() ? 1 : random.front().values.size();
-  multiply(zip_points, "zip entries");
-  multiply(random_points, "random samples");
-  const std::size_t digits = std::to_string(total - 1).size();
+  expansion->zip_points = zip.empty() ? 1 : zip.front().values.size();
+  expansion->random_points = random.ranges.empty() ? 1 : random.samples;
+  multiply(expansion->zip_points, "zip entries");
+  multiply(expansion->random_points, "random samples");
 
-  for (std::size_t index = 0; index < total; ++index) {
-    StudyRun run;
-    run.index = index;
-    char number[32];
-    std::snprintf(number, sizeof number, "%0*zu", static_cast<int>(digits), index);
-    run.name = study.name + "_" + number;
-    std::size_t rest = index / (zip_points * random_points);
-    std::vector<SweptValue> grid_values(grid.size());
-    for (std::size_t k = grid.size(); k-- > 0;) {
-      grid_values[k] = grid[k].values[rest % grid[k].values.size()];
-      rest /= grid[k].values.size();
+  for (const auto* section : {&grid, &zip}) {
+    for (const KeyValues& key : *section) {
+      bool numeric = true;
+      for (const SweptValue& value : key.values) numeric = numeric && value.numeric;
+      study.key_numeric.push_back(numeric);
     }
-    run.swept = grid_values;
-    const std::size_t zip_index = (index / random_points) % zip_points;
-    for (const KeyValues& key : zip) run.swept.push_back(key.values[zip_index]);
-    for (const KeyValues& key : random) run.swept.push_back(key.values[index % random_points]);
-
-    study.runs.push_back(std::move(run));
   }
+  study.key_numeric.resize(study.keys.size(), true);  // random values are numbers
 
-  // Each run's scenario: the base with its values, loaded and validated as `wpg run` does.
-  loadStudyScenarios(&study, threads, [&](StudyRun& run) {
-    std::vector<std::string> overrides = constants;
-    std::string described;
-    for (const SweptValue& value : run.swept) {
-      overrides.push_back(value.key + "=" + value.value);
-      described += (described.empty() ? "" : ", ") + value.key + "=" + value.value;
-    }
-    overrides.push_back("name=" + run.name);
-    try {
-      run.scenario = loadScenarioText(base_text, base_origin, overrides, robots_dir);
-      run.scenario.walking.validate();
-      run.scenario.request.validate();
-      // Its warnings, as its errors would read: the study, the run, the sweep.
-      for (std::string& warning : run.scenario.warnings) {
-        warning = path + ": run " + std::to_string(run.index) + " (" + described +
-                  "): " + detail::renameOverrides(warning, "sweep");
-      }
-    } catch (const std::exception& e) {  // InputError, or invalid_argument of validate()
-      // The loader calls the swept values --set overrides; here they come from the sweep.
-      throw InputError(path + ": run " + std::to_string(run.index) + " (" + described +
-                       "): " + detail::renameOverrides(detail::oneLine(e.what()), "sweep"));
-    }
+  expansion->path = path;
+  expansion->name = study.name;
+  expansion->base_text = std::move(base_text);
+  expansion->base_origin = std::move(base_origin);
+  expansion->robots_dir = robots_dir;
+  expansion->constants = std::move(constants);
+  expansion->grid = std::move(grid);
+  expansion->zip = std::move(zip);
+  expansion->random = std::move(random);
+  expansion->digits = static_cast<int>(std::to_string(total - 1).size());
+  // One cache of Hessian factors for the study: its runs mostly sweep keys that leave the
+  // NMPC's Hessians as they are (1200 factors computed for the 200 runs of
+  // speeds_weights_heights.yaml instead of 6000), and the factors are the same bits shared or
+  // not (qp/hessian_factor_cache.hpp); it holds at most its budget, whatever the runs.
+  expansion->hessian_factors = std::make_shared<qp::HessianFactorCache>();
+  study.runs = StudyRuns(total, [expansion](std::size_t index, bool scenario) {
+    return expansion->make(index, scenario);
   });
+  study.checked_runs = checkedRuns(grid_sizes, expansion->zip_points, expansion->random_points);
+  checkStudyScenarios(&study, threads);
   return study;
 }
 

@@ -34,10 +34,20 @@ constexpr std::size_t kMaxNameLength = 128;
 // (`<study>_<number>`, `<world>.<variant>.<seed>`) and is a scenario name.
 constexpr std::size_t kMaxStudyNameLength = 32;
 
-// Runs a study (grid x zip x random samples) or a comparison study (worlds x variants x seeds)
-// expands to, at most; also the most `sweep.random.samples` and a count of `seeds`. Every run
-// is a loaded scenario held in memory before the first walk (~10 kB each): a grid of 10^9
-// would eat gigabytes before anything ran, a product of 2^64 wrap to 0.
+// Runs a comparison study (worlds x variants x seeds) expands to, at most; also the most
+// `sweep.random.samples` and a count of `seeds`. Every comparison run is listed before the
+// first walk: a product of 2^64 would wrap to 0.
 constexpr std::size_t kMaxStudyRuns = 1000000;
+
+// Runs of a sweep study (grid x zip x random samples), at most: 2^31 - 1, as the batch files
+// number them (int32 `index` and `run_count`). Its runs are computed one at a time from their
+// index (study_runs.hpp), so a study of 10^7 runs costs no more memory than one of 10; a
+// product over it (up to 2^64 and beyond) is refused, counted factor by factor without wrapping.
+constexpr std::size_t kMaxSweepRuns = 2147483647;
+
+// Rows of one batch file's summary table (a whole batch, an MPI shard, an index), at most: a
+// table of every run is allocated when the file is created (10^7 rows: ~80 MB a column). A
+// larger study runs as slices (`wpg batch --shard K/N`), whose tables hold their runs only.
+constexpr std::size_t kMaxBatchFileRuns = 10000000;
 
 }  // namespace wpg::datasets

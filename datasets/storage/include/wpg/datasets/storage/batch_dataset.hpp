@@ -30,6 +30,28 @@ struct SummaryColumn {
   bool integer = false;     // int32 (fill -1) instead of float64 (fill NaN)
 };
 
+// The runs a batch file's summary table holds, a row each: first, first + stride, ... up to the
+// study's last (a whole batch and an MPI rank's shard: every run; slice K/N: K, K + N, ...).
+// A slice's table is its runs' only, so that a slice of 10^7 runs starts as quickly as one of 10.
+struct BatchRows {
+  std::size_t first = 0;
+  std::size_t stride = 1;
+  std::size_t count(std::size_t runs) const {
+    return runs > first ? (runs - first - 1) / stride + 1 : 0;
+  }
+  bool holds(std::size_t run) const { return run >= first && (run - first) % stride == 0; }
+  std::size_t rowOf(std::size_t run) const { return (run - first) / stride; }
+  std::size_t runOf(std::size_t row) const { return first + row * stride; }
+};
+
+// The attribute `description` of /batch/summary: a table of every run, a slice's table.
+inline constexpr const char* kSummaryDescription =
+    "one row per run of the study (row = index); result columns hold their fill value (-1, NaN) "
+    "until the run is done";
+inline constexpr const char* kSliceSummaryDescription =
+    "one row per run of this slice of the study (its run in `index`); result columns hold their "
+    "fill value (-1, NaN) until the run is done";
+
 // A finished run as the batch file stores it.
 struct BatchRunRecord {
   const StudyRun* run = nullptr;
@@ -52,24 +74,27 @@ class BatchDatasetWriter {
   static PreparedRun prepare(const BatchRunRecord& record);
 
   // Creates `path` (replacing a file there) with the study's layout: root attributes, /batch,
-  // the summary table with its index, name and swept columns filled and its result columns
-  // at their fill values, and an empty /runs. A non-empty `shard_label` makes it a shard file
+  // the summary table of the runs `rows` with its index, name and swept columns filled (block
+  // by block: the memory does not grow with the rows) and its result columns at their fill
+  // values, and an empty /runs. A non-empty `shard_label` makes it a shard file
   // (batch_index.hpp): root attribute `shard`. Throws std::runtime_error on I/O errors.
   static std::unique_ptr<BatchDatasetWriter> create(const std::string& path, const Study& study,
                                                     const std::vector<SummaryColumn>& columns,
-                                                    const std::string& shard_label = "");
+                                                    const std::string& shard_label = "",
+                                                    BatchRows rows = {});
   // Opens an existing batch file of the same study to finish it. Throws InputError, leaving the
   // file untouched, when it is not a batch file, holds another study (name or fingerprint
   // differ) or has other summary columns. Runs found half-written (a group without its `done`
   // row: the batch was killed while writing it) are removed, to be run again.
   static std::unique_ptr<BatchDatasetWriter> resume(const std::string& path, const Study& study,
-                                                    const std::vector<SummaryColumn>& columns);
+                                                    const std::vector<SummaryColumn>& columns,
+                                                    BatchRows rows = {});
   ~BatchDatasetWriter();
   BatchDatasetWriter(const BatchDatasetWriter&) = delete;
   BatchDatasetWriter& operator=(const BatchDatasetWriter&) = delete;
 
-  // done[i]: run i is in the file.
-  const std::vector<bool>& done() const { return done_; }
+  // Run `run` (of the study, one of the file's rows) is in the file.
+  bool done(std::size_t run) const { return done_[rows_.rowOf(run)]; }
 
   // Writes the run's group and its summary row, marks it done and flushes the file; with
   // `prepared` (from prepare(record)), its chunks as they are.
@@ -80,10 +105,11 @@ class BatchDatasetWriter {
 
  private:
   struct Handles;
-  BatchDatasetWriter(std::string path, std::vector<SummaryColumn> columns);
+  BatchDatasetWriter(std::string path, std::vector<SummaryColumn> columns, BatchRows rows);
   std::string path_;
   std::vector<SummaryColumn> columns_;
-  std::vector<bool> done_;
+  BatchRows rows_;
+  std::vector<bool> done_;  // per row
   std::unique_ptr<Handles> handles_;
 };
 

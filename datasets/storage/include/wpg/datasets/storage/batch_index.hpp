@@ -1,7 +1,7 @@
 #pragma once
 // A study split over several files (datasets/SCHEMA.md, "Sharded batches"): shard files, each a
-// batch file of the whole study (batch_dataset.hpp) holding only some of its runs (`done` marks
-// them), and the index file that readers open: the study's root attributes, /batch/summary with
+// batch file of the study (batch_dataset.hpp) holding only some of its runs (`done` marks them;
+// a slice's table has its runs' rows only, an MPI rank's every run's), and the index file that readers open: the study's root attributes, /batch/summary with
 // every row, and /runs/<name> as an HDF5 external link to the run's group in the shard that
 // holds it, its file name relative to the index's folder (the folder of index + shards can be
 // moved). `wpg batch --shard K/N` writes slices, `wpg batch` under MPI writes one shard per
@@ -26,6 +26,12 @@ inline bool inShardSlice(std::size_t run_index, int shard, int shard_count) {
   return static_cast<int>(run_index % static_cast<std::size_t>(shard_count)) == shard;
 }
 
+// How many runs of a study of `runs` slice K/N holds, and its row of run `run_index` (in it).
+inline std::size_t sliceRunCount(std::size_t runs, int shard, int shard_count) {
+  const auto k = static_cast<std::size_t>(shard), n = static_cast<std::size_t>(shard_count);
+  return runs > k ? (runs - k - 1) / n + 1 : 0;
+}
+
 // The label a shard file carries in its root attribute `shard`: "K/N" for a slice,
 // "rank R of S" for an MPI rank.
 std::string shardSliceLabel(int shard, int shard_count);
@@ -37,7 +43,11 @@ struct ShardContents {
   std::string label;  // root attribute `shard`; empty for a plain batch file
   std::string study_name, study_fingerprint;
   std::string created_by;  // root attribute: "wpg batch", "wpg compare"
-  std::vector<bool> done;  // per run of the study
+  std::size_t run_count = 0;  // runs of the study (root attribute run_count)
+  // Per row of its summary table: the run's index (every run of the study for a whole batch
+  // or an MPI rank's shard, a slice's runs for a slice) and whether the run is in the file.
+  std::vector<std::size_t> runs;
+  std::vector<bool> done;
 };
 
 // Throws InputError (one line naming `path`) when it is not a readable batch file.

@@ -22,6 +22,11 @@ constexpr std::uint64_t kMaxStoredSamples = static_cast<std::uint64_t>(kMaxContr
 constexpr std::uint64_t kMaxStoredPlans = 10000;
 constexpr std::uint64_t kMaxStoredRouteWaypoints = 100000;
 
+// A run's plan (`mpc/plan/`): previewed samples and steps of an iteration, at most what the
+// walking parameters allow (horizon_length <= 200, previewed_steps <= 10).
+constexpr std::uint64_t kMaxStoredPlanSamples = 200;
+constexpr std::uint64_t kMaxStoredPlanSteps = 10;
+
 // Elements of any one dataset or attribute a reader loads (2^26: 512 MiB as float64). The
 // largest dataset wpg writes, `q` of a 3600 s walk of HRP-2, has about 2.7e7.
 constexpr std::uint64_t kMaxReadElements = std::uint64_t{1} << 26;
