@@ -67,6 +67,7 @@ int main(int argc, char** argv) {
   registerPushSweepCommand(app, command);
   registerPlotCommand(app, command);
   registerViewCommand(app, command);
+  registerRobotCommand(app, command);
 
   try {
     app.parse(argc, argv);

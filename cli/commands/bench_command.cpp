@@ -238,7 +238,7 @@ int benchCommand(const BenchOptions& options) {
   std::vector<std::string> robot_names;
   for (const datasets::Scenario& scenario : scenarios) {
     if (std::find(robot_names.begin(), robot_names.end(), scenario.robot) == robot_names.end()) {
-      models.push_back(engine::loadRobotModel(robotsDirectory(), scenario.robot));
+      models.push_back(engine::loadRobotModel(robotsDirectory(), scenario.robot, scenario.multibody));
       robot_names.push_back(scenario.robot);
     }
   }

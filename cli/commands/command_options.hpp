@@ -73,6 +73,13 @@ struct CompareOptions {
 };
 int compareCommand(const CompareOptions& options);
 
+// `wpg robot check DIR` (wpg/engine/robot_check.hpp): DIR a robot folder, or the name of one of
+// the robots directory.
+struct RobotCheckOptions {
+  std::string folder;
+};
+int robotCheckCommand(const RobotCheckOptions& options);
+
 struct AnalyzeOptions {
   std::string input;               // a run or batch file
   std::string format = "table";    // table, csv or json

@@ -72,7 +72,7 @@ void registerRunCommand(CLI::App& app, CommandAction& action) {
       ->default_str("");
   run_app->add_flag("--no-plot", parsed->no_plot, "Do not draw the figure");
   run_app->add_flag("--replay", run.replay,
-                    "Replay the walk on the robot's multibody model (robots/<robot>/<robot>.urdf: "
+                    "Replay the walk on the robot's multibody model (the URDF of its walking.yaml's multibody: "
                     "walking IK, Simbody inverse dynamics, multibody ZMP). Default: the "
                     "scenario's `replay:` key (false)");
   run_app->add_flag("--filter", run.filter,
@@ -381,6 +381,28 @@ void registerViewCommand(CLI::App& app, CommandAction& action) {
   setExitCodes(view_app, "0 the page is written, 2 bad input (nothing written), " +
                              std::string(kIncompleteWriting));
   runWhenParsed(view_app, action, parsed, &viewCommand, [](Parsed<ViewOptions>&, CLI::App&) {});
+}
+
+void registerRobotCommand(CLI::App& app, CommandAction& action) {
+  CLI::App* robot_app =
+      app.add_subcommand("robot", "Robot folders (docs/robots.md): `wpg robot check DIR`.");
+  robot_app->require_subcommand(1);
+  auto parsed = std::make_shared<Parsed<RobotCheckOptions>>();
+  CLI::App* check_app = robot_app->add_subcommand(
+      "check",
+      "Check a robot folder (walking.yaml, its URDF and SRDF) as a run would read it, and print "
+      "what the walking IK derives: leg length, walkable CoM heights, the step polygon it "
+      "reaches beside the declared one. Writes nothing.");
+  check_app->add_option("folder", parsed->options.folder,
+                        "A robot folder, or the name of a robot of the data directory")
+      ->required()
+      ->type_name("DIR");
+  const std::string codes = "0 the folder is fine, 2 a problem (one line naming the file), " +
+                            std::string(kIncompleteReading);
+  setExitCodes(robot_app, codes);
+  setExitCodes(check_app, codes);
+  runWhenParsed(check_app, action, parsed, &robotCheckCommand,
+                [](Parsed<RobotCheckOptions>&, CLI::App&) {});
 }
 
 }  // namespace wpg::cli

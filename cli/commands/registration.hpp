@@ -25,5 +25,6 @@ void registerDiffCommand(CLI::App& app, CommandAction& action);
 void registerPushSweepCommand(CLI::App& app, CommandAction& action);
 void registerPlotCommand(CLI::App& app, CommandAction& action);
 void registerViewCommand(CLI::App& app, CommandAction& action);
+void registerRobotCommand(CLI::App& app, CommandAction& action);
 
 }  // namespace wpg::cli

@@ -24,7 +24,7 @@ int replayCommand(const ReplayOptions& options) {
   const engine::StoredRunReplay run =
       engine::loadRunForReplay(options.input, options.filter, robotsDirectory());
   const datasets::Scenario& scenario = run.scenario;
-  const robots::RobotModel model = engine::loadRobotModel(robotsDirectory(), scenario.robot);
+  const robots::RobotModel model = engine::loadRobotModel(robotsDirectory(), scenario.robot, scenario.multibody);
   if (scenario.filter) engine::checkFilterSettings(scenario, run.origin);
 
   const fs::path dataset_path = options.output.empty() ? fs::path(options.input)
@@ -34,8 +34,8 @@ int replayCommand(const ReplayOptions& options) {
   // The run file is replaced by default (atomically); no device, folder, robot file or file of
   // another kind is (output_file.hpp).
   const std::vector<std::string> inputs = {
-      (fs::path(robotsDirectory()) / scenario.robot / "walking.yaml").string(),
-      engine::robotUrdfPath(robotsDirectory(), scenario.robot)};
+      engine::robotWalkingFilePath(robotsDirectory(), scenario.robot),
+      engine::robotUrdfPath(robotsDirectory(), scenario.robot, scenario.multibody)};
   datasets::checkOutputPath(dataset_path.string(), datasets::OutputKind::kHdf5, inputs);
   if (options.plot) {
     std::vector<std::string> figure_inputs = inputs;

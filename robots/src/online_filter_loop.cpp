@@ -46,7 +46,7 @@ class FilterLoop : public ControlLoopObserver {
       : model_(model),
         w_(w),
         settings_(settings),
-        ik_(model),
+        ik_(model, settings.ik),
         controller_(w.control_period, w.com_height, w.gravity, settings.preview),
         filter_(controller_),
         momentum_(model, w.gravity),

@@ -4,9 +4,11 @@
 #include <cmath>
 #include <fstream>
 #include <limits>
+#include <map>
 #include <sstream>
 #include <stdexcept>
 
+#include <Eigen/Eigenvalues>
 #include <urdf_parser/urdf_parser.h>
 
 namespace wpg::robots::detail {
@@ -29,6 +31,59 @@ Pose toPose(const urdf::Pose& pose) {
   return out;
 }
 
+// A link that is the child of two joints, or a chain of parents that comes back to itself, is
+// a loop: a URDF describes a tree. Checked on the XML before urdfdom, whose own refusal is a
+// console message and no reason.
+void checkTree(const TiXmlElement* robot, const std::string& path) {
+  std::map<std::string, std::pair<std::string, std::string>> parent_of;  // child -> joint, parent
+  for (const TiXmlElement* joint = robot->FirstChildElement("joint"); joint != nullptr;
+       joint = joint->NextSiblingElement("joint")) {
+    const TiXmlElement* parent = joint->FirstChildElement("parent");
+    const TiXmlElement* child = joint->FirstChildElement("child");
+    const char* name = joint->Attribute("name");
+    const char* parent_link = parent ? parent->Attribute("link") : nullptr;
+    const char* child_link = child ? child->Attribute("link") : nullptr;
+    if (!name || !parent_link || !child_link) continue;  // urdfdom names what is missing
+    const auto [it, inserted] = parent_of.emplace(child_link, std::pair{name, parent_link});
+    if (!inserted) {
+      throw std::runtime_error("URDF file " + path + ": link " + child_link +
+                               " is the child of two joints, " + it->second.first + " and " +
+                               name + " (a loop: a URDF describes a tree)");
+    }
+  }
+  for (const auto& [link, joint] : parent_of) {
+    std::string current = link;
+    for (std::size_t steps = 0; parent_of.count(current) != 0; ++steps) {
+      current = parent_of.at(current).second;
+      if (current == link || steps > parent_of.size()) {
+        throw std::runtime_error("URDF file " + path + ": the joints from link " + link +
+                                 " lead back to it (a loop: a URDF describes a tree)");
+      }
+    }
+  }
+}
+
+// Physical mass properties of a link with <inertial>: a positive mass and a positive definite
+// inertia (a massless frame has no <inertial>). Simbody and the CoM would take anything.
+void checkInertial(const std::string& link, double mass, const Eigen::Matrix3d& inertia,
+                   const std::string& path) {
+  if (!(mass > 0.0) || !std::isfinite(mass)) {
+    std::ostringstream value;
+    value << mass;
+    throw std::runtime_error("URDF file " + path + ": link " + link + " has mass " +
+                             value.str() + " kg, expected a positive mass (a massless frame has "
+                             "no <inertial>)");
+  }
+  const Eigen::Vector3d eigenvalues = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(
+      inertia, Eigen::EigenvaluesOnly).eigenvalues();
+  if (!inertia.allFinite() || !(eigenvalues.minCoeff() > 0.0)) {
+    std::ostringstream values;
+    values << eigenvalues(0) << ", " << eigenvalues(1) << ", " << eigenvalues(2);
+    throw std::runtime_error("URDF file " + path + ": link " + link + " has an inertia that is "
+                             "not positive definite (eigenvalues " + values.str() + " kg m^2)");
+  }
+}
+
 // Joint names in the order of the <joint> elements (urdfdom keeps them in a std::map).
 std::vector<std::string> jointDocumentOrder(const std::string& xml, const std::string& path) {
   TiXmlDocument document;
@@ -38,6 +93,7 @@ std::vector<std::string> jointDocumentOrder(const std::string& xml, const std::s
   }
   const TiXmlElement* robot = document.FirstChildElement("robot");
   if (robot == nullptr) throw std::runtime_error("URDF file " + path + " has no <robot> element");
+  checkTree(robot, path);
   std::vector<std::string> names;
   for (const TiXmlElement* joint = robot->FirstChildElement("joint"); joint != nullptr;
        joint = joint->NextSiblingElement("joint")) {
@@ -66,11 +122,9 @@ UrdfDescription readUrdf(const std::string& path) {
     if (link->inertial) {
       const urdf::Inertial& in = *link->inertial;
       const Pose origin = toPose(in.origin);
-      if (!(in.mass >= 0.0) || !std::isfinite(in.mass)) {
-        throw std::runtime_error("URDF file " + path + ": link " + name + " has a bad mass");
-      }
       Eigen::Matrix3d inertia;
       inertia << in.ixx, in.ixy, in.ixz, in.ixy, in.iyy, in.iyz, in.ixz, in.iyz, in.izz;
+      checkInertial(name, in.mass, inertia, path);
       l.mass = in.mass;
       l.com = origin.position;
       l.inertia = origin.rotation * inertia * origin.rotation.transpose();

@@ -37,7 +37,8 @@ struct UrdfDescription {
 };
 
 // Throws std::runtime_error with the file name on any error (unreadable, malformed, not a
-// tree, floating/planar joints).
+// tree (a loop), an <inertial> whose mass is not positive or whose inertia is not positive
+// definite, floating/planar joints).
 UrdfDescription readUrdf(const std::string& path);
 
 // SRDF <group_state name="..."><joint name="..." value="..."/>...</group_state>: posture name

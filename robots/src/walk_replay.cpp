@@ -88,7 +88,7 @@ MultibodyValidation replayWalk(const RobotModel& model, const WalkingParameters&
     const Eigen::Vector2d a = request.pushAccelerationAt(walk.time[i]);
     com_force.row(i) << request.robot_mass * a.x(), request.robot_mass * a.y(), 0.0;
   }
-  const WalkingIk ik(model);
+  const WalkingIk ik(model, settings.ik);
   // Simbody validates: the ZMP of the motion sent to the robot (the filtered one, or the WPG's
   // when there is no filter) is its inverse dynamics. Only the ZMP is needed: without joint
   // torques the replay welds the joints the IK holds constant (the upper body in its

@@ -3,14 +3,13 @@
 #include <chrono>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include <Eigen/LU>
 
 namespace wpg::robots {
 namespace {
-
-constexpr double kStructureTolerance = 1e-12;
 
 Eigen::Matrix3d rotZ(double a) {
   const double c = std::cos(a), s = std::sin(a);
@@ -24,10 +23,6 @@ Pose soleTarget(const Eigen::Vector4d& foot) {
   pose.position = foot.head<3>();
   pose.rotation = rotZ(foot(3));
   return pose;
-}
-
-bool isIdentity(const Eigen::Matrix3d& r) {
-  return (r - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff() <= kStructureTolerance;
 }
 
 // r <- r Rot(axis, angle) for a coordinate axis (0 x, 1 y, 2 z), c = cos(angle), s = sin(angle):
@@ -51,63 +46,6 @@ const char* walkingIkStatusName(WalkingIkStatus status) {
   return "unknown";
 }
 
-WalkingIk::Leg WalkingIk::makeLeg(const std::string& sole_frame) const {
-  const auto fail = [&](const std::string& why) {
-    throw std::invalid_argument("walking IK: the leg of frame " + sole_frame + " of robot " +
-                                model_.name() + " " + why);
-  };
-  const Frame& frame = model_.frames()[model_.frameIndex(sole_frame)];
-  if (!isIdentity(frame.placement.rotation)) fail("has a rotated sole frame");
-  Leg leg;
-  leg.sole = frame.placement.position;
-  int body = frame.body;
-  for (int i = 5; i >= 0; --i) {
-    if (body <= 0) fail("has fewer than 6 joints between the root and the sole");
-    leg.body[i] = body;
-    body = model_.bodies()[body].parent;
-  }
-  if (body != 0) fail("has more than 6 joints between the root and the sole");
-  const Eigen::Vector3d expected_axes[6] = {Eigen::Vector3d::UnitZ(), Eigen::Vector3d::UnitX(),
-                                            Eigen::Vector3d::UnitY(), Eigen::Vector3d::UnitY(),
-                                            Eigen::Vector3d::UnitY(), Eigen::Vector3d::UnitX()};
-  Eigen::Vector3d origins[6];
-  for (int i = 0; i < 6; ++i) {
-    const Joint& joint = model_.joints()[model_.bodies()[leg.body[i]].joint];
-    if (joint.type == JointType::kPrismatic) fail("has a prismatic joint " + joint.name);
-    leg.axis[i] = i == 0 ? 2 : (i == 1 || i == 5) ? 0 : 1;  // index of expected_axes[i]
-    if ((joint.axis - expected_axes[i]).norm() > kStructureTolerance) {
-      fail("has joint " + joint.name + " with an axis other than hip yaw z, hip roll x, hip pitch "
-           "y, knee y, ankle pitch y, ankle roll x");
-    }
-    if (!isIdentity(joint.origin.rotation)) fail("has a rotated joint frame " + joint.name);
-    origins[i] = joint.origin.position;
-    leg.q_index[i] = RobotModel::kFreeFlyerConfigurationSize + joint.index;
-  }
-  if (origins[1].norm() > kStructureTolerance || origins[2].norm() > kStructureTolerance ||
-      origins[5].norm() > kStructureTolerance) {
-    fail("does not have intersecting hip axes and intersecting ankle axes");
-  }
-  if (std::abs(origins[3].x()) > kStructureTolerance || std::abs(origins[4].x()) > kStructureTolerance ||
-      !(origins[3].z() < 0.0) || !(origins[4].z() < 0.0)) {
-    fail("does not have a knee below the hip and an ankle below the knee without x offsets");
-  }
-  for (int i = 0; i < 6; ++i) leg.origin[i] = origins[i];
-  leg.hip = origins[0];
-  leg.thigh = -origins[3].z();
-  leg.shank = -origins[4].z();
-  leg.lateral = origins[3].y() + origins[4].y();
-  // Nothing but the next leg body may hang from a leg body (its mass would not be counted).
-  for (std::size_t b = 1; b < model_.bodies().size(); ++b) {
-    const int parent = model_.bodies()[b].parent;
-    for (int i = 0; i < 6; ++i) {
-      if (parent == leg.body[i] && (i == 5 || static_cast<int>(b) != leg.body[i + 1])) {
-        fail("has a branch at body " + model_.bodies()[parent].name);
-      }
-    }
-  }
-  return leg;
-}
-
 WalkingIk::WalkingIk(const RobotModel& model, WalkingIkSettings settings)
     : model_(model), settings_(std::move(settings)) {
   if (model_.jointCount() > 64) {
@@ -119,23 +57,33 @@ WalkingIk::WalkingIk(const RobotModel& model, WalkingIkSettings settings)
   }
   legs_[kLeft] = makeLeg(settings_.left_sole_frame);
   legs_[kRight] = makeLeg(settings_.right_sole_frame);
-  for (int i = 0; i < 6; ++i) {
-    if (std::find(legs_[kRight].body.begin(), legs_[kRight].body.end(), legs_[kLeft].body[i]) !=
-        legs_[kRight].body.end()) {
+  const std::vector<int>& right_bodies = legs_[kRight].chain_body;
+  for (const int body : legs_[kLeft].chain_body) {
+    if (std::find(right_bodies.begin(), right_bodies.end(), body) != right_bodies.end()) {
       throw std::invalid_argument("walking IK: the two sole frames share leg joints");
     }
   }
   reference_ = model_.referenceConfiguration(settings_.reference_posture);
+  const std::string sole_frames[2] = {settings_.left_sole_frame, settings_.right_sole_frame};
+  for (int side = 0; side < 2; ++side) {
+    if (legs_[side].analytic) continue;
+    numerical_start_[side].resize(static_cast<Eigen::Index>(legs_[side].chain_q.size()));
+    for (std::size_t i = 0; i < legs_[side].chain_q.size(); ++i)
+      numerical_start_[side](static_cast<Eigen::Index>(i)) = reference_(legs_[side].chain_q[i]);
+    numerical_[side] = std::make_shared<const NumericalLegIk>(
+        model_, sole_frames[side], NumericalLegIkSettings(),
+        lockedLegJoints(NumericalLegIk(model_, sole_frames[side]), numerical_start_[side]));
+  }
 
   // Mass of everything but the legs, held rigid in the reference posture, in the root frame.
   std::vector<Pose> poses;
   model_.forwardKinematics(reference_, poses);
   std::vector<bool> in_leg(model_.bodies().size(), false);
   for (int side = 0; side < 2; ++side) {
-    for (int i = 0; i < 6; ++i) {
-      const Body& body = model_.bodies()[legs_[side].body[i]];
-      in_leg[legs_[side].body[i]] = true;
-      leg_mass_[side][i] = {body.mass, body.com};
+    for (const int b : legs_[side].chain_body) {
+      const Body& body = model_.bodies()[b];
+      in_leg[b] = true;
+      leg_mass_[side].push_back({body.mass, body.com});
     }
   }
   Eigen::Vector3d moment = Eigen::Vector3d::Zero();
@@ -156,6 +104,7 @@ void WalkingIk::advanceLeg(const Leg& leg, int i, double angle, Pose& pose) {
 
 Pose WalkingIk::legForwardKinematics(Side side, const Pose& waist, const LegAngles& angles) const {
   const Leg& leg = legs_[side];
+  if (!leg.analytic) throw std::logic_error("walking IK: legForwardKinematics of a numerical leg");
   Pose pose = waist;
   for (int i = 0; i < 6; ++i) advanceLeg(leg, i, angles(i), pose);
   pose.position += pose.rotation * leg.sole;
@@ -163,6 +112,7 @@ Pose WalkingIk::legForwardKinematics(Side side, const Pose& waist, const LegAngl
 }
 
 bool WalkingIk::solveLeg(Side side, const Pose& waist, const Pose& sole, LegAngles& q) const {
+  if (!legs_[side].analytic) throw std::logic_error("walking IK: solveLeg of a numerical leg");
   LegSolution solution;
   const bool reachable = solveLegCosines(side, waist, sole, solution);
   solution.angles(q);
@@ -263,9 +213,18 @@ Eigen::Vector3d WalkingIk::comForWaist(const Eigen::Vector3d& p, const Eigen::Ma
   // d CoM / d p = I + (1 / M) sum over the legs of G D (comAtWaist in the header): the waist
   // translation moves every body by dp, and each leg's joints by D dp so that the sole stays.
   Eigen::Matrix3d leg_terms = Eigen::Matrix3d::Zero();
+  bool numerical = false;
   for (int side = 0; side < 2; ++side) {
     const Leg& leg = legs_[side];
     const LegSolution& solution = legs[side];
+    if (!leg.analytic) {  // its Jacobian by finite differences (solveFrom)
+      Pose reached;
+      reachable &= solveNumericalLeg(static_cast<Side>(side), waist, soles[side], legs[side],
+                                     moment, reached);
+      if (reached_soles != nullptr) reached_soles[side] = reached;
+      numerical = true;
+      continue;
+    }
     reachable &= solveLegCosines(static_cast<Side>(side), waist, soles[side], legs[side]);
     Pose pose = waist;
     Eigen::Vector3d joint_origin[6], joint_axis[6], body_com[6];
@@ -307,7 +266,11 @@ Eigen::Vector3d WalkingIk::comForWaist(const Eigen::Vector3d& p, const Eigen::Ma
     leg_terms.noalias() += moment_rate.leftCols<3>() * hip_rates;
     leg_terms.noalias() += moment_rate.rightCols<3>() * lower_rates;
   }
-  if (jacobian != nullptr) *jacobian = Eigen::Matrix3d::Identity() + leg_terms / total_mass_;
+  if (jacobian != nullptr) {
+    // Not finite for a numerical leg: solveFrom takes forward differences instead.
+    *jacobian = numerical ? Eigen::Matrix3d::Constant(std::numeric_limits<double>::quiet_NaN())
+                          : Eigen::Matrix3d(Eigen::Matrix3d::Identity() + leg_terms / total_mass_);
+  }
   return moment / total_mass_;
 }
 
@@ -399,9 +362,14 @@ WalkingIkResult WalkingIk::solveFrom(const WalkingIkTarget& target,
   q.head<3>() = p;  // free-flyer: position, then the yaw quaternion (w, x, y, z)
   q.segment<4>(3) << std::cos(0.5 * target.waist_yaw), 0.0, 0.0, std::sin(0.5 * target.waist_yaw);
   for (int side = 0; side < 2; ++side) {
-    LegAngles angles;
-    legs[side].angles(angles);
-    for (int i = 0; i < 6; ++i) q(legs_[side].q_index[i]) = angles(i);
+    if (legs_[side].analytic) {
+      LegAngles angles;
+      legs[side].angles(angles);
+      for (int i = 0; i < 6; ++i) q(legs_[side].q_index[i]) = angles(i);
+    } else {
+      for (std::size_t i = 0; i < legs_[side].chain_q.size(); ++i)
+        q(legs_[side].chain_q[i]) = legs[side].numeric(static_cast<Eigen::Index>(i));
+    }
     const Pose& sole = reached[side];
     result.foot_position_error =
         std::max(result.foot_position_error, (sole.position - soles[side].position).norm());

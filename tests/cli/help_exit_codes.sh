@@ -14,7 +14,7 @@ make_workdir
 declare -A expected=(
   [run]="0 1 2 3" [replay]="0 2 3" [bench]="0 1 2 3" [batch]="0 1 2 3" [merge]="0 1 2 3"
   [compare]="0 2 3" [analyze]="0 2 3" [diff]="0 1 2 3" [push-sweep]="0 2 3" [plot]="0 2 3"
-  [view]="0 2 3")
+  [view]="0 2 3" [robot]="0 2 3")
 # The codes of the "Exit codes: 0 ..., 1 ..." line of a help text (items "N meaning", separated
 # by ", "; a meaning may hold commas in parentheses).
 codes_of_help() {

@@ -514,4 +514,63 @@ TEST_F(ScenarioFiles, BadRobotFiles) {
   EXPECT_EQ(loadScenario(scenario_path, {}, robots).robot, "partial");
 }
 
+// walking.yaml's `multibody:` reaches the scenario; without it the robot walks without a model;
+// a bad map is one line naming the robot file and the key.
+TEST_F(ScenarioFiles, RobotMultibodyMap) {
+  const std::string robots = (directory_ / "robots").string();
+  const std::string scenario_path =
+      write("mapped.yaml", replaced(kValidScenario, "robot: hrp2", "robot: mapped"));
+  const std::string robot_file = robots + "/mapped/walking.yaml";
+  std::ifstream hrp2(kRobotsDir + "/hrp2/walking.yaml");
+  const std::string text((std::istreambuf_iterator<char>(hrp2)), std::istreambuf_iterator<char>());
+  write("robots/mapped/walking.yaml", text);
+  const wpg::datasets::RobotMultibody shipped = loadScenario(scenario_path, {}, robots).multibody;
+  EXPECT_TRUE(shipped.present);
+  EXPECT_EQ(shipped.urdf, "hrp2.urdf");
+  EXPECT_EQ(shipped.left_sole_frame, "LLEG_SOLE");
+  EXPECT_EQ(shipped.right_sole_frame, "RLEG_SOLE");
+  EXPECT_EQ(shipped.standing_posture, "half_sitting");
+
+  const std::string block =
+      "multibody:\n  urdf: hrp2.urdf                  # robots/hrp2/README.md, \"The multibody model\"\n";
+  ASSERT_NE(text.find(block), std::string::npos) << "test bug: the shipped map changed";
+  const auto with_map = [&](const std::string& map) {
+    std::string edited = text;
+    const std::size_t start = edited.find("multibody:\n");
+    const std::size_t end = edited.find("\n\n", start);
+    edited.replace(start, end - start, map);
+    return edited;
+  };
+  write("robots/mapped/walking.yaml", with_map("multibody:\n  urdf: a.urdf\n  left_sole_frame: L\n  "
+                                               "right_sole_frame: R"));
+  const wpg::datasets::RobotMultibody own = loadScenario(scenario_path, {}, robots).multibody;
+  EXPECT_EQ(own.urdf, "a.urdf");
+  EXPECT_EQ(own.left_sole_frame, "L");
+  EXPECT_EQ(own.standing_posture, "half_sitting");  // the default
+  write("robots/mapped/walking.yaml", with_map(""));
+  EXPECT_FALSE(loadScenario(scenario_path, {}, robots).multibody.present);
+
+  const std::pair<std::string, std::string> bad[] = {
+      {"multibody:\n  urdf: a.urdf\n  left_sole_frame: L", "'multibody.right_sole_frame'"},
+      {"multibody:\n  urdf: a.urdf\n  left_sole_frame: L\n  right_sole_frame: L",
+       "'multibody.right_sole_frame'"},
+      {"multibody:\n  urdf: a.urdf\n  left_sole_frame: L\n  right_sole_frame: R\n  knee: K",
+       "'multibody.knee'"},
+      {"multibody:\n  urdf: ../a.urdf\n  left_sole_frame: L\n  right_sole_frame: R",
+       "'multibody.urdf'"},
+      {"multibody: hrp2.urdf", "'multibody'"}};
+  for (const auto& [map, key] : bad) {
+    write("robots/mapped/walking.yaml", with_map(map));
+    try {
+      loadScenario(scenario_path, {}, robots);
+      ADD_FAILURE() << "no InputError for " << map;
+    } catch (const InputError& error) {
+      const std::string message = error.what();
+      EXPECT_NE(message.find(robot_file), std::string::npos) << message;
+      EXPECT_NE(message.find(key), std::string::npos) << message;
+      EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+    }
+  }
+}
+
 }  // namespace

@@ -12,6 +12,7 @@
 #include "wpg/planning/goal_walk.hpp"
 #include "wpg/planning/obstacle_checks.hpp"
 #include "wpg/planning/world.hpp"
+#include "wpg/engine/robot_models.hpp"
 #include "wpg/robots/online_filter_loop.hpp"
 #include "wpg/robots/walk_replay.hpp"
 
@@ -95,6 +96,7 @@ ReplayOutcome replayScenarioWalk(const robots::RobotModel& model,
   settings.filter = filter;
   settings.threads = threads;
   settings.preview = scenario.filter_settings;
+  settings.ik = walkingIkSettings(scenario.multibody);
   ReplayOutcome outcome;
   const auto start = std::chrono::steady_clock::now();
   try {
@@ -172,6 +174,7 @@ WalkAndReplay runWalkAndReplay(const robots::RobotModel* model,
   settings.preview = robots::onlinePreviewSettings(scenario.filter_settings, scenario.filter_loop);
   settings.reinitialize_wpg = scenario.filter_loop.reinitialize_wpg;
   settings.closed_loop = scenario.filter_loop.mode == DynamicFilterMode::kClosedLoop;
+  settings.ik = walkingIkSettings(scenario.multibody);
   ReplayOutcome outcome;
   const auto start = std::chrono::steady_clock::now();
   robots::OnlineFilterRun loop;

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "wpg/datasets/input/input_error.hpp"
+#include "wpg/datasets/input/robot_file.hpp"
 #include "wpg/planning/goal_walk.hpp"
 #include "wpg/preview_control.hpp"
 
@@ -35,7 +36,7 @@ void checkGoalRequest(const datasets::Scenario& scenario, const std::string& ori
 void checkRunInput(const datasets::Scenario& scenario, const std::string& origin,
                    RobotModelCache& models) {
   if (scenario.replay) {
-    (void)models.model(scenario.robot);
+    (void)models.model(scenario.robot, scenario.multibody);
     if (scenario.filter) checkFilterSettings(scenario, origin);
   }
   checkGoalRequest(scenario, origin);
@@ -47,7 +48,12 @@ void checkStudyRobotModels(const datasets::Study& study, const std::string& robo
   for (const datasets::Study::CheckedRun& run : study.checked) {
     if (run.replay) replayed_robots.insert(run.robot);
   }
-  for (const std::string& robot : replayed_robots) (void)loadRobotModel(robots_directory, robot);
+  // Each robot's multibody model as its walking file names it.
+  for (const std::string& robot : replayed_robots) {
+    const datasets::RobotFile file =
+        datasets::loadRobotFile(robotWalkingFilePath(robots_directory, robot));
+    (void)loadRobotModel(robots_directory, robot, file.multibody);
+  }
 }
 
 }  // namespace wpg::engine

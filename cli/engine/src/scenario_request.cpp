@@ -48,8 +48,11 @@ LoadedScenario loadScenarioRequest(const ScenarioRequest& request, RobotModelCac
 
 std::vector<std::string> runInputs(const LoadedScenario& loaded) {
   const std::string robots = robotsDirectory();
-  return {loaded.path, (fs::path(robots) / loaded.scenario.robot / "walking.yaml").string(),
-          robotUrdfPath(robots, loaded.scenario.robot)};
+  std::vector<std::string> inputs = {loaded.path,
+                                     robotWalkingFilePath(robots, loaded.scenario.robot)};
+  const std::string urdf = robotUrdfPath(robots, loaded.scenario.robot, loaded.scenario.multibody);
+  if (!urdf.empty()) inputs.push_back(urdf);
+  return inputs;
 }
 
 RunOutputs runOutputsOf(const LoadedScenario& loaded, const std::string& output, bool figure) {

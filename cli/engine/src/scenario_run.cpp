@@ -32,7 +32,7 @@ RunResult runScenario(const datasets::Scenario& scenario, const RunSettings& set
   if (scenario.replay) {
     RobotModelCache* models = settings.models;
     if (!models) models = &own_models.emplace(settings.robots_directory);
-    model = &models->model(scenario.robot);
+    model = &models->model(scenario.robot, scenario.multibody);
   }
   WalkAndReplay run;
   try {

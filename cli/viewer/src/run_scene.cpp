@@ -143,8 +143,10 @@ LoadedRun loadRun(const std::string& path, const std::string& run_name,
   run.scenario = datasets::loadScenarioText(run.stored.scenario_yaml,
                                             path + ":/runs/" + run.stored.name + "/scenario", {},
                                             robots_directory);
-  const fs::path urdf = fs::path(robots_directory) / run.stored.robot / (run.stored.robot + ".urdf");
-  std::ifstream in(urdf);
+  // The URDF the robot folder's walking file names (multibody.urdf); none without it.
+  std::ifstream in;
+  if (run.scenario.multibody.present)
+    in.open(fs::path(robots_directory) / run.stored.robot / run.scenario.multibody.urdf);
   if (in) {
     std::ostringstream text;
     text << in.rdbuf();

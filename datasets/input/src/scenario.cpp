@@ -75,6 +75,7 @@ Scenario loadScenarioTree(YAML::Node root, const std::string& path,
     if (!fs::is_regular_file(robot_file, ec)) source.fail("robot", robot_expected, robot_node);
     const Robot robot = loadRobot(robot_file.string());
     scenario.request.robot_mass = robot.mass;
+    scenario.multibody = robot.multibody;
     robot_com_height = robot.walking.com_height;
 
     // walking := robot's parameters, then the scenario's (checked: known keys, given once).

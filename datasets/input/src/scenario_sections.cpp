@@ -7,6 +7,7 @@
 
 #include "parameter_fields.hpp"
 #include "wpg/datasets/input/input_limits.hpp"
+#include "wpg/datasets/input/robot_file.hpp"
 #include "wpg/nearest_name.hpp"
 
 namespace wpg::datasets::detail {
@@ -277,6 +278,35 @@ std::vector<Obstacle> readObstacles(const YAML::Node& node, const Source& source
       });
 }
 
+RobotMultibody readMultibody(const YAML::Node& node, const Source& source) {
+  const Entries entries =
+      readMap(node, "multibody",
+              {"urdf", "left_sole_frame", "right_sole_frame", "standing_posture"},
+              "a map {urdf: FILE.urdf, left_sole_frame: LINK, right_sole_frame: LINK, "
+              "standing_posture: STATE}",
+              source);
+  const std::string name = "a name of letters, digits, '_', '-', '.'";
+  RobotMultibody out;
+  out.present = true;
+  out.urdf = readName(entry(entries, "urdf"), "multibody.urdf",
+                      "the URDF file of the robot folder (a file name: " + name + ")", source);
+  out.left_sole_frame = readName(entry(entries, "left_sole_frame"), "multibody.left_sole_frame",
+                                 "the URDF link on the left sole (" + name + ")", source);
+  out.right_sole_frame = readName(entry(entries, "right_sole_frame"),
+                                  "multibody.right_sole_frame",
+                                  "the URDF link on the right sole (" + name + ")", source);
+  out.standing_posture = present(entries, "standing_posture")
+                             ? readName(entry(entries, "standing_posture"),
+                                        "multibody.standing_posture",
+                                        "an SRDF <group_state> name (" + name + ")", source)
+                             : std::string("half_sitting");
+  if (out.left_sole_frame == out.right_sole_frame) {
+    source.fail("multibody.right_sole_frame", "a link other than left_sole_frame",
+                entry(entries, "right_sole_frame"));
+  }
+  return out;
+}
+
 std::vector<std::string> knownRobots(const std::string& robots_dir) {
   std::vector<std::string> names;
   std::error_code ec;
@@ -302,13 +332,16 @@ Robot loadRobot(const std::string& robot_file) {
   const YAML::Node root = parseYamlText(text, robot_file);
   std::vector<std::string> keys = walkingFieldNames();
   keys.push_back("mass");
+  keys.push_back("multibody");
   const Entries entries =
-      readMap(root, "", keys, "a map of walking parameters (robots/README)", source);
+      readMap(root, "", keys, "a map of walking parameters (docs/robots.md)", source);
   Robot robot;
   readWalkingFields(entries, "", /*require_all=*/true, source, &robot.walking);
   robot.nodes = entries;
   robot.nodes.erase("mass");
+  robot.nodes.erase("multibody");
   robot.mass = readPositive(entry(entries, "mass"), "mass", "a positive mass in kg", source);
+  if (present(entries, "multibody")) robot.multibody = readMultibody(entry(entries, "multibody"), source);
   cached_file = robot_file;
   cached_text = text;
   cached = robot;
@@ -316,3 +349,17 @@ Robot loadRobot(const std::string& robot_file) {
 }
 
 }  // namespace wpg::datasets::detail
+
+namespace wpg::datasets {
+
+RobotFile loadRobotFile(const std::string& path) {
+  const detail::Robot robot = detail::loadRobot(path);
+  try {
+    robot.walking.validate();
+  } catch (const std::invalid_argument& error) {
+    detail::Source(path).failChecked(error.what());
+  }
+  return {robot.walking, robot.mass, robot.multibody};
+}
+
+}  // namespace wpg::datasets

@@ -12,6 +12,7 @@
 #include "wpg/preview_control.hpp"
 #include "wpg/walk_request.hpp"
 #include "wpg/walking_parameters.hpp"
+#include "wpg/datasets/input/robot_multibody.hpp"
 #include "wpg/datasets/input/yaml_input.hpp"
 
 namespace wpg::datasets::detail {
@@ -39,12 +40,16 @@ std::vector<Obstacle> readObstacles(const YAML::Node& node, const Source& source
 struct Robot {
   WalkingParameters walking;
   double mass = 0.0;
+  RobotMultibody multibody;  // `multibody:` (present false without it)
   Entries nodes;  // the file's walking parameters as YAML, merged under the scenario's
 };
 
+// `multibody:` of walking.yaml (robot_multibody.hpp).
+RobotMultibody readMultibody(const YAML::Node& node, const Source& source);
 // The folders of `robots_dir` that hold a walking.yaml, sorted.
 std::vector<std::string> knownRobots(const std::string& robots_dir);
-// Reads a robot's walking.yaml: every walking parameter and `mass`, nothing else.
+// Reads a robot's walking.yaml: every walking parameter, `mass` and the optional `multibody:`
+// map, nothing else.
 Robot loadRobot(const std::string& robot_file);
 
 }  // namespace wpg::datasets::detail

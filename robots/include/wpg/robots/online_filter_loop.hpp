@@ -36,6 +36,7 @@
 #include "wpg/multibody_validation.hpp"
 #include "wpg/preview_control.hpp"
 #include "wpg/robots/robot_model.hpp"
+#include "wpg/robots/walking_ik.hpp"
 #include "wpg/walk_generator.hpp"
 #include "wpg/walk_loop.hpp"
 #include "wpg/walk_request.hpp"
@@ -59,6 +60,8 @@ struct OnlineFilterLoopSettings {
   // the CoM state sent to the robot (its own + the correction it has not absorbed yet), the
   // filter running on. Not with reinitialize_wpg (std::invalid_argument).
   bool closed_loop = false;
+  // The walking IK's frames and posture (the robot folder's `multibody:`; HRP-2's by default).
+  WalkingIkSettings ik;
 };
 
 struct OnlineFilterRun {

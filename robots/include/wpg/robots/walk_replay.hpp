@@ -6,6 +6,7 @@
 #include "wpg/multibody_validation.hpp"
 #include "wpg/preview_control.hpp"
 #include "wpg/robots/robot_model.hpp"
+#include "wpg/robots/walking_ik.hpp"
 #include "wpg/walk_request.hpp"
 #include "wpg/walk_trajectory.hpp"
 #include "wpg/walking_parameters.hpp"
@@ -18,6 +19,8 @@ struct WalkReplaySettings {
   // Threads of the validation replay (Simbody, MultibodyReplaySettings::threads): the same
   // results for any count; 1 where a caller runs one walk per core.
   int threads = 1;
+  // The walking IK's frames and posture (the robot folder's `multibody:`; HRP-2's by default).
+  WalkingIkSettings ik;
 };
 
 // Throws std::invalid_argument when the walk's sample counts are inconsistent or it has

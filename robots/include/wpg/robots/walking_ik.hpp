@@ -1,11 +1,18 @@
 #pragma once
-// Whole-body inverse kinematics for walking (HRP-2-like legs): the feet follow their targets
-// exactly through an analytic 6-DoF leg IK, the upper body keeps a reference posture (SRDF
-// "half_sitting"), the waist (root link) keeps roll = pitch = 0 and the requested yaw, and its
-// position is found by Newton iterations so that the WHOLE-BODY centre of mass equals the
-// requested CoM (the pattern generator's CoM), with the analytic Jacobian of comAtWaist().
+// Whole-body inverse kinematics for walking: the feet follow their targets exactly through a
+// leg IK, the upper body keeps a reference posture (SRDF "half_sitting"), the waist (root link)
+// keeps roll = pitch = 0 and the requested yaw, and its position is found by Newton iterations
+// so that the WHOLE-BODY centre of mass equals the requested CoM (the pattern generator's CoM),
+// with the analytic Jacobian of comAtWaist() (forward differences when a leg is numerical).
 //
-// Leg structure required by the analytic IK (checked at construction, HRP-2's): from the root,
+// Each leg is the chain of six or more actuated joints from the root to its sole frame, with
+// nothing else hanging from it. A leg of HRP-2's structure (below) is solved in closed form;
+// any other (hip axes that do not meet, a seventh joint, a rotated sole frame) by
+// NumericalLegIk (damped least squares with the joint limits, from the reference posture's
+// angles; joints beyond six held at the reference posture: lockedLegJoints), whose angles are
+// the closed form's on HRP-2 within 1e-10 rad (tested).
+//
+// Leg structure of the analytic IK (HRP-2's): from the root,
 // six revolute joints with axes z, x, y, y, y, x (hip yaw, hip roll, hip pitch, knee, ankle
 // pitch, ankle roll) and identity joint-frame rotations; the three hip axes intersect (hip roll
 // and pitch origins at 0), the knee origin is (0, y_k, -thigh), the ankle pitch origin
@@ -18,11 +25,13 @@
 // (one WalkingIk may serve several threads). The RobotModel must outlive the WalkingIk.
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include <Eigen/Core>
 
+#include "wpg/robots/numerical_leg_ik.hpp"
 #include "wpg/robots/robot_model.hpp"
 #include "wpg/walk_trajectory.hpp"
 
@@ -37,6 +46,7 @@ struct WalkingIkSettings {
   double jacobian_step = 1e-6;   // [m] forward-difference step of the CoM / waist Jacobian when
                                  // a leg is out of reach (else the Jacobian is analytic)
   double joint_limit_tolerance = 1e-9;  // [rad or m] a joint beyond its limit by more is reported
+  bool numerical_legs = false;  // solve every leg with NumericalLegIk, even HRP-2-like ones
 };
 
 struct WalkingIkTarget {
@@ -83,14 +93,17 @@ class WalkingIk {
   enum Side { kLeft = 0, kRight = 1 };
   using LegAngles = Eigen::Matrix<double, 6, 1>;
 
-  // Throws std::invalid_argument when the legs do not have the structure above, a frame or the
+  // Throws std::invalid_argument when a leg has fewer than six joints (or more than
+  // NumericalLegIk::kMaxLegJoints) or a branch, the legs share a joint, a frame or the
   // reference posture is unknown, or the robot has more than 64 joints.
   explicit WalkingIk(const RobotModel& model, WalkingIkSettings settings = {});
 
   const RobotModel& model() const { return model_; }
   const WalkingIkSettings& settings() const { return settings_; }
-  // Configuration indices (into q) of the six joints of a leg, hip yaw first.
-  const std::array<int, 6>& legConfigurationIndices(Side side) const { return legs_[side].q_index; }
+  // Whether a leg is solved in closed form (HRP-2's structure) or by NumericalLegIk.
+  bool analyticLeg(Side side) const { return legs_[side].analytic; }
+  // Configuration indices (into q) of the joints of a leg, from the root.
+  const std::vector<int>& legConfigurationIndices(Side side) const { return legs_[side].chain_q; }
   // The reference posture the upper body holds, root at the origin.
   const Eigen::VectorXd& referenceConfiguration() const { return reference_; }
 
@@ -99,7 +112,7 @@ class WalkingIk {
   // std::invalid_argument for a wrong q size or a non-finite target.
   WalkingIkResult solve(const WalkingIkTarget& target, Eigen::Ref<Eigen::VectorXd> q) const;
 
-  // Analytic leg IK: joint angles (hip yaw ... ankle roll) that put the sole frame at `sole`
+  // Analytic leg IK (analytic legs only: std::logic_error otherwise): joint angles (hip yaw ... ankle roll) that put the sole frame at `sole`
   // (world) with the root at `waist` (world). Returns false when the target is out of reach;
   // the angles then straighten the knee towards it (and the sole misses its target).
   bool solveLeg(Side side, const Pose& waist, const Pose& sole, LegAngles& angles) const;
@@ -111,7 +124,8 @@ class WalkingIk {
   // total mass, I + (1 / M) sum over the legs of G D, where D = d(leg angles) / d(waist position)
   // = -J^-1 (I; 0) (J: the 6 x 6 sole Jacobian of the leg angles; the soles are held) and G
   // column i = a_i x sum_{k >= i} m_k (x_k - o_i) (joint axis a_i through o_i, leg body CoMs
-  // x_k). Meaningful while both feet are reachable (a straight knee makes J singular).
+  // x_k). Meaningful while both feet are reachable (a straight knee makes J singular); NaN
+  // when a leg is numerical.
   Eigen::Vector3d comAtWaist(const WalkingIkTarget& target, const Eigen::Vector3d& waist_position,
                              Eigen::Matrix3d* jacobian = nullptr) const;
 
@@ -143,6 +157,10 @@ class WalkingIk {
 
  private:
   struct Leg {
+    bool analytic = true;          // HRP-2's structure: the closed form; else NumericalLegIk
+    std::vector<int> chain_body;   // body indices of the leg's joints, from the root
+    std::vector<int> chain_q;      // their indices into q
+    // The analytic leg's geometry (when `analytic`):
     std::array<int, 6> body{};     // body indices, hip yaw first
     std::array<int, 6> q_index{};  // indices into q
     std::array<Eigen::Vector3d, 6> origin{};  // joint origins in the parent body frame
@@ -162,9 +180,20 @@ class WalkingIk {
     double ratio = 0, c3 = 1, a = 0, b = 0;     // acos arguments; the knee's (a, b)
     double m01 = 0, m11 = 1, m21 = 0, m20 = 0, m22 = 1;  // the hip's rotation entries
     void angles(LegAngles& q) const;
+    NumericalLegIk::Angles numeric;  // a numerical leg's angles, from the root
   };
 
   Leg makeLeg(const std::string& sole_frame) const;
+  // The analytic geometry of `leg` (chain filled); false (with `why`) when it is not HRP-2's.
+  bool makeAnalyticLeg(const Frame& sole, Leg& leg, std::string& why) const;
+  // A numerical leg of more than six joints keeps the extra ones at the reference posture
+  // (the solution is then unique near it): those whose columns the Jacobian there needs least.
+  static std::vector<int> lockedLegJoints(const NumericalLegIk& leg,
+                                          const Eigen::VectorXd& reference);
+  // A numerical leg's IK for the root at `waist`, from the reference posture's angles: its
+  // angles into `out`, its bodies' mass moment added to `moment`, the sole it reaches.
+  bool solveNumericalLeg(Side side, const Pose& waist, const Pose& sole, LegSolution& out,
+                         Eigen::Vector3d& moment, Pose& reached) const;
   bool solveLegCosines(Side side, const Pose& waist, const Pose& sole, LegSolution& out) const;
   // solve() with the initial waist position target.com - Rz(waist_yaw) com_offset.
   WalkingIkResult solveFrom(const WalkingIkTarget& target, const Eigen::Vector3d& com_offset,
@@ -183,7 +212,9 @@ class WalkingIk {
   const RobotModel& model_;
   WalkingIkSettings settings_;
   std::array<Leg, 2> legs_;
-  std::array<std::array<LegMassPoint, 6>, 2> leg_mass_{};
+  std::array<std::vector<LegMassPoint>, 2> leg_mass_;  // per leg body, from the root
+  std::array<std::shared_ptr<const NumericalLegIk>, 2> numerical_;  // numerical legs only
+  std::array<NumericalLegIk::Angles, 2> numerical_start_;  // their reference posture angles
   Eigen::VectorXd reference_;          // reference posture, root at the origin
   double upper_mass_ = 0.0;            // every body but the legs
   Eigen::Vector3d upper_com_ = Eigen::Vector3d::Zero();  // in the root frame

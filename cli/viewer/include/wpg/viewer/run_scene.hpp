@@ -17,7 +17,7 @@ struct LoadedRun {
   datasets::StoredRun stored;
   datasets::StoredRunScene scene;
   datasets::Scenario scenario;  // the stored scenario, loaded again (obstacles, pushes, feet)
-  std::string urdf;             // robots/<robot>/<robot>.urdf, empty when there is none
+  std::string urdf;             // the robot folder's multibody.urdf, empty when there is none
 };
 
 // Reads /runs/<run_name> of `path` (empty name: the file's only run), and the robot's URDF

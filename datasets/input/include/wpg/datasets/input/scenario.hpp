@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "wpg/datasets/input/input_error.hpp"
+#include "wpg/datasets/input/robot_multibody.hpp"
 #include "wpg/dynamic_filter.hpp"
 #include "wpg/preview_control.hpp"
 #include "wpg/walk_goal.hpp"
@@ -19,6 +20,9 @@ struct Scenario {
   std::string name;         // `name:`, also the HDF5 group /runs/<name>
   std::string robot;        // `robot:`, a folder of the robots directory
   std::string source_path;  // the scenario file, as given to loadScenario
+  // The robot's multibody model (walking.yaml's `multibody:`): not part of resolved_yaml, a
+  // stored run finds it again in its robot's folder.
+  RobotMultibody multibody;
   // The robot's walking.yaml, then the scenario's `walking:` map, then the overrides.
   wpg::WalkingParameters walking;
   // duration, reference, pushes, generator; robot_mass from the robot's `mass` unless the
