@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "alloc_counter.hpp"
+#include "hrp2_model.hpp"
 #include "wpg/robots/momentum_zmp.hpp"
 #include "wpg/robots/multibody_replay.hpp"
 #include "wpg/robots/robot_model.hpp"
@@ -23,10 +24,7 @@ using wpg::robots::RobotModel;
 constexpr double kGravity = 9.81;
 constexpr double kDt = 0.005;
 
-const RobotModel& hrp2() {
-  static const RobotModel model(std::string(WPG_SOURCE_DIR) + "/robots/hrp2/hrp2.urdf");
-  return model;
-}
+using wpg_test::hrp2;
 
 // 0.4 s of a motion far from walking: the base translates, turns about a tilted axis and
 // accelerates; every joint swings (amplitude 0.3 rad, its own frequency and phase), or only

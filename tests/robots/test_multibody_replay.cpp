@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "alloc_counter.hpp"
+#include "hrp2_model.hpp"
 #include "wpg/robots/multibody_replay.hpp"
 #include "wpg/robots/robot_model.hpp"
 #include "wpg/robots/walking_ik.hpp"
@@ -24,10 +25,7 @@ using wpg::robots::WalkingIk;
 constexpr double kGravity = 9.81;
 constexpr double kDt = 0.005;
 
-const RobotModel& hrp2() {
-  static const RobotModel model(std::string(WPG_SOURCE_DIR) + "/robots/hrp2/hrp2.urdf");
-  return model;
-}
+using wpg_test::hrp2;
 
 Eigen::MatrixXd repeatRows(const Eigen::VectorXd& q, int n) {
   return q.transpose().replicate(n, 1);

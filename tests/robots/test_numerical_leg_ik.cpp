@@ -10,6 +10,7 @@
 
 #include "alloc_counter.hpp"
 #include "generated_legs.hpp"
+#include "hrp2_model.hpp"
 #include "wpg/robots/numerical_leg_ik.hpp"
 #include "wpg/robots/robot_model.hpp"
 #include "wpg/robots/walking_ik.hpp"
@@ -21,17 +22,9 @@ using wpg::robots::Pose;
 using wpg::robots::RobotModel;
 using wpg::robots::WalkingIk;
 
-const RobotModel& hrp2() {
-  static const RobotModel model(std::string(WPG_SOURCE_DIR) + "/robots/hrp2/hrp2.urdf");
-  return model;
-}
+using wpg_test::hrp2;
 
-Eigen::Matrix3d rpy(double roll, double pitch, double yaw) {
-  return (Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()) *
-          Eigen::AngleAxisd(pitch, Eigen::Vector3d::UnitY()) *
-          Eigen::AngleAxisd(roll, Eigen::Vector3d::UnitX()))
-      .toRotationMatrix();
-}
+using wpg_test::rpy;
 
 double rotationDistance(const Eigen::Matrix3d& a, const Eigen::Matrix3d& b) {
   return Eigen::AngleAxisd(a * b.transpose()).angle();

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "alloc_counter.hpp"
+#include "hrp2_model.hpp"
 #include "wpg/robots/robot_model.hpp"
 #include "wpg/robots/walking_ik.hpp"
 
@@ -18,17 +19,9 @@ using wpg::robots::WalkingIk;
 using wpg::robots::WalkingIkStatus;
 using wpg::robots::WalkingIkTarget;
 
-const RobotModel& hrp2() {
-  static const RobotModel model(std::string(WPG_SOURCE_DIR) + "/robots/hrp2/hrp2.urdf");
-  return model;
-}
+using wpg_test::hrp2;
 
-Eigen::Matrix3d rpy(double roll, double pitch, double yaw) {
-  return (Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()) *
-          Eigen::AngleAxisd(pitch, Eigen::Vector3d::UnitY()) *
-          Eigen::AngleAxisd(roll, Eigen::Vector3d::UnitX()))
-      .toRotationMatrix();
-}
+using wpg_test::rpy;
 
 TEST(WalkingIk, LegGeometryIsHrp2s) {
   const WalkingIk ik(hrp2());
