@@ -54,8 +54,10 @@ TEST(CorridorFamily, JacobianMatchesCentralDifferencesAndRowsAreTheWalls) {
       for (int j = 0; j < L.horizon; ++j) {
         const double zy = (P.cop_state * problem.com_y + P.cop_jerk * U.segment(L.jerkY(),
                                                                                 L.horizon))(j);
-        EXPECT_NEAR(g(wpg::CorridorRows::copRow(j, true)), zy - 0.25, 1e-12);
-        EXPECT_NEAR(g(wpg::CorridorRows::copRow(j, false)), -0.35 - zy, 1e-12);
+        // the CoP held kCorridorCopMargin inside the walls
+        constexpr double m = wpg::kCorridorCopMargin;
+        EXPECT_NEAR(g(wpg::CorridorRows::copRow(j, true)), zy - (0.25 - m), 1e-12);
+        EXPECT_NEAR(g(wpg::CorridorRows::copRow(j, false)), -0.35 + m - zy, 1e-12);
       }
       for (int i = 0; i < L.steps; ++i) {
         const double y = U(L.stepY() + i);
@@ -170,9 +172,11 @@ TEST(ExtensionRegistry, ListsWpgsOwnWithTheirParametersAndUnits) {
   for (const auto& spec : wpg::registeredConstraintFamilies()) {
     if (spec.name != "corridor") continue;
     corridor = true;
-    ASSERT_EQ(spec.parameters.size(), 2u);
+    ASSERT_EQ(spec.parameters.size(), 3u);
     EXPECT_EQ(spec.parameters[0].name, "left");
     EXPECT_EQ(spec.parameters[0].unit, "m");
+    EXPECT_EQ(spec.parameters[2].name, "cop_margin");
+    EXPECT_FALSE(spec.parameters[2].required);
   }
   for (const auto& spec : wpg::registeredCostTerms()) {
     if (spec.name != "look_at") continue;

@@ -10,8 +10,9 @@ def test_families_and_costs_list_wpgs_own_with_units():
     families = {f["name"]: f for f in wpg.families()}
     costs = {c["name"]: c for c in wpg.costs()}
     corridor = {p["name"]: p for p in families["corridor"]["parameters"]}
-    assert set(corridor) == {"left", "right"}
+    assert set(corridor) == {"left", "right", "cop_margin"}
     assert corridor["left"]["unit"] == "m" and corridor["left"]["required"]
+    assert corridor["cop_margin"]["default"] == 0.005 and not corridor["cop_margin"]["required"]
     look_at = {p["name"]: p for p in costs["look_at"]["parameters"]}
     assert look_at["x"]["unit"] == "m"
     assert look_at["weight"]["unit"] == "1/rad^2" and look_at["weight"]["default"] == 100.0

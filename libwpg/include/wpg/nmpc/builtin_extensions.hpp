@@ -3,7 +3,7 @@
 // usable from scenario files (`constraints:`, `costs:`; datasets/SCENARIOS.md):
 //
 //   name       kind               parameters [unit]             rows / residuals
-//   corridor   constraint family  left, right [m]               2 per CoP sample, 2 per step
+//   corridor   constraint family  left, right, cop_margin [m]   2 per CoP sample, 2 per step
 //   look_at    cost term          x, y [m], weight [1/rad^2]    1 per previewed step
 #include <memory>
 
@@ -13,7 +13,8 @@ namespace wpg {
 
 // Corridor between two walls along the world x axis, y = left and y = right (left > right):
 // every previewed CoP sample and every free previewed step centre stays between them. Rows:
-// per CoP sample j, z_y - left <= 0 then right - z_y <= 0; then per previewed step i,
+// per CoP sample j, z_y - (left - m) <= 0 then right + m - z_y <= 0 (m: cop_margin); then per
+// previewed step i,
 // F_y - left <= 0 then right - F_y <= 0 (a fixed step's rows are inactive, g = -1). Linear in
 // U (z_y = Pzs c_hat_y + Pzu jerk_y, eq. 3). Relaxation group: obstacle. A wall is an
 // obstacle: an infeasible QP gives it up before the feet's kinematics and the balance, and
@@ -25,8 +26,12 @@ struct CorridorRows {
     return 2 * horizon + 2 * step + (left ? 0 : 1);
   }
 };
-std::unique_ptr<ConstraintFamily> makeCorridorConstraint(double left, double right);
-// Parameters left and right [m]; the check refuses left - right below the robot's least step
+// The CoP rows hold it cop_margin [m] inside the walls (the CoP between two NMPC samples bulges
+// past the samples' line: 1.3 mm measured on corridor.yaml without a margin).
+constexpr double kCorridorCopMargin = 0.005;
+std::unique_ptr<ConstraintFamily> makeCorridorConstraint(double left, double right,
+                                                         double cop_margin = kCorridorCopMargin);
+// Parameters left, right and cop_margin [m]; the check refuses left - right below the robot's least step
 // width (WalkingParameters::leastStepWidth, wider than its sole): no two feet fit between.
 ConstraintFamilySpec corridorConstraintSpec();
 
