@@ -220,8 +220,27 @@ TEST(ExtensionRegistry, ChecksNamesParametersAndTheRobot) {
   std::tie(parameter, message) = errorOf("corridor", {{"left", 0.05}, {"right", -0.05}});
   EXPECT_EQ(parameter, "left");
   EXPECT_NE(message.find("at least 0.2 m"), std::string::npos) << message;
+  // Wide enough for two feet, but not for the first step: the feet start 0.19 m apart
+  // (initial_foot_separation), so a left step from the right foot lands at y >= 0.105 m and a
+  // right step from the left foot at y <= -0.105 m. Either foot may be the first to swing
+  // (the command, a push), so both must fit. [-0.1, 0.1] used to be accepted and the robot
+  // fell; [-0.1, 0.11] walks only while the left foot swings first.
+  std::tie(parameter, message) = errorOf("corridor", {{"left", 0.1}, {"right", -0.1}});
+  EXPECT_EQ(parameter, "left");
+  EXPECT_NE(message.find("first step"), std::string::npos) << message;
   std::tie(parameter, message) = errorOf("corridor", {{"left", 0.11}, {"right", -0.1}});
+  EXPECT_EQ(parameter, "right");
+  EXPECT_NE(message.find("first step"), std::string::npos) << message;
+  std::tie(parameter, message) = errorOf("corridor", {{"left", 0.105}, {"right", -0.105}});
   EXPECT_EQ(parameter, "<none>") << message;
+  {
+    // Turned a quarter turn the feet stand along x: a step may go either way across, so a
+    // corridor of the least width holds the first step whichever foot takes it.
+    ExtensionContext turned;
+    turned.start_pose = Eigen::Vector3d(0.0, 0.0, M_PI / 2);
+    EXPECT_NO_THROW(wpg::checkConstraintFamily("corridor", {{"left", 0.1}, {"right", -0.1}},
+                                               turned));
+  }
   std::tie(parameter, message) = errorOf("look_at", {{"x", 0.05}, {"y", 0.0}}, false);
   EXPECT_EQ(parameter, "x");
   EXPECT_NE(message.find("sole length"), std::string::npos) << message;

@@ -1,5 +1,8 @@
 // The corridor constraint family (wpg/nmpc/builtin_extensions.hpp): CoP samples and step
 // centres between two walls y = right and y = left.
+#include <algorithm>
+#include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "wpg/nmpc/builtin_extensions.hpp"
@@ -86,6 +89,47 @@ std::string metres(double value) {
   return text.str();
 }
 
+// The walls must leave room for the first step of either foot: the feet start
+// initial_foot_separation apart, which may be less than the least step width (HRP-2: 0.19 m
+// against 0.2 m), so a corridor just wider than leastStepWidth can still hold no first step
+// (both feet would have to move out before either may land). Which foot swings first
+// depends on the command and on pushes, so both must fit. A step lands in the feasibility
+// polygon of the support foot's frame, the start yaw here; its lowest (left step) or highest
+// (right step) world y is at one of the polygon's vertices, the polygon being convex.
+void checkFirstStepFits(double left, double right, const ExtensionContext& context) {
+  const WalkingParameters& w = context.walking;
+  const double yaw = context.start_pose.z();
+  const double c = std::cos(yaw), s = std::sin(yaw);
+  const double half = 0.5 * w.initial_foot_separation;
+  // Start feet (world y): the left foot at +half along the robot's y axis.
+  const double left_foot = context.start_pose.y() + c * half;
+  const double right_foot = context.start_pose.y() - c * half;
+  double left_step_lowest = std::numeric_limits<double>::infinity();
+  for (const Eigen::Vector2d& v : w.feasibilityVertices(FootSide::kLeft)) {
+    left_step_lowest = std::min(left_step_lowest, right_foot + s * v.x() + c * v.y());
+  }
+  double right_step_highest = -std::numeric_limits<double>::infinity();
+  for (const Eigen::Vector2d& v : w.feasibilityVertices(FootSide::kRight)) {
+    right_step_highest = std::max(right_step_highest, left_foot + s * v.x() + c * v.y());
+  }
+  constexpr double kRounding = 1e-9;  // metres: 0.2 - 0.095 is not 0.105 in doubles
+  if (left < left_step_lowest - kRounding) {
+    throw ExtensionError("left", "expected a left wall at y >= " + metres(left_step_lowest) +
+                                     ": the first step of the left foot lands there at the "
+                                     "nearest (the feet start " +
+                                     metres(w.initial_foot_separation) + " apart), got " +
+                                     metres(left));
+  }
+  if (right > right_step_highest + kRounding) {
+    throw ExtensionError("right", "expected a right wall at y <= " +
+                                      metres(right_step_highest) +
+                                      ": the first step of the right foot lands there at the "
+                                      "nearest (the feet start " +
+                                      metres(w.initial_foot_separation) + " apart), got " +
+                                      metres(right));
+  }
+}
+
 }  // namespace
 
 std::unique_ptr<ConstraintFamily> makeCorridorConstraint(double left, double right,
@@ -123,6 +167,7 @@ ConstraintFamilySpec corridorConstraintSpec() {
       throw ExtensionError("left", "expected walls on either side of the walk's start (y = " +
                                        metres(y) + ")");
     }
+    checkFirstStepFits(a.at("left"), a.at("right"), context);
   };
   spec.make = [](const ExtensionArguments& a, const ExtensionContext&) {
     return std::shared_ptr<const ConstraintFamily>(

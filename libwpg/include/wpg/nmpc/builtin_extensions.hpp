@@ -32,7 +32,8 @@ constexpr double kCorridorCopMargin = 0.005;
 std::unique_ptr<ConstraintFamily> makeCorridorConstraint(double left, double right,
                                                          double cop_margin = kCorridorCopMargin);
 // Parameters left, right and cop_margin [m]; the check refuses left - right below the robot's least step
-// width (WalkingParameters::leastStepWidth, wider than its sole): no two feet fit between.
+// width (WalkingParameters::leastStepWidth, wider than its sole): no two feet fit between;
+// and walls that leave either start foot no room for its first step.
 ConstraintFamilySpec corridorConstraintSpec();
 
 // Keep each previewed step's yaw towards the point (x, y): residual sqrt(weight) *
