@@ -7,8 +7,8 @@
 namespace wpg::datasets {
 
 // Scenario, study and robot files: regular files of at most this size, read with this cap
-// (a device such as /dev/zero or a FIFO would never end). The largest shipped file (the robot's
-// walking.yaml) is 6.4 kB; 100 000 circles, one flow map a line, take 5.9 MB.
+// (a device such as /dev/zero or a FIFO would never end). The largest shipped file (the study
+// obstacle_scenes.yaml) is 74 kB; 100 000 circles, one flow map a line, take 5.9 MB.
 constexpr std::size_t kMaxInputFileBytes = 16u << 20;  // 16 MiB
 
 // Names and indices in a --set key (`a.b[2].c` has 4): assigning a path walks it recursively.
