@@ -1,6 +1,7 @@
 #include "wpg/pattern_generator.hpp"
 
 #include <algorithm>
+#include <stdexcept>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -18,6 +19,13 @@ namespace {
 NmpcModel makeModel(const WalkingParameters& parameters, const GeneratorSettings& settings,
                     const ConstraintFamilies& extra_families,
                     qp::HessianFactorCache& hessian_factors) {
+  // The LMPC baseline fixes the step yaws in its own orientation QP before the position QP
+  // (Herdt et al. 2010), so a cost term on the steps would act on their positions alone: a
+  // look-at point then drags the feet sideways instead of turning them.
+  if (settings.algorithm == GeneratorAlgorithm::kLmpc && !settings.costs.empty()) {
+    throw std::invalid_argument("GeneratorSettings::costs: expected none with the lmpc "
+                                "algorithm (its step yaws are fixed before the position QP)");
+  }
   NmpcModel model(parameters, settings.max_obstacles_in_qp, &hessian_factors);
   for (const auto& family : extra_families) model.addConstraintFamily(family);
   // The registered extensions the settings name (extension_registry.hpp), for each cadence's

@@ -271,6 +271,12 @@ TEST(ExtensionRegistry, RegistersNewOnesOnceByName) {
   wpg::PatternGenerator generator(WalkingParameters(), settings);
   EXPECT_EQ(generator.model().costTermCount(), 1);
   EXPECT_EQ(generator.model().residualCount(), generator.model().layout().steps);
+  // The LMPC baseline plans the yaws before the positions: a cost term on the steps would
+  // move them instead of turning them, so the generator refuses it.
+  settings.algorithm = wpg::GeneratorAlgorithm::kLmpc;
+  EXPECT_THROW(wpg::PatternGenerator(WalkingParameters(), settings), std::invalid_argument);
+  settings.costs.clear();
+  EXPECT_NO_THROW(wpg::PatternGenerator(WalkingParameters(), settings));
 }
 
 }  // namespace

@@ -125,6 +125,12 @@ Scenario loadScenarioTree(YAML::Node root, const std::string& path,
         entry(entries, "constraints"), ExtensionKind::kConstraint, scenario.walking, source);
     scenario.request.generator.costs = readExtensions(entry(entries, "costs"),
                                                       ExtensionKind::kCost, scenario.walking, source);
+    if (scenario.request.generator.algorithm == GeneratorAlgorithm::kLmpc &&
+        !scenario.request.generator.costs.empty()) {
+      source.failWith("costs", "expected no cost terms with generator.algorithm lmpc: that "
+                               "baseline fixes the step yaws in its own QP first, so a cost "
+                               "would move the steps, not turn them (use algorithm nmpc)");
+    }
     // A goal replaces the velocity command: the path follower gives it.
     const bool has_goal = present(entries, "goal");
     if (has_goal && entry(entries, "reference").IsDefined()) {
