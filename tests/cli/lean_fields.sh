@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# lean_fields.sh WPG STUDY: lean runs (a study's `fields:`, `wpg batch --fields`;
+# lean_fields.sh WPG STUDY [MPIRUN]: lean runs (a study's `fields:`, `wpg batch --fields`;
 # datasets/SCHEMA.md, "Lean runs"):
 #  - STUDY's 48 walks of 10 s with --fields summary,footsteps store at most 20 KB a run (the
 #    batch file's size over its runs) and only those fields; with summary,com,footsteps,mpc
@@ -7,13 +7,15 @@
 #    wall times, and the study's `fields:` gives the same file as --fields;
 #  - a lean run read as a walk (wpg view) is one line naming what it lacks (wpg.load_run:
 #    tests/python/test_lean_runs.py);
+#  - under mpirun (MPIRUN given), the lean study's index is the lean -j 2 batch, bit for bit
+#    but the wall times;
 #  - bad input is one line naming the file or option, exit 2, nothing written: a field that
 #    does not exist (with did-you-mean), fields without summary, a lean slice merged with a
 #    full one, --resume with other fields (the file left as it was).
 set -euo pipefail
 # shellcheck source=common.sh
 source "$(dirname "$0")/common.sh"
-wpg="$1"; study="$2"
+wpg="$1"; study="$2"; mpirun="${3:-}"
 make_workdir
 cd "$WORKDIR"
 
@@ -76,6 +78,13 @@ for lean_file, names in ((lean, {"footsteps", "footstep_side", "footstep_lift_of
 subset(key["runs"], lean["runs"], "/runs")
 subset(lean["runs"], key["runs"], "/runs")
 PY
+
+if [[ -n "$mpirun" ]]; then
+  OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 "$mpirun" --oversubscribe -np 2 \
+    "$wpg" batch "$study" -o mpi/lean.h5 --no-plot --fields summary,footsteps >stdout 2>stderr ||
+    fail "mpirun -np 2 --fields: exit $? ($(cat stderr))"
+  "$PYTHON" "$HERE/compare_batch_files.py" lean.h5 mpi/lean.h5 || fail "lean under MPI differs"
+fi
 
 # Read as a walk: one line saying what the lean run lacks.
 expect_refusal "is a lean run (fields summary, footsteps): it lacks com, cop, feet, mpc" page.html \
