@@ -50,6 +50,8 @@ int reportBatchFile(const std::string& batch_file, const engine::BatchSummaryFil
 
 int batchCommand(const BatchOptions& options) {
   engine::StudyRequest request = studyRequestOf(options);
+  if (!options.fields.empty()) request.fields = datasets::splitFieldList(options.fields);
+  request.names.fields = "--fields";
   StudyProgress progress;
   const engine::BatchStudyResult result = engine::runBatchStudy(request, progress);
   if (result.complete) return reportBatchFile(options.output, result.summary, options.plot);

@@ -48,6 +48,7 @@ struct BatchOptions {
   bool plot = true;
   std::string shard;           // --shard K/N, empty: the whole study
   bool threads_given = false;  // -j on the command line (under MPI the default is 1 per rank)
+  std::string fields;          // --fields summary,footsteps; empty: the study's fields:
 };
 int batchCommand(const BatchOptions& options);
 

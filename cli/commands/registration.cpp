@@ -164,6 +164,11 @@ void registerBatchCommand(CLI::App& app, CommandAction& action) {
                         "a shard file; join the shards with `wpg merge` (README, \"Running on a "
                         "cluster\")")
       ->type_name("K/N");
+  batch_app->add_option("--fields", batch.fields,
+                        "What each run stores, instead of the study's fields: (summary, com, cop, "
+                        "feet, footsteps, mpc, plan, obstacles, goal, multibody or all; "
+                        "datasets/SCHEMA.md, \"Lean runs\")")
+      ->type_name("F1,F2,...");
   setExitCodes(
       batch_app,
       "0 every run succeeded, 1 some walk failed (exit_status in the file says which), 2 bad "

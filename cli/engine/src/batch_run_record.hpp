@@ -7,10 +7,26 @@
 
 namespace wpg::engine {
 
+// Run `index` of `study` as an executor walks it: when the study's runs do not store the NMPC's
+// plans (a lean study without the field plan, run_fields.hpp), they are not recorded either.
+// Recording only copies what each iteration predicted (libwpg's walk_loop.cpp): the walk is the
+// same bits (tests/cli/lean_fields.sh), for about a fifth less CPU. The stored scenario is the
+// study's, unchanged.
+inline datasets::StudyRun studyRunToWalk(const datasets::Study& study, std::size_t index) {
+  datasets::StudyRun run = study.runs[index];
+  if (!study.fields.has(datasets::RunField::kPlan)) {
+    run.scenario.request.generator.record_plan = false;
+  }
+  return run;
+}
+
 // Points into `result` (and the replay's record it holds): lives no longer than `result`.
 class BatchRunRecordOf {
  public:
-  BatchRunRecordOf(const datasets::StudyRun& run, const RunResult& result) {
+  // `fields`: the study's (what the batch file's runs store).
+  BatchRunRecordOf(const datasets::StudyRun& run, const RunResult& result,
+                   datasets::RunFields fields) {
+    record_.fields = fields;
     if (result.replay) multibody_.emplace(multibodyRecordOf(*result.replay));
     record_.run = &run;
     record_.result = &result.walk.result;

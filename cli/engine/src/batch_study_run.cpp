@@ -28,6 +28,9 @@ BatchStudyResult runBatchStudy(const StudyRequest& request, StudyObserver& obser
     study = datasets::loadStudy(
         request.study, [](const std::string& base) { return resolveScenarioPath(base); },
         robotsDirectory(), request.jobs);
+    if (request.fields) {
+      study.fields = datasets::parseRunFields(*request.fields, request.names.fields);
+    }
     // One file's summary table holds at most kMaxBatchFileRuns rows: a larger study in slices.
     const std::size_t file_runs =
         request.shard ? sliceRuns(study, *request.shard) : study.runs.size();

@@ -72,6 +72,11 @@ std::vector<bool> prepareShardFolder(const datasets::Study& study, const StudyOu
                                  "), not '" + study.name + "' (fingerprint " + study.fingerprint +
                                  ") (files left as they are)");
     }
+    if (shard.fields != study.fields.text()) {
+      throw datasets::InputError(shard.path + ": cannot resume: its runs store the fields " +
+                                 shard.fields + ", this batch asks for " + study.fields.text() +
+                                 " (files left as they are)");
+    }
   }
   for (const std::string& file : damaged) {
     observer.movedDamagedFile(file, datasets::moveDamagedFileAside(file), true);
@@ -108,9 +113,9 @@ void runPulled(const datasets::Study& study, const RunSource& next, int threads,
           std::lock_guard<std::mutex> lock(mutex);
           if (error) return;
         }
-        const datasets::StudyRun run = study.runs[*index];
+        const datasets::StudyRun run = studyRunToWalk(study, *index);
         const RunResult result = runScenario(run.scenario, settings);
-        BatchRunRecordOf record(run, result);
+        BatchRunRecordOf record(run, result, study.fields);
         const datasets::PreparedRun prepared = datasets::BatchDatasetWriter::prepare(record.record());
         record.record().values = values(run, result);
         {

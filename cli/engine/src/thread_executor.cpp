@@ -140,10 +140,10 @@ class ThreadExecutor : public StudyExecutor {
         [&](std::size_t position, int worker) {
           RunSettings settings{robots_directory_, &models[static_cast<std::size_t>(worker)]};
           FinishedRun finished;
-          finished.run = study.runs[run_at(position)];
+          finished.run = studyRunToWalk(study, run_at(position));
           const datasets::StudyRun& run = finished.run;
           finished.result = runScenario(run.scenario, settings);
-          BatchRunRecordOf record(run, finished.result);
+          BatchRunRecordOf record(run, finished.result, study.fields);
           finished.prepared = datasets::BatchDatasetWriter::prepare(record.record());
           finished.values = handling.summary_values(run, finished.result);
           if (handling.report && handling.collect) {
@@ -153,7 +153,7 @@ class ThreadExecutor : public StudyExecutor {
         },
         [&](std::size_t, FinishedRun&& finished) {
           const datasets::StudyRun& run = finished.run;
-          BatchRunRecordOf record(run, finished.result);
+          BatchRunRecordOf record(run, finished.result, study.fields);
           record.record().values = std::move(finished.values);
           writer->write(record.record(), &finished.prepared);
           if (handling.report && handling.collect) {

@@ -133,9 +133,11 @@ std::vector<datasets::StoredRoutePlan> routePlans(const RunSession& run) {
 }
 
 StudyFiles runBatch(const std::string& study, const std::string& output, int jobs, bool resume,
-                    bool figure, const StopCheck& stop) {
+                    bool figure, const std::optional<std::vector<std::string>>& fields,
+                    const StopCheck& stop) {
   engine::StudyRequest request = studyRequest(study, output, jobs, figure);
   request.resume = resume;
+  request.fields = fields;
   StoppableObserver observer(stop);
   const engine::BatchStudyResult result = engine::runBatchStudy(request, observer);
   return {output, result.summary.runs, result.summary.failed_runs};

@@ -7,6 +7,7 @@
 // datasets::InputError whose one-line message names the file and the key.
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -76,8 +77,10 @@ struct StudyFiles {
   std::string batch_file;
   std::size_t runs = 0, failed_runs = 0;
 };
+// `fields` (--fields): what each run stores; none: the study's.
 StudyFiles runBatch(const std::string& study, const std::string& output, int jobs, bool resume,
-                    bool figure, const StopCheck& stop);
+                    bool figure, const std::optional<std::vector<std::string>>& fields,
+                    const StopCheck& stop);
 
 // `wpg compare STUDY -o FOLDER -j JOBS`: FOLDER/study.h5, summary.csv and summary.md; with
 // `figures`, the figures' paths are checked with them (the package draws them after). Call

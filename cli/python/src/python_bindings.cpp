@@ -472,14 +472,14 @@ PYBIND11_MODULE(_wpg, m) {
   m.def("check_stored_strings", &checkStoredStrings, py::arg("path"), py::arg("group") = "/");
   m.def("batch",
         [](const std::string& study, const std::string& output, int jobs, bool resume,
-           bool figure) {
+           bool figure, const std::optional<std::vector<std::string>>& fields) {
           const StudyFiles files = interruptible([&](const StopCheck& stop) {
-            return runBatch(study, output, jobs, resume, figure, stop);
+            return runBatch(study, output, jobs, resume, figure, fields, stop);
           });
           return py::make_tuple(files.batch_file, files.runs, files.failed_runs);
         },
         py::arg("study"), py::arg("output"), py::arg("jobs"), py::arg("resume"),
-        py::arg("figure"));
+        py::arg("figure"), py::arg("fields"));
   m.def("compare",
         [](const std::string& study, const std::string& folder, int jobs, bool figures) {
           const StudyFiles files = interruptible([&](const StopCheck& stop) {

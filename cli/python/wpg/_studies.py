@@ -7,19 +7,24 @@ from . import _wpg
 from .io import load_summary, load_compare_summary
 
 
-def batch(study, output, jobs=1, resume=False, plot=False):
+def batch(study, output, jobs=1, resume=False, plot=False, fields=None):
     """Runs a study (datasets/SCENARIOS.md, "Studies") as `wpg batch STUDY -o OUTPUT -j JOBS`:
     the engine's thread executor (the GIL released) writes OUTPUT (one group per run and
     /batch/summary, the same runs bit for bit whatever `jobs`) and OUTPUT.summary.csv/.md
     beside it; with plot=True also OUTPUT.summary.png (analysis/plot_batch.py). `resume`
-    finishes an interrupted OUTPUT of the same study (`--resume`).
+    finishes an interrupted OUTPUT of the same study (`--resume`). `fields` (`--fields`): what
+    each run stores, a list such as ["summary", "footsteps"] or "summary,footsteps"
+    (datasets/SCHEMA.md, "Lean runs"); None: the study's `fields:`, every field by default.
 
     Returns /batch/summary as a pandas.DataFrame (wpg.io.load_summary). Failed walks are rows
     with exit_status 1 (df.attrs["failed_runs"] counts them), not an exception; bad input
     raises wpg.InputError before anything is written.
     """
     study, output = os.fspath(study), os.fspath(output)
-    _file, _runs, failed = _wpg.batch(study, output, int(jobs), bool(resume), bool(plot))
+    if isinstance(fields, str):
+        fields = [name.strip() for name in fields.split(",")] if fields.strip() else []
+    fields = None if fields is None else [str(name) for name in fields]
+    _file, _runs, failed = _wpg.batch(study, output, int(jobs), bool(resume), bool(plot), fields)
     if plot:
         _draw("plot_batch.py", [output, "-o", os.path.splitext(output)[0] + ".summary.png"])
     table = load_summary(output)

@@ -14,6 +14,7 @@
 
 #include <H5Cpp.h>
 
+#include "batch_fields.hpp"
 #include "external_link_guard.hpp"
 #include "hdf5_bounded_reading.hpp"
 #include "string_heap_check.hpp"
@@ -174,6 +175,20 @@ void writeStudyColumns(H5::Group& table, const Study& study, BatchRows rows, hsi
   }
 }
 
+}  // namespace
+
+// The fields of a batch file's runs as text ("all" without the root attribute `fields`).
+std::string storedFieldsText(const H5::H5File& file, const std::string& path) {
+  if (!file.attrExists("fields")) return RunFields::all().text();
+  const std::vector<std::string> names =
+      detail::readStringListAttribute(file, "fields", path, "/:");
+  std::string text;
+  for (const std::string& name : names) text += (text.empty() ? "" : ", ") + name;
+  return text;
+}
+
+namespace {
+
 [[noreturn]] void rethrowHdf5(const std::string& path, const std::string& what,
                               const H5::Exception& error) {
   throw std::runtime_error(path + ": cannot " + what + " (" + error.getFuncName() + ": " +
@@ -225,6 +240,7 @@ std::unique_ptr<BatchDatasetWriter> BatchDatasetWriter::create(
     const std::string& path, const Study& study, const std::vector<SummaryColumn>& columns,
     const std::string& shard_label, BatchRows rows) {
   std::unique_ptr<BatchDatasetWriter> writer(new BatchDatasetWriter(path, columns, rows));
+  writer->fields_ = study.fields;
   const hsize_t count = rows.count(study.runs.size());
   writer->done_.assign(count, false);
   std::lock_guard<std::mutex> lock(hdf5Mutex());
@@ -245,6 +261,8 @@ std::unique_ptr<BatchDatasetWriter> BatchDatasetWriter::create(
     writeIntAttribute(root, "run_count", static_cast<int>(study.runs.size()));
     writeStringListAttribute(root, "swept_keys", study.keys);
     if (!shard_label.empty()) writeStringAttribute(root, "shard", shard_label);
+    // Lean runs (run_fields.hpp): absent, every field, as in every file written before.
+    if (!study.fields.isAll()) writeStringListAttribute(root, "fields", study.fields.names());
     commit(root, h.file.getId());
     h.runs = h.file.createGroup("runs");
     H5::Group batch = h.file.createGroup("batch");
@@ -285,6 +303,7 @@ std::unique_ptr<BatchDatasetWriter> BatchDatasetWriter::resume(
     const std::string& path, const Study& study, const std::vector<SummaryColumn>& columns,
     BatchRows batch_rows) {
   std::unique_ptr<BatchDatasetWriter> writer(new BatchDatasetWriter(path, columns, batch_rows));
+  writer->fields_ = study.fields;
   std::lock_guard<std::mutex> lock(hdf5Mutex());
   H5::Exception::dontPrint();
   const auto refuse = [&](const std::string& why) {
@@ -321,6 +340,11 @@ std::unique_ptr<BatchDatasetWriter> BatchDatasetWriter::resume(
       if (detail::readStringListAttribute(table, "columns", path, kSummaryPath + std::string(":")) !=
           columnNames(study, columns)) {
         refuse("its summary columns differ from this wpg's (written by another version?)");
+      }
+      const std::string stored = storedFieldsText(file, path);
+      if (stored != study.fields.text()) {
+        refuse("its runs store the fields " + stored + ", this batch asks for " +
+               study.fields.text() + " (fields: in the study, or --fields)");
       }
     }
     Handles& h = *writer->handles_;
@@ -360,7 +384,8 @@ PreparedRun BatchDatasetWriter::prepare(const BatchRunRecord& record) {
   RunGroupParts parts;
   parts.checks = record.checks;
   GroupImage& group = buildRunGroup(*runs, run.name, run.scenario, *record.result,
-                                    record.clearances, record.multibody, record.goal, parts);
+                                    record.clearances, record.multibody, record.goal, parts,
+                                    record.fields);
   writeStringAttribute(group, "scenario", run.scenario.resolved_yaml);
   writeIntAttribute(group, "batch_index", static_cast<int>(run.index));
   std::vector<std::string> keys;
@@ -381,6 +406,10 @@ void BatchDatasetWriter::write(const BatchRunRecord& record, const PreparedRun* 
   if (record.values.size() != columns_.size()) {
     throw std::invalid_argument("BatchDatasetWriter::write: " + std::to_string(record.values.size()) +
                                 " values for " + std::to_string(columns_.size()) + " columns");
+  }
+  if (record.fields != fields_) {
+    throw std::invalid_argument("BatchDatasetWriter::write: a run of the fields " +
+                                record.fields.text() + " into a file of " + fields_.text());
   }
   // Built here, off the lock, when the caller has not built it.
   const PreparedRun built = prepared && prepared->image ? PreparedRun{} : prepare(record);

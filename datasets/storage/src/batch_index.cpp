@@ -19,6 +19,7 @@
 #include <H5Cpp.h>
 #include <sys/resource.h>
 
+#include "batch_fields.hpp"
 #include "hdf5_bounded_reading.hpp"
 #include "string_heap_check.hpp"
 #include "hdf5_writing.hpp"
@@ -187,6 +188,7 @@ ShardContents readShardContents(const std::string& path) {
     shard.study_name = detail::readStringAttribute(file, "study_name", path, "/:");
     shard.study_fingerprint = detail::readStringAttribute(file, "study_fingerprint", path, "/:");
     if (file.attrExists("shard")) shard.label = detail::readStringAttribute(file, "shard", path, "/:");
+    shard.fields = storedFieldsText(file, path);
     if (file.attrExists("created_by")) shard.created_by = detail::readStringAttribute(file, "created_by", path, "/:");
     const double run_count =
         file.attrExists("run_count") ? detail::readNumberAttribute(file, "run_count", path, "/:") : -1.0;
@@ -273,6 +275,12 @@ IndexReport writeBatchIndex(const std::string& output, const std::vector<std::st
           throw InputError(shard.path + ": holds study '" + shard.study_name + "' (fingerprint " +
                            shard.study_fingerprint + "), not '" + first.study_name +
                            "' (fingerprint " + first.study_fingerprint + ") as " + first.path);
+        }
+        if (shard.fields != first.fields) {
+          throw InputError(shard.path + ": its runs store the fields " + shard.fields + ", those of " +
+                           first.path + " " + first.fields +
+                           ": shards of one index store the same fields (run the slice again "
+                           "with the study's fields)");
         }
         if (columns != first_columns) {
           throw InputError(shard.path + ": its summary columns differ from those of " + first.path +

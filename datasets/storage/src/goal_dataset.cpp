@@ -24,7 +24,8 @@ void writeGoalCommands(GroupImage& run, const wpg::WalkTrajectory& trajectory) {
                 "vx, vy, omega"});
 }
 
-void writeGoal(GroupImage& run, const Scenario& scenario, const GoalOutcome& goal) {
+void writeGoal(GroupImage& run, const Scenario& scenario, const GoalOutcome& goal,
+               RunFields fields) {
   const WalkGoal& g = scenario.goal.goal;
   const double nan = std::numeric_limits<double>::quiet_NaN();
   writeDoubleAttribute(run, "goal_x", g.position.x());
@@ -39,15 +40,18 @@ void writeGoal(GroupImage& run, const Scenario& scenario, const GoalOutcome& goa
   writeStringAttribute(run, "goal_outcome", goal.outcome);
 
   // Which obstacles the planner knew from the start (the others it learnt by sensing them).
-  GroupImage& obstacles = run.openGroup("obstacles");  // made by writeObstacles
-  std::vector<std::uint8_t> known;
-  for (std::size_t i = 0; i < scenario.request.obstacles.size(); ++i)
-    known.push_back(scenario.goal.knownToPlanner(i) ? 1 : 0);
-  writeCodes(obstacles, "known_to_planner", known,
-             {"1", nullptr,
-              "1 when the route planner knows the obstacle from the start, 0 when it learns of "
-              "it within planner.sensing_range (the NMPC avoids every obstacle)",
-              nullptr});
+  if (fields.has(RunField::kObstacles)) {
+    GroupImage& obstacles = run.openGroup("obstacles");  // made by writeObstacles
+    std::vector<std::uint8_t> known;
+    for (std::size_t i = 0; i < scenario.request.obstacles.size(); ++i)
+      known.push_back(scenario.goal.knownToPlanner(i) ? 1 : 0);
+    writeCodes(obstacles, "known_to_planner", known,
+               {"1", nullptr,
+                "1 when the route planner knows the obstacle from the start, 0 when it learns "
+                "of it within planner.sensing_range (the NMPC avoids every obstacle)",
+                nullptr});
+  }
+  if (!fields.has(RunField::kGoal)) return;
 
   const RoutePlannerSettings& settings = scenario.goal.planner;
   GroupImage& plans = run.createGroup("plans");

@@ -6,11 +6,14 @@
 
 #include "wpg/datasets/storage/run_dataset.hpp"
 #include "wpg/datasets/input/scenario.hpp"
+#include "wpg/datasets/study_design/run_fields.hpp"
 
 namespace wpg::datasets::detail {
 
-// `run` is /runs/<name>, its obstacles group already written.
-void writeGoal(GroupImage& run, const Scenario& scenario, const GoalOutcome& goal);
+// `run` is /runs/<name>, its obstacles group already written when `fields` has obstacles; the
+// attributes always, known_to_planner with the field obstacles, plans/ with goal.
+void writeGoal(GroupImage& run, const Scenario& scenario, const GoalOutcome& goal,
+               RunFields fields = RunFields::all());
 
 // mpc/command of a walk to a goal: the path follower's command of each NMPC iteration (what its
 // velocity metrics are measured against, datasets/METRICS.md); written also when the walk is

@@ -274,6 +274,28 @@ std::vector<std::string> runGroupNames(const H5::Group& runs) {
   return names;
 }
 
+// A lean run (a study's `fields:`, datasets/SCHEMA.md "Lean runs") names its fields in the
+// attribute `fields`; reading it as a walk needs the per-sample fields, the footsteps and the
+// NMPC log. Said in one line, with what it lacks, rather than "dataset com is missing".
+void checkWholeWalkStored(const std::string& path, const H5::Group& run,
+                          const std::string& run_path) {
+  if (!run.attrExists("fields")) return;  // every field
+  const std::vector<std::string> held =
+      detail::readStringListAttribute(run, "fields", path, run_path + ":");
+  std::string lacks, has;
+  for (const char* needed : {"com", "cop", "feet", "footsteps", "mpc"}) {
+    if (std::find(held.begin(), held.end(), needed) == held.end()) {
+      lacks += (lacks.empty() ? "" : ", ") + std::string(needed);
+    }
+  }
+  if (lacks.empty()) return;
+  for (const std::string& name : held) has += (has.empty() ? "" : ", ") + name;
+  throw InputError(path + ": run " + run_path + " is a lean run (fields " + has + "): it lacks " +
+                   lacks + ", which reading its walk needs; read its summary row "
+                   "(wpg.io.load_summary) or its fields with h5py (datasets/SCHEMA.md, \"Lean "
+                   "runs\")");
+}
+
 StoredRun readFile(const std::string& path, const std::string& run_name) {
   H5::H5File file = detail::openFileForReading(path);
   StoredRun stored;
@@ -315,6 +337,7 @@ StoredRun readFile(const std::string& path, const std::string& run_name) {
   const std::string run_path = "/runs/" + stored.name;
   const H5::Group run = runs.openGroup(stored.name);
   const Reader reader(path, run, run_path);
+  checkWholeWalkStored(path, run, run_path);
 
   if (run.attrExists("scenario")) {
     stored.scenario_yaml = reader.stringAttribute(run, "scenario", run_path + ":");

@@ -38,21 +38,37 @@ std::string statusCodes(const std::vector<std::uint8_t>& present) {
   return text;
 }
 
-void writeTrajectory(GroupImage& run, const WalkTrajectory& trajectory) {
+void writeCom(GroupImage& run, const WalkTrajectory& trajectory);
+void writeFeet(GroupImage& run, const WalkTrajectory& trajectory);
+void writeFootsteps(GroupImage& run, const WalkTrajectory& trajectory);
+
+// The per-sample fields and the footsteps, those of `fields` (run_fields.hpp).
+void writeTrajectory(GroupImage& run, const WalkTrajectory& trajectory, RunFields fields) {
   const DatasetInfo time_info{"s", nullptr, "time of each sample, one row per control period",
                               nullptr};
-  writeDoubles(run, "time", trajectory.time, 0, time_info);
+  if (fields.hasSamples()) writeDoubles(run, "time", trajectory.time, 0, time_info);
+  if (fields.has(RunField::kCom)) writeCom(run, trajectory);
+  if (fields.has(RunField::kCop)) {
+    writeDoubles(run, "cop", flatten(trajectory.cop), 2,
+                 {"m", "world",
+                  "centre of pressure of the linear inverted pendulum, z = c - h/g c'' (eq. 3), "
+                  "on the ground",
+                  "x, y"});
+  }
+  if (fields.has(RunField::kFeet)) writeFeet(run, trajectory);
+  if (fields.has(RunField::kFootsteps)) writeFootsteps(run, trajectory);
+}
+
+void writeCom(GroupImage& run, const WalkTrajectory& trajectory) {
   writeDoubles(run, "com", flatten(trajectory.com), 3,
                {"m", "world", "centre of mass position", "x, y, z"});
   writeDoubles(run, "com_vel", flatten(trajectory.com_vel), 3,
                {"m/s", "world", "centre of mass velocity", "x, y, z"});
   writeDoubles(run, "com_acc", flatten(trajectory.com_acc), 3,
                {"m/s^2", "world", "centre of mass acceleration", "x, y, z"});
-  writeDoubles(run, "cop", flatten(trajectory.cop), 2,
-               {"m", "world",
-                "centre of pressure of the linear inverted pendulum, z = c - h/g c'' (eq. 3), "
-                "on the ground",
-                "x, y"});
+}
+
+void writeFeet(GroupImage& run, const WalkTrajectory& trajectory) {
   writeDoubles(run, "left_foot", flatten(trajectory.left_foot), 4,
                {"m, m, m, rad", "world", "left ankle position and yaw", "x, y, z, yaw"});
   writeDoubles(run, "right_foot", flatten(trajectory.right_foot), 4,
@@ -72,7 +88,9 @@ void writeTrajectory(GroupImage& run, const WalkTrajectory& trajectory) {
                   "support phase: 0 double support, 1 left foot support, 2 right foot support",
                   nullptr});
   writeStringAttribute(support_set, "codes", "0=double, 1=left, 2=right");
+}
 
+void writeFootsteps(GroupImage& run, const WalkTrajectory& trajectory) {
   const std::vector<Footstep>& steps = trajectory.footsteps;
   std::vector<double> footsteps;
   std::vector<std::uint8_t> sides;
@@ -106,11 +124,23 @@ std::vector<ConstraintFamilyInfo> slackColumns(const WalkTrajectory& trajectory)
   return {ConstraintFamilyInfo{"unknown", "m or rad", "unknown"}};
 }
 
-void writeMpcLog(GroupImage& run, const WalkTrajectory& trajectory) {
+void writeIterations(GroupImage& mpc, const WalkTrajectory& trajectory);
+
+// mpc/: its `time` with any of the fields mpc, plan, goal (their rows are its rows), the
+// iterations' log with mpc, their plans with plan.
+void writeMpcLog(GroupImage& run, const WalkTrajectory& trajectory, RunFields fields) {
+  if (!fields.has(RunField::kMpc) && !fields.has(RunField::kPlan) && !fields.has(RunField::kGoal))
+    return;
   const std::vector<MpcIterationLog>& log = trajectory.mpc;
   GroupImage& mpc = run.createGroup("mpc");
   writeDoubles(mpc, "time", column(log, [](const MpcIterationLog& r) { return r.time; }), 0,
                {"s", nullptr, "time of each NMPC iteration (one per sampling period)", nullptr});
+  if (fields.has(RunField::kMpc)) writeIterations(mpc, trajectory);
+  if (fields.has(RunField::kPlan)) writePlans(mpc, trajectory);
+}
+
+void writeIterations(GroupImage& mpc, const WalkTrajectory& trajectory) {
+  const std::vector<MpcIterationLog>& log = trajectory.mpc;
   writeDoubles(mpc, "solve_time",
                column(log, [](const MpcIterationLog& r) { return r.solve_time; }), 0,
                {"s", nullptr, "wall time of the iteration: linearization and QP(s)", nullptr});
@@ -180,7 +210,6 @@ void writeMpcLog(GroupImage& run, const WalkTrajectory& trajectory) {
                   "expressed it in (walking.heading_reference); 0 in a fallen row",
                   "x, y"});
   }
-  writePlans(mpc, trajectory);
 }
 
 // Footsteps against the obstacles (when there are any): the step centres computed by
@@ -244,11 +273,11 @@ void writeChecks(GroupImage& run, const DatasetChecks& checked, const FootstepCl
 }  // namespace
 
 std::shared_ptr<const GroupImage> buildWalkPart(const Scenario& scenario,
-                                                const wpg::WalkResult& result) {
+                                                const wpg::WalkResult& result, RunFields fields) {
   auto part = std::make_shared<GroupImage>();
-  writeTrajectory(*part, result.trajectory);
-  writeMpcLog(*part, result.trajectory);
-  writeObstacles(*part, scenario.request.obstacles);
+  writeTrajectory(*part, result.trajectory, fields);
+  writeMpcLog(*part, result.trajectory, fields);
+  if (fields.has(RunField::kObstacles)) writeObstacles(*part, scenario.request.obstacles);
   return part;
 }
 
@@ -262,7 +291,7 @@ std::shared_ptr<const GroupImage> buildMultibodyPart(const Scenario& scenario,
 GroupImage& buildRunGroup(GroupImage& runs, const std::string& group_name,
                           const Scenario& scenario, const WalkResult& result,
                           const FootstepClearances* clearances, const MultibodyRecord* multibody,
-                          const GoalOutcome* goal, const RunGroupParts& parts) {
+                          const GoalOutcome* goal, const RunGroupParts& parts, RunFields fields) {
   checkRunInputs(scenario, result, clearances, multibody);
   GroupImage& run = runs.createGroup(group_name);
   writeStringAttribute(run, "algorithm",
@@ -282,15 +311,22 @@ GroupImage& buildRunGroup(GroupImage& runs, const std::string& group_name,
   if (std::isfinite(result.progress_ratio)) {
     writeDoubleAttribute(run, "progress_ratio", result.progress_ratio);
   }
-  run.addPart(parts.walk ? parts.walk : buildWalkPart(scenario, result));
+  run.addPart(parts.walk ? parts.walk : buildWalkPart(scenario, result, fields));
   if (parts.checks) {
     writeChecks(run, *parts.checks, clearances);
   } else {
     writeChecks(run, computeDatasetChecks(scenario, result.trajectory, clearances), clearances);
   }
-  if (multibody) run.addPart(parts.multibody ? parts.multibody : buildMultibodyPart(scenario, *multibody));
-  if (goal) writeGoal(run, scenario, *goal);  // and below, the follower's commands (replay too)
-  if (scenario.goal.enabled) writeGoalCommands(run, result.trajectory);
+  if (multibody && fields.has(RunField::kMultibody)) {
+    run.addPart(parts.multibody ? parts.multibody : buildMultibodyPart(scenario, *multibody));
+  }
+  if (goal) writeGoal(run, scenario, *goal, fields);  // below, the follower's commands (replay too)
+  if (scenario.goal.enabled && fields.has(RunField::kGoal)) {
+    writeGoalCommands(run, result.trajectory);
+  }
+  // A lean run names what it holds (a run stored whole has no attribute: every field), so that
+  // readers say what it lacks rather than that a dataset is missing.
+  if (!fields.isAll()) writeStringListAttribute(run, "fields", fields.names());
   return run;
 }
 

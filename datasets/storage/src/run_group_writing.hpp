@@ -9,6 +9,7 @@
 #include "hdf5_image.hpp"
 #include "wpg/datasets/storage/dataset_checks.hpp"
 #include "wpg/datasets/storage/run_dataset.hpp"
+#include "wpg/datasets/study_design/run_fields.hpp"
 
 namespace wpg::datasets::detail {
 
@@ -19,7 +20,8 @@ void checkRunInputs(const Scenario& scenario, const wpg::WalkResult& result,
 // The walk's part of a run group: the trajectory, the NMPC log and the obstacles, the first
 // entries buildRunGroup makes.
 std::shared_ptr<const GroupImage> buildWalkPart(const Scenario& scenario,
-                                                const wpg::WalkResult& result);
+                                                const wpg::WalkResult& result,
+                                                RunFields fields = RunFields::all());
 // The multibody fields (writeMultibody) as a part of their own.
 std::shared_ptr<const GroupImage> buildMultibodyPart(const Scenario& scenario,
                                                      const MultibodyRecord& multibody);
@@ -34,11 +36,13 @@ struct RunGroupParts {
 };
 
 // Adds runs/<group_name> with everything of the run schema to `runs` (the image of the group
-// /runs) and returns it. The inputs are checked first (checkRunInputs).
+// /runs) and returns it; with `fields`, only those (run_fields.hpp; `parts.walk` must then be
+// built with the same fields). The inputs are checked first (checkRunInputs).
 GroupImage& buildRunGroup(GroupImage& runs, const std::string& group_name,
                           const Scenario& scenario, const wpg::WalkResult& result,
                           const FootstepClearances* clearances, const MultibodyRecord* multibody,
-                          const GoalOutcome* goal, const RunGroupParts& parts = {});
+                          const GoalOutcome* goal, const RunGroupParts& parts = {},
+                          RunFields fields = RunFields::all());
 
 void writeMultibody(GroupImage& run, const Scenario& scenario, const MultibodyRecord& multibody);
 

@@ -110,6 +110,20 @@ struct RandomSweep {
   }
 };
 
+// `fields: [summary, footsteps]` (run_fields.hpp).
+RunFields readFields(const YAML::Node& node, const std::string& path) {
+  std::vector<std::string> names;
+  if (!node.IsSequence()) {
+    throw InputError(path + ": fields: expected a list of field names ([summary, footsteps]), got " +
+                     (node.IsScalar() ? "'" + node.Scalar() + "'" : std::string("a map")));
+  }
+  for (const YAML::Node& name : node) {
+    if (!name.IsScalar()) throw InputError(path + ": fields: expected field names, got a list or map");
+    names.push_back(name.Scalar());
+  }
+  return parseRunFields(names, path + ": fields");
+}
+
 RandomSweep readRandom(const YAML::Node& node, const Source& source) {
   const detail::Entries entries =
       detail::readMap(node, "sweep.random", {"samples", "seed", "keys"},
@@ -314,13 +328,15 @@ Study loadStudy(const std::string& path, const BaseResolver& resolve_base,
   const YAML::Node root = detail::readYamlFile(path, "study file");
   study.text = detail::readTextFile(path, "study file");
   const detail::Entries top =
-      detail::readMap(root, "", {"name", "base", "set", "sweep", "plan"},
-                      "a study: a map with name, base, sweep and optionally set and plan", source);
+      detail::readMap(root, "", {"name", "base", "set", "sweep", "plan", "fields"},
+                      "a study: a map with name, base, sweep and optionally set, plan and fields",
+                      source);
   // `plan: false`: the runs leave out what each NMPC iteration predicted (mpc/plan/), as
   // `--set generator.record_plan=false` would: a smaller batch file and less writing.
   const bool without_plans =
       detail::present(top, "plan") &&
       !detail::readBoolean(detail::entry(top, "plan"), "plan", "true or false", source);
+  if (detail::present(top, "fields")) study.fields = readFields(detail::entry(top, "fields"), path);
   study.name = detail::readName(detail::entry(top, "name"), "name",
                                 "a study name (at most 32 letters, digits, _ - .)", source,
                                 kMaxStudyNameLength);

@@ -5,6 +5,7 @@
 // check of it, so that every front end refuses the same input the same way, before any work.
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "wpg/engine/study_executor.hpp"
 
@@ -17,6 +18,7 @@ struct RequestFieldNames {
   std::string output = "output";
   std::string shard = "shard";
   std::string ompl_log = "ompl_log";
+  std::string fields = "fields";
 };
 
 struct StudyRequest {
@@ -32,6 +34,9 @@ struct StudyRequest {
   // other outputs, before any work.
   bool figures = false;
   std::string ompl_log;  // a comparison: the folder of its OMPL benchmark logs (empty: none)
+  // A batch: what each run stores (run_fields.hpp), instead of the study's `fields:`; none:
+  // the study's (every field when it names none).
+  std::optional<std::vector<std::string>> fields;
   // Under an MPI launcher the ranks share the study (mpi_executor.hpp); otherwise the study
   // runs on this process's threads whatever launched it.
   bool use_mpi = false;

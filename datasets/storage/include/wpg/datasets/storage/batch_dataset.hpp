@@ -62,6 +62,8 @@ struct BatchRunRecord {
   // computeDatasetChecks of this run (the engine's run result holds them), or null: the writer
   // computes them (prepare(), on the worker)
   const DatasetChecks* checks = nullptr;
+  // What the run stores (the study's fields: the file's, BatchDatasetWriter::write checks it)
+  RunFields fields = RunFields::all();
   int exit_status = 0;                 // 0 the walk succeeded, 1 it failed (as `wpg run`)
   std::vector<double> values;          // one per SummaryColumn, in the writer's order
 };
@@ -77,14 +79,17 @@ class BatchDatasetWriter {
   // the summary table of the runs `rows` with its index, name and swept columns filled (block
   // by block: the memory does not grow with the rows) and its result columns at their fill
   // values, and an empty /runs. A non-empty `shard_label` makes it a shard file
-  // (batch_index.hpp): root attribute `shard`. Throws std::runtime_error on I/O errors.
+  // (batch_index.hpp): root attribute `shard`. A study of lean runs (study.fields not all)
+  // has the root attribute `fields`, the names of its runs' fields. Throws std::runtime_error
+  // on I/O errors.
   static std::unique_ptr<BatchDatasetWriter> create(const std::string& path, const Study& study,
                                                     const std::vector<SummaryColumn>& columns,
                                                     const std::string& shard_label = "",
                                                     BatchRows rows = {});
   // Opens an existing batch file of the same study to finish it. Throws InputError, leaving the
   // file untouched, when it is not a batch file, holds another study (name or fingerprint
-  // differ) or has other summary columns. Runs found half-written (a group without its `done`
+  // differ), other summary columns or runs of other fields (root attribute `fields`, absent:
+  // all). Runs found half-written (a group without its `done`
   // row: the batch was killed while writing it) are removed, to be run again.
   static std::unique_ptr<BatchDatasetWriter> resume(const std::string& path, const Study& study,
                                                     const std::vector<SummaryColumn>& columns,
@@ -109,6 +114,7 @@ class BatchDatasetWriter {
   std::string path_;
   std::vector<SummaryColumn> columns_;
   BatchRows rows_;
+  RunFields fields_ = RunFields::all();
   std::vector<bool> done_;  // per row
   std::unique_ptr<Handles> handles_;
 };

@@ -44,6 +44,7 @@ struct ShardContents {
   std::string study_name, study_fingerprint;
   std::string created_by;  // root attribute: "wpg batch", "wpg compare"
   std::size_t run_count = 0;  // runs of the study (root attribute run_count)
+  std::string fields = "all";  // what its runs store (root attribute `fields`: "summary, com")
   // Per row of its summary table: the run's index (every run of the study for a whole batch
   // or an MPI rank's shard, a slice's runs for a slice) and whether the run is in the file.
   std::vector<std::size_t> runs;

@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "wpg/datasets/input/scenario.hpp"
+#include "wpg/datasets/study_design/run_fields.hpp"
 #include "wpg/datasets/study_design/study_runs.hpp"
 
 namespace wpg::datasets {
@@ -49,6 +50,10 @@ struct Study {
   // run is checked it is the digest of every run's scenario.
   std::string fingerprint;
   std::string created_by = "wpg batch";
+  // What each run stores (`fields:`; run_fields.hpp): every field unless the study names some.
+  // Not part of the fingerprint: a batch file records it (root attribute `fields`), and
+  // `--resume` and `wpg merge` compare it.
+  RunFields fields = RunFields::all();
   // A slice's shard holds a row of every run (else its runs' rows only): a comparison's, so
   // that `wpg merge` reads the worlds, variants and seeds from any one shard.
   bool slices_hold_every_row = false;  // the command that expands it (root attribute)
