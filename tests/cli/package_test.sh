@@ -4,8 +4,7 @@
 # project that uses find_package(wpg), one beside it (downstream_core/) that asks for the
 # core component only with every other dependency of wpg unfindable, and one that extends the
 # NMPC with its own family and cost term (downstream_extensions/); finally checks that the
-# installed wpg finds its installed data. The CMAKE_ARGs go to the downstream configure (an instrumented build passes its compiler
-# and sanitizer flags: its libraries need the same runtime in the downstream executable).
+# installed wpg finds its installed data. The CMAKE_ARGs go to the downstream configure.
 set -euo pipefail
 # shellcheck source=common.sh
 source "$(dirname "$0")/common.sh"
