@@ -7,6 +7,7 @@
 # Markdown table on stdout; the datasets go to a temporary folder, removed at the end.
 #
 #   scripts/filter-loop-table.sh [scenario ...]     (default: every shipped scenario)
+#   WPG_ROBOT=talos scripts/filter-loop-table.sh     (another robot: --set robot=talos)
 set -euo pipefail
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="$(realpath -m -- "${WPG_BUILD_DIR:-$repo/build}")"
@@ -16,6 +17,7 @@ if [[ ! -f "$build/CMakeCache.txt" ]]; then
 fi
 cmake --build "$build" --target wpg -j2 >/dev/null
 wpg="$build/cli/wpg"
+robot="${WPG_ROBOT:-hrp2}"
 work="$(mktemp -d "${TMPDIR:-/tmp}/wpg-filter-table.XXXXXX")"
 trap 'rm -rf -- "$work"' EXIT
 
@@ -32,11 +34,12 @@ fi
 cell() {
   local scenario=$1 status=0 out
   shift
-  out="$("$wpg" run "$scenario" --no-plot -o "$work/run.h5" "$@" 2>&1)" || status=$?
+  out="$("$wpg" run "$scenario" --no-plot -o "$work/run.h5" --set "robot=$robot" "$@" 2>&1)" \
+    || status=$?
   if grep -q "fallen" <<<"$out"; then
     local iterations
     iterations="$(sed -n 's/.*(\([0-9]*\) NMPC iterations).*/\1/p' <<<"$out" | head -1)"
-    # HRP-2's sampling period, 0.1 s per NMPC iteration
+    # the shipped robots' sampling period, 0.1 s per NMPC iteration
     echo "falls at $(awk -v n="$iterations" 'BEGIN { printf "%.1f", n * 0.1 }') s"
     return
   fi
