@@ -126,6 +126,7 @@ sweep:
     robot_mass: [58.0, 60.0, 55.0]
     replay: [false, true, false]
     generator.sqp_iterations: [1, 2, 1]
+    walking.weight_cop: [300, +1.0e3, 5e2]
   random:
     samples: 4
     seed: 3

@@ -1,7 +1,10 @@
 // A study's sweep compiled against its base scenario (compiled_sweep.hpp).
 #include "compiled_sweep.hpp"
 
+#include <algorithm>
 #include <exception>
+
+#include <yaml-cpp/yaml.h>
 
 #include "wpg/datasets/input/yaml_input.hpp"
 
@@ -17,6 +20,19 @@ std::optional<Scenario> loadWith(const std::string& base_text, const std::string
     return loadScenarioText(base_text, base_origin, overrides, robots_dir);
   } catch (const InputError&) {
     return std::nullopt;
+  }
+}
+
+// The loader reads `value` (a --set value's text) as value.number, bit for bit: its number
+// reader (from_chars) and the study's (yaml-cpp's as<double>) agree on it.
+bool readsAsItsNumber(const SweptValue& value) {
+  if (!value.numeric) return false;
+  try {
+    const detail::Source source("");
+    return detail::readNumber(YAML::Load(value.value), value.key, "a number", source) ==
+           value.number;
+  } catch (const std::exception&) {  // InputError, YAML::Exception
+    return false;
   }
 }
 
@@ -47,16 +63,26 @@ CompiledSweep::CompiledSweep(const std::string& base_text, const std::string& ba
       if (compiled.field && (nested(swept.key, other.key) || nested(other.key, swept.key)))
         compiled.field.reset();  // nested keys: the outer one may change the inner one's list
     }
-    compiled.random = swept.values.empty();
+    // A key of plain numbers into a number field takes them as they are (a random key's draws,
+    // or listed numbers): the loader accepted the smallest and the largest, and what a reader
+    // checks of one number is an interval. Other values are each loaded.
+    double low = swept.low, high = swept.high;
+    bool numbers = compiled.field && compiled.field->number;
+    for (std::size_t v = 0; v < swept.values.size() && numbers; ++v) {
+      numbers = readsAsItsNumber(swept.values[v]);
+      low = v == 0 ? swept.values[v].number : std::min(low, swept.values[v].number);
+      high = v == 0 ? swept.values[v].number : std::max(high, swept.values[v].number);
+    }
     const auto load = [&](const std::string& value) {
       std::vector<std::string> overrides = first;
       overrides[constants.size() + k] = swept.key + "=" + value;
       return loadWith(base_text, base_origin, robots_dir, overrides, first_name);
     };
-    if (compiled.field && compiled.random) {
+    compiled.by_number = swept.values.empty() || numbers;
+    if (compiled.field && compiled.by_number) {
       compiled.range_accepted = compiled.field->number &&
-                                load(detail::formatNumber(swept.low)).has_value() &&
-                                load(detail::formatNumber(swept.high)).has_value();
+                                load(detail::formatNumber(low)).has_value() &&
+                                load(detail::formatNumber(high)).has_value();
     } else if (compiled.field) {
       for (const SweptValue& value : swept.values) compiled.loaded.push_back(load(value.value));
     }
@@ -71,12 +97,12 @@ bool CompiledSweep::make(const std::vector<SweptValue>& swept,
   for (std::size_t k = 0; k < keys_.size(); ++k) {
     const CompiledKey& key = keys_[k];
     if (!key.field) return false;
-    if (key.random ? !key.range_accepted : !key.loaded[positions[k]]) return false;
+    if (key.by_number ? !key.range_accepted : !key.loaded[positions[k]]) return false;
   }
   Scenario made = *base_;
   for (std::size_t k = 0; k < keys_.size(); ++k) {
     const CompiledKey& key = keys_[k];
-    if (key.random) {
+    if (key.by_number) {
       *key.field->number(&made) = swept[k].number;
     } else {
       key.field->copy(*key.loaded[positions[k]], &made);

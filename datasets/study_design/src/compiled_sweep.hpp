@@ -5,9 +5,10 @@
 // (scenario_field.hpp), and each listed value is loaded once, run 0 with that value (the runs
 // loadStudy checks, checkedRuns), through the loader (whose readers check it and word the
 // errors). A run is then a copy of the base with
-// its values' fields copied in (a random key's number set directly: the loader accepted both
-// ends of its range, and every check a reader makes of one number is an interval), then the
-// loader's checks over several keys and its warnings (checkScenario).
+// its values' fields copied in (numbers, random or listed, set directly: the loader accepted
+// the smallest and the largest, and every check a reader makes of one number is an interval),
+// then the loader's checks over several keys and its warnings (checkScenario). The load costs
+// a loaded scenario per key of numbers (2) or per other listed value (names, vectors).
 //
 // A run that cannot be made so returns false, and the study loads it from YAML as before: a
 // structural key (scenario_field.hpp lists them), a value the loader refused alone (the run
@@ -48,9 +49,9 @@ class CompiledSweep {
  private:
   struct CompiledKey {
     std::optional<ScenarioField> field;          // nothing: structural
-    std::vector<std::optional<Scenario>> loaded;  // per listed value; nothing: refused alone
-    bool random = false;
-    bool range_accepted = false;  // a random key: both ends of its range load
+    std::vector<std::optional<Scenario>> loaded;  // per listed value; nothing: refused
+    bool by_number = false;       // its values are numbers set as they are (random, or listed)
+    bool range_accepted = false;  // by_number: its smallest and largest values load
   };
 
   std::optional<Scenario> base_;  // run 0; nothing: it does not load (every run is loaded)

@@ -176,26 +176,28 @@ struct SweepExpansion {
     char number[32];
     std::snprintf(number, sizeof number, "%0*zu", digits, index);
     run.name = name + "_" + number;
-    // Each key's value, and its position in its list (a random key: its sample).
+    // Each key's value; with a scenario, also its position in its list (a random key: its
+    // sample), for the compiled fields.
+    const bool with_scenario = what != StudyRuns::Make::kDescription;
+    std::vector<std::size_t> positions;
+    const auto take = [&](const SweptValue& value, std::size_t position) {
+      run.swept.push_back(value);
+      if (with_scenario) positions.push_back(position);
+    };
     run.swept.resize(grid.size());
-    std::vector<std::size_t> positions(grid.size());
+    if (with_scenario) positions.resize(grid.size());
     std::size_t rest = index / (zip_points * random_points);
     for (std::size_t k = grid.size(); k-- > 0;) {
-      positions[k] = rest % grid[k].values.size();
-      run.swept[k] = grid[k].values[positions[k]];
+      const std::size_t position = rest % grid[k].values.size();
+      run.swept[k] = grid[k].values[position];
+      if (with_scenario) positions[k] = position;
       rest /= grid[k].values.size();
     }
     const std::size_t zip_index = (index / random_points) % zip_points;
-    for (const KeyValues& key : zip) {
-      run.swept.push_back(key.values[zip_index]);
-      positions.push_back(zip_index);
-    }
+    for (const KeyValues& key : zip) take(key.values[zip_index], zip_index);
     const std::size_t sample = index % random_points;
-    for (std::size_t k = 0; k < random.ranges.size(); ++k) {
-      run.swept.push_back(random.value(sample, k));
-      positions.push_back(sample);
-    }
-    if (what != StudyRuns::Make::kDescription) {
+    for (std::size_t k = 0; k < random.ranges.size(); ++k) take(random.value(sample, k), sample);
+    if (with_scenario) {
       run.from_fields = what == StudyRuns::Make::kScenario &&
                         compiled.make(run.swept, positions, run.name, &run.scenario);
       if (!run.from_fields) loadScenarioOf(&run);
