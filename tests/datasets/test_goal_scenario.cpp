@@ -53,7 +53,8 @@ TEST(GoalScenario, ShippedGoalScenariosReadTheirGoalAndPlanner) {
 TEST(GoalScenario, TheResolvedScenarioLoadsAsTheSameGoalWalk) {
   for (const std::string name : {"goal_with_yaw", "goal_unknown_obstacle", "goal_u_trap"}) {
     const Scenario first = loadScenario(shipped(name), {"planner.bounds=[-3,8,-4,4]"}, kRobotsDir);
-    const Scenario again = loadScenarioText(resolvedScenarioText(first), "resolved", {}, kRobotsDir);
+    const Scenario again =
+        loadScenarioText(resolvedScenarioText(first), "resolved", {}, kRobotsDir);
     EXPECT_EQ(resolvedScenarioText(again), resolvedScenarioText(first)) << name;
     EXPECT_EQ(again.goal.known_to_planner, first.goal.known_to_planner) << name;
     EXPECT_EQ(again.goal.planner.bounds, first.goal.planner.bounds) << name;

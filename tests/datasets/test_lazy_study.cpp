@@ -103,7 +103,9 @@ TEST_F(LazyStudy, RunIFromIAloneIsTheRunOfTheOrderedExpansion) {
                            2);
   EXPECT_EQ(again.fingerprint, study.fingerprint);
   for (const std::size_t i : {std::size_t{59}, std::size_t{0}, std::size_t{31}, std::size_t{7}}) {
-    EXPECT_EQ(resolvedScenarioText(again.runs[i].scenario), resolvedScenarioText(study.runs[i].scenario)) << i;
+    EXPECT_EQ(resolvedScenarioText(again.runs[i].scenario),
+              resolvedScenarioText(study.runs[i].scenario))
+        << i;
   }
   // Every run of a small study is checked before any work.
   EXPECT_EQ(study.checked_runs.size(), study.runs.size());

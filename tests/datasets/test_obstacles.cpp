@@ -130,10 +130,12 @@ TEST_F(ObstacleFiles, ResolvedYamlRoundTripsTheObstacles) {
   for (const char* key : {"obstacles:", "type: circle", "type: box", "type: polygon",
                           "vertices: [[4.0, -0.5], [4.6, -0.4], [4.3, 0.2]]", "yaw: 0.3",
                           "max_obstacles_in_qp: 3", "obstacle_reach: 2.0"}) {
-    EXPECT_NE(resolvedScenarioText(first).find(key), std::string::npos) << "'" << key << "' missing in:\n"
-                                                                << resolvedScenarioText(first);
+    EXPECT_NE(resolvedScenarioText(first).find(key), std::string::npos)
+        << "'" << key << "' missing in:\n"
+        << resolvedScenarioText(first);
   }
-  const Scenario second = loadScenario(write(resolvedScenarioText(first), "resolved.yaml"), {}, kRobotsDir);
+  const Scenario second =
+      loadScenario(write(resolvedScenarioText(first), "resolved.yaml"), {}, kRobotsDir);
   EXPECT_EQ(resolvedScenarioText(second), resolvedScenarioText(first));
   ASSERT_EQ(second.request.obstacles.size(), first.request.obstacles.size());
   for (std::size_t i = 0; i < first.request.obstacles.size(); ++i) {

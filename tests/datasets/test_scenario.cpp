@@ -217,9 +217,10 @@ TEST(ShippedScenarios, ReplayAndFilterKeys) {
   EXPECT_EQ(filtered.filter_settings.error_weight, 1.0);
   EXPECT_EQ(filtered.filter_settings.input_weight, 1e-5);
   EXPECT_EQ(filtered.filter_settings.preview_time, 0.665);
-  EXPECT_NE(resolvedScenarioText(filtered).find("replay: true"), std::string::npos) << resolvedScenarioText(filtered);
-  const Scenario again = wpg::datasets::loadScenarioText(resolvedScenarioText(filtered), "run.h5:/scenario",
-                                                         {}, kRobotsDir);
+  EXPECT_NE(resolvedScenarioText(filtered).find("replay: true"), std::string::npos)
+      << resolvedScenarioText(filtered);
+  const Scenario again = wpg::datasets::loadScenarioText(resolvedScenarioText(filtered),
+                                                         "run.h5:/scenario", {}, kRobotsDir);
   EXPECT_EQ(resolvedScenarioText(again), resolvedScenarioText(filtered));
   EXPECT_EQ(again.source_path, "run.h5:/scenario");
   EXPECT_TRUE(again.filter);
@@ -246,8 +247,8 @@ TEST(ShippedScenarios, FilterModeKeys) {
   EXPECT_EQ(online.filter_loop.mode, wpg::DynamicFilterMode::kBoth);
   EXPECT_TRUE(online.filter_loop.reinitialize_wpg);
   EXPECT_EQ(online.filter_settings.preview_time, 1.6);  // the other keys keep their defaults
-  const Scenario again =
-      wpg::datasets::loadScenarioText(resolvedScenarioText(online), "run.h5:/scenario", {}, kRobotsDir);
+  const Scenario again = wpg::datasets::loadScenarioText(resolvedScenarioText(online),
+                                                         "run.h5:/scenario", {}, kRobotsDir);
   EXPECT_EQ(again.filter_loop.mode, wpg::DynamicFilterMode::kBoth);
   EXPECT_TRUE(again.filter_loop.reinitialize_wpg);
   // closed_loop and its own online weight, read back through the resolved YAML.
@@ -258,8 +259,8 @@ TEST(ShippedScenarios, FilterModeKeys) {
   EXPECT_EQ(closed.filter_loop.online_input_weight, 2e-4);
   EXPECT_EQ(closed.filter_settings.input_weight, 1e-6);  // the offline pass's R is its own key
   EXPECT_EQ(defaults.filter_loop.online_input_weight, 1e-3);
-  const Scenario closed_again =
-      wpg::datasets::loadScenarioText(resolvedScenarioText(closed), "run.h5:/scenario", {}, kRobotsDir);
+  const Scenario closed_again = wpg::datasets::loadScenarioText(resolvedScenarioText(closed),
+                                                                "run.h5:/scenario", {}, kRobotsDir);
   EXPECT_EQ(closed_again.filter_loop.mode, wpg::DynamicFilterMode::kClosedLoop);
   EXPECT_EQ(closed_again.filter_loop.online_input_weight, 2e-4);
   for (const char* bad : {"filter_settings.mode=closed", "filter_settings.mode=[online]",

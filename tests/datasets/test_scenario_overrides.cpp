@@ -28,8 +28,10 @@ TEST(Overrides, ScalarsNestedKeysAndListIndices) {
   EXPECT_EQ(s.request.reference[1].velocity, Eigen::Vector3d(0.3, 0.0, 0.0));
   EXPECT_DOUBLE_EQ(s.walking.feasibility_y[2], 0.35);
   EXPECT_DOUBLE_EQ(s.walking.feasibility_y[1], 0.3);  // the rest of the robot's list stays
-  EXPECT_NE(resolvedScenarioText(s).find("duration: 20.0"), std::string::npos) << resolvedScenarioText(s);
-  EXPECT_NE(resolvedScenarioText(s).find("algorithm: lmpc"), std::string::npos) << resolvedScenarioText(s);
+  EXPECT_NE(resolvedScenarioText(s).find("duration: 20.0"), std::string::npos)
+      << resolvedScenarioText(s);
+  EXPECT_NE(resolvedScenarioText(s).find("algorithm: lmpc"), std::string::npos)
+      << resolvedScenarioText(s);
   EXPECT_NE(resolvedScenarioText(s).find("{t: 1.0, v: [0.3, 0.0, 0.0]}"), std::string::npos)
       << resolvedScenarioText(s);
 }

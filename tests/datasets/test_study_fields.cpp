@@ -138,7 +138,8 @@ sweep:
   ASSERT_EQ(study.runs.size(), 16u * 3u * 4u);
   expectEveryRunEqual(study);
   std::size_t warned = 0;
-  for (std::size_t i = 0; i < study.runs.size(); ++i) warned += !study.runs[i].scenario.warnings.empty();
+  for (std::size_t i = 0; i < study.runs.size(); ++i)
+    warned += !study.runs[i].scenario.warnings.empty();
   EXPECT_GT(warned, 10u);  // the warnings are compared, not only their absence
 }
 
@@ -160,10 +161,13 @@ sweep:
 TEST_F(StudyFields, RefusedRunFailsWithTheLoadersMessage) {
   std::string heights = "[";
   for (int i = 0; i < 300; ++i) heights += (i ? ", " : "") + std::to_string(0.7 + 0.0003 * i);
-  const Study study = load("name: refused\nbase: walk_forward\nsweep:\n  grid:\n"
-                           "    walking.com_height: " + heights + "]\n"
-                           "    walking.foot_length: [0.2172, 0.17]\n"
-                           "    walking.cop_margin_x: [0.05, 0.09]\n");
+  const Study study = load(
+      "name: refused\nbase: walk_forward\nsweep:\n  grid:\n"
+      "    walking.com_height: " +
+      heights +
+      "]\n"
+      "    walking.foot_length: [0.2172, 0.17]\n"
+      "    walking.cop_margin_x: [0.05, 0.09]\n");
   const std::size_t refused = 299 * 4 + 2 + 1;  // the last height, 0.17 m, 0.09 m
   ASSERT_EQ(std::count(study.checked_runs.begin(), study.checked_runs.end(), refused), 0);
   std::string made, loaded;

@@ -59,8 +59,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const wpg::datasets::Scenario again = wpg::datasets::loadScenarioText(
         resolvedScenarioText(scenario), "fuzz.yaml:/scenario", {}, robotsDirectory());
     if (resolvedScenarioText(again) != resolvedScenarioText(scenario)) {
-      propertyViolated("the resolved scenario does not load to itself",
-                       "first:\n" + resolvedScenarioText(scenario) + "\nagain:\n" + resolvedScenarioText(again));
+      propertyViolated(
+          "the resolved scenario does not load to itself",
+          "first:\n" + resolvedScenarioText(scenario) + "\nagain:\n" + resolvedScenarioText(again));
     }
   } catch (const wpg::datasets::InputError& error) {
     propertyViolated("the resolved scenario of an accepted scenario is rejected",

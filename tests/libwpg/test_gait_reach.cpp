@@ -107,9 +107,9 @@ TEST(GaitReach, ReachesCommandIsReachAtLeastOne) {
           const Vector2d v = scale * lambda * direction;
           const bool reaches =
               wpg::gaitReach(v, omega, 0.8, w.feasibility_x, w.feasibility_y, regular) >= 1.0;
-          EXPECT_EQ(wpg::gaitReachesCommand(v, omega, 0.8, w.feasibility_x, w.feasibility_y,
-                                            regular),
-                    reaches)
+          EXPECT_EQ(
+              wpg::gaitReachesCommand(v, omega, 0.8, w.feasibility_x, w.feasibility_y, regular),
+              reaches)
               << angle << " " << omega << " " << scale << " " << regular;
           (reaches ? reached : missed) += 1;
         }

@@ -72,9 +72,10 @@ void checkScenario(Scenario* scenario_ptr, const Source& source) {
     const long periods = std::lround(scenario.request.duration / T) *
                          std::lround(T / scenario.walking.control_period);
     if (periods < 2) {
-      source.failWith("duration", "expected a walk of at least 2 control periods for the "
-                                  "multibody replay (replay or filter is on), got " +
-                                      std::to_string(periods));
+      source.failWith("duration",
+                      "expected a walk of at least 2 control periods for the "
+                      "multibody replay (replay or filter is on), got " +
+                          std::to_string(periods));
     }
   }
 

@@ -22,9 +22,7 @@ template <typename Get>
 ScenarioField referenceField(std::string key, Get get) {
   ScenarioField field;
   field.key = std::move(key);
-  field.copy = [get](const Scenario& from, Scenario* to) {
-    get(*to) = get(from);
-  };
+  field.copy = [get](const Scenario& from, Scenario* to) { get(*to) = get(from); };
   using Value = std::decay_t<decltype(get(std::declval<Scenario&>()))>;
   if constexpr (std::is_same_v<Value, double>) {
     field.number = [get](Scenario* scenario) { return &get(*scenario); };
@@ -38,11 +36,13 @@ std::optional<ScenarioField> walkingField(const std::string& key, const std::str
     if (name != row.name) continue;
     if (row.number) {
       const auto member = row.number;
-      return referenceField(key, [member](auto& s) -> auto& { return s.walking.*member; });
+      return referenceField(
+          key, [member](auto& s) -> auto& { return s.walking.*member; });
     }
     if (row.integer) {
       const auto member = row.integer;
-      return referenceField(key, [member](auto& s) -> auto& { return s.walking.*member; });
+      return referenceField(
+          key, [member](auto& s) -> auto& { return s.walking.*member; });
     }
     if (row.polygon) {
       const auto member = row.polygon;
@@ -69,12 +69,12 @@ std::optional<ScenarioField> settingField(const std::string& key, const std::str
     if (name != row.name) continue;
     if (row.positive) {
       const auto member = row.positive;
-      return referenceField(key,
-                            [member, settings](auto& s) -> auto& { return settings(s).*member; });
+      return referenceField(
+          key, [member, settings](auto& s) -> auto& { return settings(s).*member; });
     }
     const auto member = row.integer;
-    return referenceField(key,
-                          [member, settings](auto& s) -> auto& { return settings(s).*member; });
+    return referenceField(
+        key, [member, settings](auto& s) -> auto& { return settings(s).*member; });
   }
   return std::nullopt;
 }
@@ -87,7 +87,8 @@ std::optional<ScenarioField> vectorField(const std::string& key, const std::vect
   if (rest.size() != 1 || !rest[0].key.empty() || rest[0].index >= static_cast<std::size_t>(size))
     return std::nullopt;
   const Eigen::Index c = static_cast<Eigen::Index>(rest[0].index);
-  return referenceField(key, [get, c](auto& s) -> auto& { return get(s)[c]; });
+  return referenceField(
+      key, [get, c](auto& s) -> auto& { return get(s)[c]; });
 }
 
 // `<list>[i].<name>...` of the entries of the request's lists.
@@ -101,38 +102,42 @@ std::optional<ScenarioField> listEntryField(const std::string& key,
   const std::vector<PathStep> rest(path.begin() + 3, path.end());
   const WalkRequest& request = base.request;
   if (list == "reference" && i < request.reference.size() && !base.goal.enabled && name == "v") {
-    return vectorField(key, rest, 3,
-                       [i](auto& s) -> auto& { return s.request.reference[i].velocity; });
+    return vectorField(
+        key, rest, 3, [i](auto& s) -> auto& { return s.request.reference[i].velocity; });
   }
   if (list == "pushes" && i < request.pushes.size()) {
     if (name == "force") {
-      return vectorField(key, rest, 2,
-                         [i](auto& s) -> auto& { return s.request.pushes[i].force; });
+      return vectorField(
+          key, rest, 2, [i](auto& s) -> auto& { return s.request.pushes[i].force; });
     }
     if (name == "duration" && rest.empty()) {
-      return referenceField(key, [i](auto& s) -> auto& { return s.request.pushes[i].duration; });
+      return referenceField(
+          key, [i](auto& s) -> auto& { return s.request.pushes[i].duration; });
     }
   }
   if (list == "obstacles" && i < request.obstacles.size()) {
     const ObstacleType type = request.obstacles[i].type;
     const bool circle = type == ObstacleType::kCircle, box = type == ObstacleType::kBox;
     if (name == "center" && (circle || box)) {
-      return vectorField(key, rest, 2,
-                         [i](auto& s) -> auto& { return s.request.obstacles[i].center; });
+      return vectorField(
+          key, rest, 2, [i](auto& s) -> auto& { return s.request.obstacles[i].center; });
     }
     if (name == "size" && box) {
-      return vectorField(key, rest, 2,
-                         [i](auto& s) -> auto& { return s.request.obstacles[i].size; });
+      return vectorField(
+          key, rest, 2, [i](auto& s) -> auto& { return s.request.obstacles[i].size; });
     }
     if (!rest.empty()) return std::nullopt;
     if (name == "radius" && circle) {
-      return referenceField(key, [i](auto& s) -> auto& { return s.request.obstacles[i].radius; });
+      return referenceField(
+          key, [i](auto& s) -> auto& { return s.request.obstacles[i].radius; });
     }
     if (name == "yaw" && box) {
-      return referenceField(key, [i](auto& s) -> auto& { return s.request.obstacles[i].yaw; });
+      return referenceField(
+          key, [i](auto& s) -> auto& { return s.request.obstacles[i].yaw; });
     }
     if (name == "margin") {
-      return referenceField(key, [i](auto& s) -> auto& { return s.request.obstacles[i].margin; });
+      return referenceField(
+          key, [i](auto& s) -> auto& { return s.request.obstacles[i].margin; });
     }
   }
   return std::nullopt;
@@ -163,24 +168,30 @@ std::optional<ScenarioField> compileScenarioField(const std::string& key, const 
     // The run's own name replaces a swept `name` (StudyRun::name): nothing to copy.
     if (top == "name") return ScenarioField{canonical, [](const Scenario&, Scenario*) {}, {}};
     if (top == "duration") {
-      return referenceField(canonical, [](auto& s) -> auto& { return s.request.duration; });
+      return referenceField(
+          canonical, [](auto& s) -> auto& { return s.request.duration; });
     }
     if (top == "robot_mass") {
-      return referenceField(canonical, [](auto& s) -> auto& { return s.request.robot_mass; });
+      return referenceField(
+          canonical, [](auto& s) -> auto& { return s.request.robot_mass; });
     }
     // A whole list: its reader checks the entries against each other within the value. The
     // obstacles' known_to_planner flags and the reference matter only without a goal.
     if (top == "reference" && !base.goal.enabled) {
-      return referenceField(canonical, [](auto& s) -> auto& { return s.request.reference; });
+      return referenceField(
+          canonical, [](auto& s) -> auto& { return s.request.reference; });
     }
     if (top == "pushes") {
-      return referenceField(canonical, [](auto& s) -> auto& { return s.request.pushes; });
+      return referenceField(
+          canonical, [](auto& s) -> auto& { return s.request.pushes; });
     }
     if (top == "obstacles" && !base.goal.enabled) {
-      return referenceField(canonical, [](auto& s) -> auto& { return s.request.obstacles; });
+      return referenceField(
+          canonical, [](auto& s) -> auto& { return s.request.obstacles; });
     }
     if (top == "replay" && !base.filter) {
-      return referenceField(canonical, [](auto& s) -> auto& { return s.replay; });
+      return referenceField(
+          canonical, [](auto& s) -> auto& { return s.replay; });
     }
     return std::nullopt;
   }
@@ -189,19 +200,21 @@ std::optional<ScenarioField> compileScenarioField(const std::string& key, const 
     if (top == "walking" && !base.goal.enabled && !extensions) return walkingField(canonical, name);
     if (top == "generator") {
       if (name == "stop_when_blocked") {
-        return referenceField(canonical,
-                              [](auto& s) -> auto& { return s.request.generator.stop_when_blocked; });
+        return referenceField(
+            canonical, [](auto& s) -> auto& { return s.request.generator.stop_when_blocked; });
       }
       if (name == "record_plan") {
-        return referenceField(canonical,
-                              [](auto& s) -> auto& { return s.request.generator.record_plan; });
+        return referenceField(
+            canonical, [](auto& s) -> auto& { return s.request.generator.record_plan; });
       }
-      return settingField(canonical, name, detail::generatorSettingFields(),
-                          [](auto& s) -> auto& { return s.request.generator; });
+      return settingField(
+          canonical, name, detail::generatorSettingFields(),
+          [](auto& s) -> auto& { return s.request.generator; });
     }
     if (top == "filter_settings") {
-      return settingField(canonical, name, detail::filterSettingFields(),
-                          [](auto& s) -> auto& { return s.filter_settings; });
+      return settingField(
+          canonical, name, detail::filterSettingFields(),
+          [](auto& s) -> auto& { return s.filter_settings; });
     }
     return std::nullopt;
   }

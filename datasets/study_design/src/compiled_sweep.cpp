@@ -13,8 +13,8 @@ namespace {
 
 // The base with one more override, as the loader reads it; nothing when it refuses it.
 std::optional<Scenario> loadWith(const std::string& base_text, const std::string& base_origin,
-                                 const std::string& robots_dir,
-                                 std::vector<std::string> overrides, const std::string& name) {
+                                 const std::string& robots_dir, std::vector<std::string> overrides,
+                                 const std::string& name) {
   overrides.push_back("name=" + name);
   try {
     return loadScenarioText(base_text, base_origin, overrides, robots_dir);

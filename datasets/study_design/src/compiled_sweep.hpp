@@ -48,7 +48,7 @@ class CompiledSweep {
 
  private:
   struct CompiledKey {
-    std::optional<ScenarioField> field;          // nothing: structural
+    std::optional<ScenarioField> field;           // nothing: structural
     std::vector<std::optional<Scenario>> loaded;  // per listed value; nothing: refused
     bool by_number = false;       // its values are numbers set as they are (random, or listed)
     bool range_accepted = false;  // by_number: its smallest and largest values load

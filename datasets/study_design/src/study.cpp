@@ -18,9 +18,9 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "compiled_sweep.hpp"
 #include "wpg/datasets/input/yaml_input.hpp"
 #include "wpg/qp/hessian_factor_cache.hpp"
-#include "compiled_sweep.hpp"
 
 namespace wpg::datasets {
 namespace {
@@ -532,8 +532,9 @@ Study loadStudy(const std::string& path, const BaseResolver& resolve_base,
   // speeds_weights_heights.yaml instead of 6000), and the factors are the same bits shared or
   // not (qp/hessian_factor_cache.hpp); it holds at most its budget, whatever the runs.
   expansion->hessian_factors = std::make_shared<qp::HessianFactorCache>();
-  expansion->compiled = CompiledSweep(expansion->base_text, expansion->base_origin, robots_dir,
-                                      expansion->constants, study.name + "_0", sweptKeys(*expansion));
+  expansion->compiled =
+      CompiledSweep(expansion->base_text, expansion->base_origin, robots_dir, expansion->constants,
+                    study.name + "_0", sweptKeys(*expansion));
   study.runs = StudyRuns(total, [expansion](std::size_t index, StudyRuns::Make what) {
     return expansion->make(index, what);
   });
