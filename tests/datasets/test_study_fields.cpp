@@ -143,7 +143,8 @@ sweep:
   EXPECT_GT(warned, 10u);  // the warnings are compared, not only their absence
 }
 
-// A structural key (a list's entry) is loaded from YAML: the same runs.
+// A structural key (a list's entry), or two keys one inside the other, are loaded from
+// YAML: the same runs.
 TEST_F(StudyFields, StructuralKeyIsLoaded) {
   const Study study = load(R"(name: structural
 base: walk_forward
@@ -153,6 +154,25 @@ sweep:
     "reference[1]": [{t: 1.0, v: [0.1, 0, 0]}, {t: 2.0, v: [0.2, 0, 0]}]
 )");
   expectEveryRunEqual(study, /*from_fields=*/false);
+  // A whole list compiles, but not with a key inside it (its list may change length).
+  const Study nested = load(R"(name: nested
+base: {name: nested, robot: hrp2, duration: 3.0, reference: [],
+       obstacles: [{type: circle, center: [3.0, 0.0], radius: 0.2, margin: 0.2}]}
+sweep:
+  grid:
+    obstacles: [[{type: circle, center: [3.0, 0.0], radius: 0.2}],
+                [{type: circle, center: [2.0, 1.0], radius: 0.3}, {type: box, center: [4.0, 0.0], size: [0.2, 0.2]}]]
+    "obstacles[0].radius": [0.1, 0.4]
+)");
+  expectEveryRunEqual(nested, /*from_fields=*/false);
+  const Study whole = load(R"(name: whole
+base: {name: whole, robot: hrp2, duration: 3.0, reference: []}
+sweep:
+  zip:
+    obstacles: [[{type: circle, center: [3.0, 0.0], radius: 0.2}],
+                [{type: circle, center: [2.0, 1.0], radius: 0.3}, {type: box, center: [4.0, 0.0], size: [0.2, 0.2]}]]
+)");
+  expectEveryRunEqual(whole);
 }
 
 // A run the loader refuses for a combination of values each accepted alone (a CoP margin

@@ -55,13 +55,17 @@ CompiledSweep::CompiledSweep(const std::string& base_text, const std::string& ba
   base_ = loadWith(base_text, base_origin, robots_dir, first, first_name);
   if (!base_) return;
   for (const std::string& constant : constants) constants_.push_back(appliedOverride(constant));
+  std::vector<std::optional<ScenarioField>> fields;
+  for (const SweptKey& swept : keys) fields.push_back(compileScenarioField(swept.key, *base_));
   for (std::size_t k = 0; k < keys.size(); ++k) {
     const SweptKey& swept = keys[k];
     CompiledKey compiled;
-    compiled.field = compileScenarioField(swept.key, *base_);
-    for (const SweptKey& other : keys) {
-      if (compiled.field && (nested(swept.key, other.key) || nested(other.key, swept.key)))
-        compiled.field.reset();  // nested keys: the outer one may change the inner one's list
+    compiled.field = fields[k];
+    for (const std::optional<ScenarioField>& other : fields) {
+      // Nested keys (in their canonical form): the outer one may change the inner one's list.
+      if (compiled.field && other &&
+          (nested(compiled.field->key, other->key) || nested(other->key, compiled.field->key)))
+        compiled.field.reset();
     }
     // A key of plain numbers into a number field takes them as they are (a random key's draws,
     // or listed numbers): the loader accepted the smallest and the largest, and what a reader
