@@ -145,7 +145,7 @@ void writeSituationScenario(const PushSituation& situation, const SituationSourc
                             const std::vector<std::string>& overrides) {
   std::string text = "# " + std::string(source.scenario) + " with --set";
   for (const std::string& o : overrides) text += " " + o;
-  text += " (wpg push-sweep)\n" + situation.base.resolved_yaml;
+  text += " (wpg push-sweep)\n" + resolvedScenarioText(situation.base);
   datasets::writeFileAtomically(situation.scenario, text);  // never through a link
 }
 
@@ -238,7 +238,7 @@ int pushSweepCommand(const PushSweepOptions& options) {
   file.rows = rows;
   for (const PushSituation& situation : situations) {
     file.situations.push_back(situation.name);
-    file.scenarios.push_back(situation.base.resolved_yaml);
+    file.scenarios.push_back(resolvedScenarioText(situation.base));
     file.step_lift_off.push_back(situation.lift_off);
   }
   file.overrides = options.overrides;

@@ -93,38 +93,52 @@ bool feasibleLine(const HalfPlanes& h, const Vector2& point, const Vector2& dire
   return low <= high + 1e-12;
 }
 
-double reach(const Vector2& target, double omega, double step_duration,
-             const std::array<Vector2, 5>& left, const std::array<Vector2, 5>& right,
-             bool regular, bool left_first) {
-  const double delta = omega * step_duration;
-  const Matrix2 m = -0.5 * rotation(-delta);  // m = M p2
-  const Matrix2 a1 = rotation(delta / 2);
-  const Matrix2 a2 =
-      rotation(delta / 2) * ((rotation(2 * delta) - Matrix2::Identity()) * m + rotation(delta));
-  const double sinc = std::abs(delta) > 1e-12 ? std::sin(delta) / delta : 1.0;
-  const Matrix2 k = rotation(-delta) / (2 * step_duration * sinc);
-  const Matrix2 v1 = k * a1, v2 = k * a2;
-  HalfPlanes first, second;
-  addPolygon(left_first ? left : right, first);
-  addPolygon(left_first ? right : left, second);
-  const Matrix2 v2_inverse = v2.inverse();
-  const Matrix2 w = v2_inverse * v1;
-  const Vector2 u = v2_inverse * target;
+// Whether the stride anchored at the left (or right) step walks `scale` times the target:
+// the linear program of gait_reach.hpp at one lambda.
+class StrideFeasibility {
+ public:
+  StrideFeasibility(const Vector2& target, double omega, double step_duration,
+                    const std::array<Vector2, 5>& left, const std::array<Vector2, 5>& right,
+                    bool regular, bool left_first)
+      : regular_(regular) {
+    const double delta = omega * step_duration;
+    const Matrix2 m = -0.5 * rotation(-delta);  // m = M p2
+    const Matrix2 a1 = rotation(delta / 2);
+    const Matrix2 a2 =
+        rotation(delta / 2) * ((rotation(2 * delta) - Matrix2::Identity()) * m + rotation(delta));
+    const double sinc = std::abs(delta) > 1e-12 ? std::sin(delta) / delta : 1.0;
+    const Matrix2 k = rotation(-delta) / (2 * step_duration * sinc);
+    const Matrix2 v1 = k * a1, v2 = k * a2;
+    addPolygon(left_first ? left : right, first_);
+    addPolygon(left_first ? right : left, second_);
+    const Matrix2 v2_inverse = v2.inverse();
+    w_ = v2_inverse * v1;
+    u_ = v2_inverse * target;
+  }
 
-  const auto feasible = [&](double scale) {
+  bool operator()(double scale) const {
     // p2 = V2^-1 (scale v - V1 p1) inside the second polygon: a condition on p1.
-    HalfPlanes rows = first;
-    for (int r = 0; r < second.count; ++r)
-      rows.add(-(second.a[r].transpose() * w).transpose(), second.b[r] - scale * second.a[r].dot(u));
-    if (!regular) return feasible2d(rows);
+    HalfPlanes rows = first_;
+    for (int r = 0; r < second_.count; ++r)
+      rows.add(-(second_.a[r].transpose() * w_).transpose(),
+               second_.b[r] - scale * second_.a[r].dot(u_));
+    if (!regular_) return feasible2d(rows);
     // p1.x = p2.x: (e1 + (V2^-1 V1)^T e1) . p1 = scale (V2^-1 v).x
-    const Vector2 normal = Vector2(1.0, 0.0) + w.row(0).transpose();
-    const double value = scale * u.x();
+    const Vector2 normal = Vector2(1.0, 0.0) + w_.row(0).transpose();
+    const double value = scale * u_.x();
     if (normal.norm() < 1e-15) return std::abs(value) < 1e-12 && feasible2d(rows);
     const Vector2 point = normal * value / normal.dot(normal);
     return feasibleLine(rows, point, Vector2(-normal.y(), normal.x()));
-  };
+  }
 
+ private:
+  bool regular_;
+  HalfPlanes first_, second_;
+  Matrix2 w_;
+  Vector2 u_;
+};
+
+double reach(const StrideFeasibility& feasible) {
   if (!feasible(0.0)) return 0.0;
   double low = 0.0, high = 1.0;
   while (feasible(high) && high < 64.0) {
@@ -142,6 +156,16 @@ double reach(const Vector2& target, double omega, double step_duration,
   return low;
 }
 
+// The polygons of a left step (in the right foot's frame) and of its mirror image.
+void footPolygons(const std::array<double, 5>& feasibility_x,
+                  const std::array<double, 5>& feasibility_y, std::array<Vector2, 5>* left,
+                  std::array<Vector2, 5>* right) {
+  for (int i = 0; i < 5; ++i) {
+    (*left)[i] = Vector2(feasibility_x[i], feasibility_y[i]);
+    (*right)[i] = Vector2(feasibility_x[i], -feasibility_y[i]);
+  }
+}
+
 }  // namespace
 
 double gaitReach(const Eigen::Vector2d& velocity, double omega, double step_duration,
@@ -150,12 +174,25 @@ double gaitReach(const Eigen::Vector2d& velocity, double omega, double step_dura
   if (std::abs(velocity.x()) < 1e-12 && std::abs(velocity.y()) < 1e-12)
     return std::numeric_limits<double>::infinity();
   std::array<Vector2, 5> left, right;
-  for (int i = 0; i < 5; ++i) {
-    left[i] = Vector2(feasibility_x[i], feasibility_y[i]);
-    right[i] = Vector2(feasibility_x[i], -feasibility_y[i]);
+  footPolygons(feasibility_x, feasibility_y, &left, &right);
+  return std::max(
+      reach(StrideFeasibility(velocity, omega, step_duration, left, right, regular, true)),
+      reach(StrideFeasibility(velocity, omega, step_duration, left, right, regular, false)));
+}
+
+bool gaitReachesCommand(const Eigen::Vector2d& velocity, double omega, double step_duration,
+                        const std::array<double, 5>& feasibility_x,
+                        const std::array<double, 5>& feasibility_y, bool regular) {
+  if (std::abs(velocity.x()) < 1e-12 && std::abs(velocity.y()) < 1e-12) return true;
+  std::array<Vector2, 5> left, right;
+  footPolygons(feasibility_x, feasibility_y, &left, &right);
+  // reach() >= 1 exactly when lambda = 0 and lambda = 1 are feasible: its doubling starts at 1.
+  for (const bool left_first : {true, false}) {
+    const StrideFeasibility feasible(velocity, omega, step_duration, left, right, regular,
+                                     left_first);
+    if (feasible(0.0) && feasible(1.0)) return true;
   }
-  return std::max(reach(velocity, omega, step_duration, left, right, regular, true),
-                  reach(velocity, omega, step_duration, left, right, regular, false));
+  return false;
 }
 
 }  // namespace wpg

@@ -40,11 +40,11 @@ TEST_F(BlockedKeys, ReadFromTheFileAndFromSetAndResolvedAgain) {
   EXPECT_TRUE(s.request.generator.stop_when_blocked);
   for (const char* line :
        {"blocked_window_cycles: 5", "blocked_progress: 0.1", "stop_when_blocked: true"})
-    EXPECT_NE(s.resolved_yaml.find(line), std::string::npos) << line;
+    EXPECT_NE(resolvedScenarioText(s).find(line), std::string::npos) << line;
   // The resolved text loads to the same scenario.
-  const std::string again = write("resolved.yaml", s.resolved_yaml);
-  EXPECT_EQ(wpg::datasets::loadScenario(again, {}, wpg_test::kRobotsDir).resolved_yaml,
-            s.resolved_yaml);
+  const std::string again = write("resolved.yaml", resolvedScenarioText(s));
+  EXPECT_EQ(resolvedScenarioText(wpg::datasets::loadScenario(again, {}, wpg_test::kRobotsDir)),
+            resolvedScenarioText(s));
   const wpg::datasets::Scenario set =
       load("{}", {"generator.blocked_window_cycles=1", "generator.stop_when_blocked=true"});
   EXPECT_EQ(set.request.generator.blocked_window_cycles, 1);

@@ -116,9 +116,10 @@ TEST_F(ComparisonFiles, RandomFieldsAreDrawnPerSeedAndReproducible) {
   std::set<std::string> fields;
   for (std::size_t i = 6; i < 12; ++i) {  // world "field": 2 variants x 3 seeds
     const auto& scenario = a.study.runs[i].scenario;
-    EXPECT_EQ(scenario.resolved_yaml.substr(scenario.resolved_yaml.find("obstacles")),
-              b.study.runs[i].scenario.resolved_yaml.substr(
-                  b.study.runs[i].scenario.resolved_yaml.find("obstacles")));
+    EXPECT_EQ(
+        resolvedScenarioText(scenario).substr(resolvedScenarioText(scenario).find("obstacles")),
+        resolvedScenarioText(b.study.runs[i].scenario)
+            .substr(resolvedScenarioText(b.study.runs[i].scenario).find("obstacles")));
     ASSERT_EQ(scenario.request.obstacles.size(), 6u);
     const Eigen::Vector2d goal = scenario.goal.goal.position;
     EXPECT_DOUBLE_EQ(goal.x(), 6.0);  // default area [1, 5, -1.5, 1.5]: x_max + 1

@@ -47,14 +47,15 @@ TEST(GoalScenario, ShippedGoalScenariosReadTheirGoalAndPlanner) {
 
   const Scenario plain = loadScenario(shipped("walk_forward"), {}, kRobotsDir);
   EXPECT_FALSE(plain.goal.enabled);
-  EXPECT_EQ(plain.resolved_yaml.find("goal"), std::string::npos);
+  EXPECT_EQ(resolvedScenarioText(plain).find("goal"), std::string::npos);
 }
 
 TEST(GoalScenario, TheResolvedScenarioLoadsAsTheSameGoalWalk) {
   for (const std::string name : {"goal_with_yaw", "goal_unknown_obstacle", "goal_u_trap"}) {
     const Scenario first = loadScenario(shipped(name), {"planner.bounds=[-3,8,-4,4]"}, kRobotsDir);
-    const Scenario again = loadScenarioText(first.resolved_yaml, "resolved", {}, kRobotsDir);
-    EXPECT_EQ(again.resolved_yaml, first.resolved_yaml) << name;
+    const Scenario again =
+        loadScenarioText(resolvedScenarioText(first), "resolved", {}, kRobotsDir);
+    EXPECT_EQ(resolvedScenarioText(again), resolvedScenarioText(first)) << name;
     EXPECT_EQ(again.goal.known_to_planner, first.goal.known_to_planner) << name;
     EXPECT_EQ(again.goal.planner.bounds, first.goal.planner.bounds) << name;
     EXPECT_EQ(again.goal.goal.has_yaw, first.goal.goal.has_yaw) << name;

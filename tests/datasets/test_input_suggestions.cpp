@@ -46,7 +46,7 @@ TEST_F(ScenarioFiles, PlannerNamesAreCaseInsensitiveAndStoredCanonical) {
                            "goal: {position: [1.0, 0.0]}\nplanner: {algorithm: RRTConnect}\n";
   const Scenario scenario = loadScenario(write("case.yaml", goal), {}, kRobotsDir);
   EXPECT_EQ(scenario.goal.planner.algorithm, "rrtconnect");
-  EXPECT_NE(scenario.resolved_yaml.find("algorithm: rrtconnect"), std::string::npos);
+  EXPECT_NE(resolvedScenarioText(scenario).find("algorithm: rrtconnect"), std::string::npos);
   const Scenario set =
       loadScenario(write("case_set.yaml", goal), {"planner.algorithm=RRTstar"}, kRobotsDir);
   EXPECT_EQ(set.goal.planner.algorithm, "rrtstar");
@@ -57,7 +57,7 @@ TEST_F(ScenarioFiles, EnumeratedWalkingValuesAreCaseInsensitiveAndSuggested) {
       loadScenario(write("enum.yaml", kValidScenario),
                    {"walking.obstacle_linearization=Command_Tangent"}, kRobotsDir);
   EXPECT_EQ(scenario.walking.obstacle_linearization, wpg::ObstacleLinearization::kCommandTangent);
-  EXPECT_NE(scenario.resolved_yaml.find("obstacle_linearization: command_tangent"),
+  EXPECT_NE(resolvedScenarioText(scenario).find("obstacle_linearization: command_tangent"),
             std::string::npos);
   expectError("enum_typo.yaml", kValidScenario,
               {"walking.obstacle_linearization", "step or command_tangent",

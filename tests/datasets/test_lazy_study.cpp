@@ -103,7 +103,9 @@ TEST_F(LazyStudy, RunIFromIAloneIsTheRunOfTheOrderedExpansion) {
                            2);
   EXPECT_EQ(again.fingerprint, study.fingerprint);
   for (const std::size_t i : {std::size_t{59}, std::size_t{0}, std::size_t{31}, std::size_t{7}}) {
-    EXPECT_EQ(again.runs[i].scenario.resolved_yaml, study.runs[i].scenario.resolved_yaml) << i;
+    EXPECT_EQ(resolvedScenarioText(again.runs[i].scenario),
+              resolvedScenarioText(study.runs[i].scenario))
+        << i;
   }
   // Every run of a small study is checked before any work.
   EXPECT_EQ(study.checked_runs.size(), study.runs.size());
@@ -144,7 +146,7 @@ TEST_F(LazyStudy, TenMillionRunsLoadWithABoundedCheck) {
   EXPECT_EQ(last.swept[0].number, 300.0 + 10.0 * 99);
   EXPECT_EQ(last.swept[1].number, 50.0 + 0.1 * 99);
   EXPECT_EQ(last.swept[2].number, 0.78 + (0.84 - 0.78) * wpg::datasets::uniformAt(1, 999));
-  EXPECT_NE(last.scenario.resolved_yaml.find("name: big_9999999"), std::string::npos);
+  EXPECT_NE(resolvedScenarioText(last.scenario).find("name: big_9999999"), std::string::npos);
   EXPECT_EQ(load(text, 2).fingerprint, study.fingerprint);
 }
 

@@ -32,7 +32,6 @@ Scenario handMadeScenario() {
   Scenario scenario;
   scenario.name = "hand_made";
   scenario.robot = "hrp2";
-  scenario.resolved_yaml = "name: hand_made\nrobot: hrp2\n";
   scenario.filter_settings.input_weight = 1e-5;
   scenario.filter_settings.preview_time = 0.665;
   return scenario;
@@ -219,7 +218,7 @@ TEST_F(MultibodyDatasetFiles, ReaderGivesBackTheWalk) {
   const wpg::datasets::StoredRun stored = readRunDataset(path("run.h5"));
   EXPECT_EQ(stored.name, "hand_made");
   EXPECT_EQ(stored.robot, "hrp2");
-  EXPECT_EQ(stored.scenario_yaml, handMadeScenario().resolved_yaml);
+  EXPECT_EQ(stored.scenario_yaml, resolvedScenarioText(handMadeScenario()));
   EXPECT_EQ(stored.result.success, written.success);
   EXPECT_EQ(stored.result.message, written.message);
   const wpg::WalkTrajectory& a = written.trajectory;

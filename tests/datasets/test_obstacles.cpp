@@ -130,11 +130,13 @@ TEST_F(ObstacleFiles, ResolvedYamlRoundTripsTheObstacles) {
   for (const char* key : {"obstacles:", "type: circle", "type: box", "type: polygon",
                           "vertices: [[4.0, -0.5], [4.6, -0.4], [4.3, 0.2]]", "yaw: 0.3",
                           "max_obstacles_in_qp: 3", "obstacle_reach: 2.0"}) {
-    EXPECT_NE(first.resolved_yaml.find(key), std::string::npos) << "'" << key << "' missing in:\n"
-                                                                << first.resolved_yaml;
+    EXPECT_NE(resolvedScenarioText(first).find(key), std::string::npos)
+        << "'" << key << "' missing in:\n"
+        << resolvedScenarioText(first);
   }
-  const Scenario second = loadScenario(write(first.resolved_yaml, "resolved.yaml"), {}, kRobotsDir);
-  EXPECT_EQ(second.resolved_yaml, first.resolved_yaml);
+  const Scenario second =
+      loadScenario(write(resolvedScenarioText(first), "resolved.yaml"), {}, kRobotsDir);
+  EXPECT_EQ(resolvedScenarioText(second), resolvedScenarioText(first));
   ASSERT_EQ(second.request.obstacles.size(), first.request.obstacles.size());
   for (std::size_t i = 0; i < first.request.obstacles.size(); ++i) {
     const wpg::Obstacle& a = first.request.obstacles[i];
@@ -150,7 +152,7 @@ TEST_F(ObstacleFiles, ResolvedYamlRoundTripsTheObstacles) {
   EXPECT_EQ(second.request.generator.max_obstacles_in_qp, 3);
   EXPECT_EQ(second.request.generator.obstacle_reach, 2.0);
   // Without obstacles the key is still explicit.
-  EXPECT_NE(load("").resolved_yaml.find("obstacles: []"), std::string::npos);
+  EXPECT_NE(resolvedScenarioText(load("")).find("obstacles: []"), std::string::npos);
 }
 
 TEST_F(ObstacleFiles, OverridesReachTheObstacles) {
@@ -249,8 +251,8 @@ TEST(ShippedObstacleScenarios, LoadAndRoundTrip) {
     const Scenario s = loadScenario(kScenariosDir + "/" + entry.name + ".yaml", {}, kRobotsDir);
     EXPECT_EQ(s.name, entry.name);
     EXPECT_EQ(s.request.obstacles.size(), entry.obstacles);
-    std::ofstream(path) << s.resolved_yaml;
-    EXPECT_EQ(loadScenario(path, {}, kRobotsDir).resolved_yaml, s.resolved_yaml);
+    std::ofstream(path) << resolvedScenarioText(s);
+    EXPECT_EQ(resolvedScenarioText(loadScenario(path, {}, kRobotsDir)), resolvedScenarioText(s));
   }
   fs::remove(path);
   const Scenario a = loadScenario(kScenariosDir + "/paper_experiment_a.yaml", {}, kRobotsDir);

@@ -56,12 +56,12 @@ TEST(PlanReadback, ResolvedScenarioKeepsItsExtensions) {
   const wpg::datasets::Scenario scenario = corridor();
   ASSERT_EQ(scenario.request.generator.constraints.size(), 1u);
   const wpg::datasets::Scenario again = wpg::datasets::loadScenarioText(
-      scenario.resolved_yaml, "resolved", {}, kSource + "/robots");
+      resolvedScenarioText(scenario), "resolved", {}, kSource + "/robots");
   ASSERT_EQ(again.request.generator.constraints.size(), 1u);
   EXPECT_EQ(again.request.generator.constraints[0].name, "corridor");
   EXPECT_EQ(again.request.generator.constraints[0].arguments,
             scenario.request.generator.constraints[0].arguments);
-  EXPECT_EQ(again.resolved_yaml, scenario.resolved_yaml);
+  EXPECT_EQ(resolvedScenarioText(again), resolvedScenarioText(scenario));
 }
 
 }  // namespace

@@ -45,7 +45,7 @@ TEST(ShippedScenarios, EveryFileLoads) {
     EXPECT_EQ(scenario.name, item.path().stem().string()) << "name: should match the file name";
     EXPECT_EQ(scenario.robot, "hrp2");
     EXPECT_EQ(scenario.source_path, item.path().string());
-    EXPECT_FALSE(scenario.resolved_yaml.empty());
+    EXPECT_FALSE(resolvedScenarioText(scenario).empty());
     EXPECT_DOUBLE_EQ(scenario.request.robot_mass, 56.037);
     EXPECT_EQ(scenario.request.generator.algorithm, wpg::GeneratorAlgorithm::kNmpc);
     EXPECT_EQ(scenario.request.generator.sqp_iterations, 1);
@@ -161,9 +161,9 @@ TEST(ShippedScenarios, ResolvedYamlRoundTrips) {
                            "paper_experiment_b"}) {
     SCOPED_TRACE(name);
     const Scenario first = loadShipped(name, {"generator.sqp_tolerance=1e-9"});
-    std::ofstream(path) << first.resolved_yaml;
+    std::ofstream(path) << resolvedScenarioText(first);
     const Scenario second = loadScenario(path, {}, kRobotsDir);
-    EXPECT_EQ(second.resolved_yaml, first.resolved_yaml);
+    EXPECT_EQ(resolvedScenarioText(second), resolvedScenarioText(first));
     EXPECT_EQ(second.name, first.name);
     EXPECT_EQ(second.walking.max_step_yaw_change, first.walking.max_step_yaw_change);
     EXPECT_EQ(second.walking.feasibility_y, first.walking.feasibility_y);
@@ -189,7 +189,7 @@ TEST(ShippedScenarios, ResolvedYamlRoundTrips) {
 }
 
 TEST(ShippedScenarios, ResolvedYamlListsEveryKey) {
-  const std::string yaml = loadShipped("turn_on_the_spot").resolved_yaml;
+  const std::string yaml = resolvedScenarioText(loadShipped("turn_on_the_spot"));
   for (const char* key :
        {"name: turn_on_the_spot", "robot: hrp2", "duration: 10.0", "robot_mass: 56.037",
         "algorithm: nmpc", "sqp_iterations: 1", "max_sqp_iterations:", "sqp_tolerance:",
@@ -217,10 +217,11 @@ TEST(ShippedScenarios, ReplayAndFilterKeys) {
   EXPECT_EQ(filtered.filter_settings.error_weight, 1.0);
   EXPECT_EQ(filtered.filter_settings.input_weight, 1e-5);
   EXPECT_EQ(filtered.filter_settings.preview_time, 0.665);
-  EXPECT_NE(filtered.resolved_yaml.find("replay: true"), std::string::npos) << filtered.resolved_yaml;
-  const Scenario again = wpg::datasets::loadScenarioText(filtered.resolved_yaml, "run.h5:/scenario",
-                                                         {}, kRobotsDir);
-  EXPECT_EQ(again.resolved_yaml, filtered.resolved_yaml);
+  EXPECT_NE(resolvedScenarioText(filtered).find("replay: true"), std::string::npos)
+      << resolvedScenarioText(filtered);
+  const Scenario again = wpg::datasets::loadScenarioText(resolvedScenarioText(filtered),
+                                                         "run.h5:/scenario", {}, kRobotsDir);
+  EXPECT_EQ(resolvedScenarioText(again), resolvedScenarioText(filtered));
   EXPECT_EQ(again.source_path, "run.h5:/scenario");
   EXPECT_TRUE(again.filter);
   EXPECT_EQ(again.filter_settings.preview_time, 0.665);
@@ -246,8 +247,8 @@ TEST(ShippedScenarios, FilterModeKeys) {
   EXPECT_EQ(online.filter_loop.mode, wpg::DynamicFilterMode::kBoth);
   EXPECT_TRUE(online.filter_loop.reinitialize_wpg);
   EXPECT_EQ(online.filter_settings.preview_time, 1.6);  // the other keys keep their defaults
-  const Scenario again =
-      wpg::datasets::loadScenarioText(online.resolved_yaml, "run.h5:/scenario", {}, kRobotsDir);
+  const Scenario again = wpg::datasets::loadScenarioText(resolvedScenarioText(online),
+                                                         "run.h5:/scenario", {}, kRobotsDir);
   EXPECT_EQ(again.filter_loop.mode, wpg::DynamicFilterMode::kBoth);
   EXPECT_TRUE(again.filter_loop.reinitialize_wpg);
   // closed_loop and its own online weight, read back through the resolved YAML.
@@ -258,8 +259,8 @@ TEST(ShippedScenarios, FilterModeKeys) {
   EXPECT_EQ(closed.filter_loop.online_input_weight, 2e-4);
   EXPECT_EQ(closed.filter_settings.input_weight, 1e-6);  // the offline pass's R is its own key
   EXPECT_EQ(defaults.filter_loop.online_input_weight, 1e-3);
-  const Scenario closed_again =
-      wpg::datasets::loadScenarioText(closed.resolved_yaml, "run.h5:/scenario", {}, kRobotsDir);
+  const Scenario closed_again = wpg::datasets::loadScenarioText(resolvedScenarioText(closed),
+                                                                "run.h5:/scenario", {}, kRobotsDir);
   EXPECT_EQ(closed_again.filter_loop.mode, wpg::DynamicFilterMode::kClosedLoop);
   EXPECT_EQ(closed_again.filter_loop.online_input_weight, 2e-4);
   for (const char* bad : {"filter_settings.mode=closed", "filter_settings.mode=[online]",

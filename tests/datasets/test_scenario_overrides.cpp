@@ -28,10 +28,12 @@ TEST(Overrides, ScalarsNestedKeysAndListIndices) {
   EXPECT_EQ(s.request.reference[1].velocity, Eigen::Vector3d(0.3, 0.0, 0.0));
   EXPECT_DOUBLE_EQ(s.walking.feasibility_y[2], 0.35);
   EXPECT_DOUBLE_EQ(s.walking.feasibility_y[1], 0.3);  // the rest of the robot's list stays
-  EXPECT_NE(s.resolved_yaml.find("duration: 20.0"), std::string::npos) << s.resolved_yaml;
-  EXPECT_NE(s.resolved_yaml.find("algorithm: lmpc"), std::string::npos) << s.resolved_yaml;
-  EXPECT_NE(s.resolved_yaml.find("{t: 1.0, v: [0.3, 0.0, 0.0]}"), std::string::npos)
-      << s.resolved_yaml;
+  EXPECT_NE(resolvedScenarioText(s).find("duration: 20.0"), std::string::npos)
+      << resolvedScenarioText(s);
+  EXPECT_NE(resolvedScenarioText(s).find("algorithm: lmpc"), std::string::npos)
+      << resolvedScenarioText(s);
+  EXPECT_NE(resolvedScenarioText(s).find("{t: 1.0, v: [0.3, 0.0, 0.0]}"), std::string::npos)
+      << resolvedScenarioText(s);
 }
 
 TEST(Overrides, AppendAndCreate) {
@@ -80,9 +82,9 @@ TEST_F(ScenarioFiles, BadOverrides) {
 TEST(Overrides, HeadingReferenceRoundTrips) {
   const Scenario s = loadShipped("walk_forward", {"walking.heading_reference=support_foot"});
   EXPECT_EQ(s.walking.heading_reference, wpg::HeadingReference::kSupportFoot);
-  EXPECT_NE(s.resolved_yaml.find("heading_reference: support_foot"), std::string::npos);
+  EXPECT_NE(resolvedScenarioText(s).find("heading_reference: support_foot"), std::string::npos);
   const Scenario again =
-      wpg::datasets::loadScenarioText(s.resolved_yaml, "run.h5:/scenario", {}, kRobotsDir);
+      wpg::datasets::loadScenarioText(resolvedScenarioText(s), "run.h5:/scenario", {}, kRobotsDir);
   EXPECT_EQ(again.walking.heading_reference, wpg::HeadingReference::kSupportFoot);
 }
 
@@ -91,9 +93,9 @@ TEST(Overrides, ObstacleDistanceFormRoundTrips) {
             wpg::ObstacleDistanceForm::kSoleClearance);
   const Scenario s = loadShipped("walk_forward", {"walking.obstacle_distance_form=paper"});
   EXPECT_EQ(s.walking.obstacle_distance_form, wpg::ObstacleDistanceForm::kPaper);
-  EXPECT_NE(s.resolved_yaml.find("obstacle_distance_form: paper"), std::string::npos);
+  EXPECT_NE(resolvedScenarioText(s).find("obstacle_distance_form: paper"), std::string::npos);
   const Scenario again =
-      wpg::datasets::loadScenarioText(s.resolved_yaml, "run.h5:/scenario", {}, kRobotsDir);
+      wpg::datasets::loadScenarioText(resolvedScenarioText(s), "run.h5:/scenario", {}, kRobotsDir);
   EXPECT_EQ(again.walking.obstacle_distance_form, wpg::ObstacleDistanceForm::kPaper);
 }
 
@@ -102,9 +104,9 @@ TEST(Overrides, ObstacleLinearizationRoundTrips) {
   EXPECT_EQ(defaults.walking.obstacle_linearization, wpg::ObstacleLinearization::kCommandTangent);
   const Scenario s = loadShipped("walk_forward", {"walking.obstacle_linearization=step"});
   EXPECT_EQ(s.walking.obstacle_linearization, wpg::ObstacleLinearization::kStep);
-  EXPECT_NE(s.resolved_yaml.find("obstacle_linearization: step"), std::string::npos);
+  EXPECT_NE(resolvedScenarioText(s).find("obstacle_linearization: step"), std::string::npos);
   const Scenario again =
-      wpg::datasets::loadScenarioText(s.resolved_yaml, "run.h5:/scenario", {}, kRobotsDir);
+      wpg::datasets::loadScenarioText(resolvedScenarioText(s), "run.h5:/scenario", {}, kRobotsDir);
   EXPECT_EQ(again.walking.obstacle_linearization, wpg::ObstacleLinearization::kStep);
 }
 
@@ -115,10 +117,10 @@ TEST(Overrides, ObstacleLandingLinearizationRoundTrips) {
       loadShipped("walk_forward", {"walking.obstacle_landing_linearization=command_tangent"});
   EXPECT_EQ(s.walking.obstacle_landing_linearization,
             wpg::ObstacleLinearization::kCommandTangent);
-  EXPECT_NE(s.resolved_yaml.find("obstacle_landing_linearization: command_tangent"),
+  EXPECT_NE(resolvedScenarioText(s).find("obstacle_landing_linearization: command_tangent"),
             std::string::npos);
   const Scenario again =
-      wpg::datasets::loadScenarioText(s.resolved_yaml, "run.h5:/scenario", {}, kRobotsDir);
+      wpg::datasets::loadScenarioText(resolvedScenarioText(s), "run.h5:/scenario", {}, kRobotsDir);
   EXPECT_EQ(again.walking.obstacle_landing_linearization,
             wpg::ObstacleLinearization::kCommandTangent);
 }

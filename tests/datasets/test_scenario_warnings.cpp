@@ -97,7 +97,8 @@ TEST(ScenarioWarnings, GoalYawBeyondATurnWarns) {
 
 TEST(ScenarioWarnings, ResolvedScenarioWarnsAgain) {
   const Scenario s = loadShipped("walk_forward", {"reference[1].v=[2.0, 0.0, 0.0]"});
-  const Scenario again = wpg::datasets::loadScenarioText(s.resolved_yaml, "stored", {}, kRobotsDir);
+  const Scenario again =
+      wpg::datasets::loadScenarioText(resolvedScenarioText(s), "stored", {}, kRobotsDir);
   ASSERT_EQ(again.warnings.size(), 1u);
   EXPECT_NE(again.warnings.front().find("stored: key 'reference[1].v[0]'"), std::string::npos);
 }

@@ -57,14 +57,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   try {
     const wpg::datasets::Scenario again = wpg::datasets::loadScenarioText(
-        scenario.resolved_yaml, "fuzz.yaml:/scenario", {}, robotsDirectory());
-    if (again.resolved_yaml != scenario.resolved_yaml) {
-      propertyViolated("the resolved scenario does not load to itself",
-                       "first:\n" + scenario.resolved_yaml + "\nagain:\n" + again.resolved_yaml);
+        resolvedScenarioText(scenario), "fuzz.yaml:/scenario", {}, robotsDirectory());
+    if (resolvedScenarioText(again) != resolvedScenarioText(scenario)) {
+      propertyViolated(
+          "the resolved scenario does not load to itself",
+          "first:\n" + resolvedScenarioText(scenario) + "\nagain:\n" + resolvedScenarioText(again));
     }
   } catch (const wpg::datasets::InputError& error) {
     propertyViolated("the resolved scenario of an accepted scenario is rejected",
-                     std::string(error.what()) + "\n" + scenario.resolved_yaml);
+                     std::string(error.what()) + "\n" + resolvedScenarioText(scenario));
   }
   return 0;
 }

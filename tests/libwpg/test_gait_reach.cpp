@@ -90,3 +90,32 @@ TEST(GaitReach, ZeroVelocityIsAlwaysReached) {
 }
 
 }  // namespace
+
+// gaitReachesCommand is gaitReach >= 1, also on the boundary (commands scaled to their reach,
+// a rounding either side), in any direction, turning or not, regular or not.
+TEST(GaitReach, ReachesCommandIsReachAtLeastOne) {
+  const wpg::WalkingParameters w;
+  int reached = 0, missed = 0;
+  for (int a = 0; a < 24; ++a) {
+    const double angle = 2.0 * M_PI * a / 24.0;
+    for (const double omega : {0.0, 0.15, -0.3}) {
+      for (const bool regular : {false, true}) {
+        const Vector2d direction(0.3 * std::cos(angle), 0.2 * std::sin(angle));
+        const double lambda =
+            wpg::gaitReach(direction, omega, 0.8, w.feasibility_x, w.feasibility_y, regular);
+        for (const double scale : {0.5, 1.0 - 1e-12, 1.0, 1.0 + 1e-12, 1.5}) {
+          const Vector2d v = scale * lambda * direction;
+          const bool reaches =
+              wpg::gaitReach(v, omega, 0.8, w.feasibility_x, w.feasibility_y, regular) >= 1.0;
+          EXPECT_EQ(
+              wpg::gaitReachesCommand(v, omega, 0.8, w.feasibility_x, w.feasibility_y, regular),
+              reaches)
+              << angle << " " << omega << " " << scale << " " << regular;
+          (reaches ? reached : missed) += 1;
+        }
+      }
+    }
+  }
+  EXPECT_GT(reached, 100);
+  EXPECT_GT(missed, 100);
+}

@@ -7,17 +7,18 @@
 
 namespace wpg::engine {
 
-// Run `index` of `study` as an executor walks it: when the study's runs do not store the NMPC's
-// plans (a lean study without the field plan, run_fields.hpp), they are not recorded either.
-// Recording only copies what each iteration predicted (libwpg's walk_loop.cpp): the walk is the
-// same bits (tests/cli/lean_fields.sh), for about a fifth less CPU. The stored scenario is the
-// study's, unchanged.
-inline datasets::StudyRun studyRunToWalk(const datasets::Study& study, std::size_t index) {
-  datasets::StudyRun run = study.runs[index];
+// The scenario an executor walks for `run` of `study`: when the study's runs do not store the
+// NMPC's plans (a lean study without the field plan, run_fields.hpp), they are not recorded
+// either. Recording only copies what each iteration predicted (libwpg's walk_loop.cpp): the walk
+// is the same bits (tests/cli/lean_fields.sh), for about a fifth less CPU. A copy: the run keeps
+// the study's scenario, whose resolved text its dataset stores.
+inline datasets::Scenario scenarioToWalk(const datasets::Study& study,
+                                         const datasets::StudyRun& run) {
+  datasets::Scenario scenario = run.scenario;
   if (!study.fields.has(datasets::RunField::kPlan)) {
-    run.scenario.request.generator.record_plan = false;
+    scenario.request.generator.record_plan = false;
   }
-  return run;
+  return scenario;
 }
 
 // Points into `result` (and the replay's record it holds): lives no longer than `result`.

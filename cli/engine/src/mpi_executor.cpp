@@ -113,8 +113,8 @@ void runPulled(const datasets::Study& study, const RunSource& next, int threads,
           std::lock_guard<std::mutex> lock(mutex);
           if (error) return;
         }
-        const datasets::StudyRun run = studyRunToWalk(study, *index);
-        const RunResult result = runScenario(run.scenario, settings);
+        const datasets::StudyRun run = study.runs[*index];
+        const RunResult result = runScenario(scenarioToWalk(study, run), settings);
         BatchRunRecordOf record(run, result, study.fields);
         const datasets::PreparedRun prepared = datasets::BatchDatasetWriter::prepare(record.record());
         record.record().values = values(run, result);

@@ -140,9 +140,9 @@ class ThreadExecutor : public StudyExecutor {
         [&](std::size_t position, int worker) {
           RunSettings settings{robots_directory_, &models[static_cast<std::size_t>(worker)]};
           FinishedRun finished;
-          finished.run = studyRunToWalk(study, run_at(position));
+          finished.run = study.runs[run_at(position)];
           const datasets::StudyRun& run = finished.run;
-          finished.result = runScenario(run.scenario, settings);
+          finished.result = runScenario(scenarioToWalk(study, run), settings);
           BatchRunRecordOf record(run, finished.result, study.fields);
           finished.prepared = datasets::BatchDatasetWriter::prepare(record.record());
           finished.values = handling.summary_values(run, finished.result);

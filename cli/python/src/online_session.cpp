@@ -93,7 +93,7 @@ void OnlineSession::setObstacles(const std::string& yaml) {
   // The scenario's own reader: the same keys, checks and messages as an `obstacles:` list.
   const std::lock_guard<std::mutex> lock(mutex_);
   const datasets::Scenario with = datasets::loadScenarioText(
-      scenario_.resolved_yaml, "set_obstacles", {"obstacles=" + yaml}, robotsDirectory());
+      resolvedScenarioText(scenario_), "set_obstacles", {"obstacles=" + yaml}, robotsDirectory());
   generator_.setObstacles(with.request.obstacles);
   scenario_.request.obstacles = with.request.obstacles;
 }

@@ -428,9 +428,11 @@ void bindRun(py::module_& m) {
                                return py::make_tuple(walk.blocked_position.x(),
                                                      walk.blocked_position.y());
                              })
-      .def_property_readonly("scenario_yaml",
-                             [](const RunSession& r) { return r.loaded.scenario.resolved_yaml; })
-      .def_property_readonly("warnings", [](const RunSession& r) { return r.loaded.scenario.warnings; })
+      .def_property_readonly(
+          "scenario_yaml",
+          [](const RunSession& r) { return resolvedScenarioText(r.loaded.scenario); })
+      .def_property_readonly("warnings",
+                             [](const RunSession& r) { return r.loaded.scenario.warnings; })
       .def_property_readonly("scenario_path", [](const RunSession& r) { return r.loaded.path; })
       .def_property_readonly("stored_file", [](const RunSession& r) { return r.stored_file; })
       .def_property_readonly("replayed",

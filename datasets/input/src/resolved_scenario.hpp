@@ -1,7 +1,7 @@
 #pragma once
 // The resolved scenario: every key explicit (all walking parameters, all generator settings),
 // numbers in a canonical form. Loading it as a scenario file gives the same Scenario again
-// (Scenario::resolved_yaml, stored in every dataset).
+// (resolvedScenarioText, stored in every dataset).
 #include <string>
 
 #include "wpg/datasets/input/scenario.hpp"

@@ -24,6 +24,7 @@
 #include "scenario_overrides.hpp"
 #include "scenario_sections.hpp"
 #include "scenario_warnings.hpp"
+#include "wpg/datasets/input/scenario_field.hpp"
 #include "wpg/datasets/input/yaml_input.hpp"
 #include "wpg/walk_generator.hpp"
 
@@ -32,6 +33,56 @@ namespace {
 
 namespace fs = std::filesystem;
 using namespace detail;  // NOLINT: the private pieces of this reader
+
+}  // namespace
+
+void checkScenario(Scenario* scenario_ptr, const Source& source) {
+  const Scenario& scenario = *scenario_ptr;
+  // Cross-field checks owned by libwpg (ranges, consistency of timings, ...).
+  try {
+    scenario.walking.validate();
+  } catch (const std::invalid_argument& error) {
+    source.failChecked(std::string("invalid walking parameters (robot '") + scenario.robot +
+                           "' merged with 'walking:' of the scenario): " + error.what(),
+                       "walking.");
+  }
+  try {
+    scenario.request.validate();
+  } catch (const std::invalid_argument& error) {
+    std::string message = error.what();
+    // libwpg's request calls the robot's mass 'mass'; the scenario's key is robot_mass.
+    if (message.rfind("'mass'", 0) == 0) message.replace(0, 6, "'robot_mass'");
+    source.failChecked("invalid walk request: " + message);
+  }
+  try {
+    scenario.goal.validate();
+  } catch (const std::invalid_argument& error) {
+    source.failChecked(error.what());
+  }
+  // Bounded work and a walk of at least one NMPC iteration (libwpg's limits), checked here so
+  // that every command (run, batch, compare, replay) refuses it before anything runs.
+  try {
+    checkWalkSize(scenario.walking, scenario.request);
+  } catch (const std::invalid_argument& error) {
+    source.failChecked(error.what());
+  }
+  if (scenario.replay) {
+    // The multibody replay differentiates the motion: it needs 3 samples (2 control periods).
+    const double T = scenario.walking.sampling_period;
+    const long periods = std::lround(scenario.request.duration / T) *
+                         std::lround(T / scenario.walking.control_period);
+    if (periods < 2) {
+      source.failWith("duration",
+                      "expected a walk of at least 2 control periods for the "
+                      "multibody replay (replay or filter is on), got " +
+                          std::to_string(periods));
+    }
+  }
+
+  scenario_ptr->warnings = scenarioWarnings(scenario, scenario.robot_com_height, source);
+}
+
+namespace {
 
 // `root` is the parsed scenario of `path` (a file, or the origin of a text).
 Scenario loadScenarioTree(YAML::Node root, const std::string& path,
@@ -169,48 +220,8 @@ Scenario loadScenarioTree(YAML::Node root, const std::string& path,
     throw InputError(oneLine(path + ": " + error.what()));
   }
 
-  // Cross-field checks owned by libwpg (ranges, consistency of timings, ...).
-  try {
-    scenario.walking.validate();
-  } catch (const std::invalid_argument& error) {
-    source.failChecked(std::string("invalid walking parameters (robot '") + scenario.robot +
-                           "' merged with 'walking:' of the scenario): " + error.what(),
-                       "walking.");
-  }
-  try {
-    scenario.request.validate();
-  } catch (const std::invalid_argument& error) {
-    std::string message = error.what();
-    // libwpg's request calls the robot's mass 'mass'; the scenario's key is robot_mass.
-    if (message.rfind("'mass'", 0) == 0) message.replace(0, 6, "'robot_mass'");
-    source.failChecked("invalid walk request: " + message);
-  }
-  try {
-    scenario.goal.validate();
-  } catch (const std::invalid_argument& error) {
-    source.failChecked(error.what());
-  }
-  // Bounded work and a walk of at least one NMPC iteration (libwpg's limits), checked here so
-  // that every command (run, batch, compare, replay) refuses it before anything runs.
-  try {
-    checkWalkSize(scenario.walking, scenario.request);
-  } catch (const std::invalid_argument& error) {
-    source.failChecked(error.what());
-  }
-  if (scenario.replay) {
-    // The multibody replay differentiates the motion: it needs 3 samples (2 control periods).
-    const double T = scenario.walking.sampling_period;
-    const long periods = std::lround(scenario.request.duration / T) *
-                         std::lround(T / scenario.walking.control_period);
-    if (periods < 2) {
-      source.failWith("duration", "expected a walk of at least 2 control periods for the "
-                                  "multibody replay (replay or filter is on), got " +
-                                      std::to_string(periods));
-    }
-  }
-
-  scenario.resolved_yaml = emitResolved(scenario);
-  scenario.warnings = scenarioWarnings(scenario, robot_com_height, source);
+  scenario.robot_com_height = robot_com_height;
+  checkScenario(&scenario, source);
   return scenario;
 }
 
@@ -219,6 +230,10 @@ Scenario loadScenarioTree(YAML::Node root, const std::string& path,
 Scenario loadScenario(const std::string& path, const std::vector<std::string>& overrides,
                       const std::string& robots_dir) {
   return loadScenarioTree(readYamlFile(path, "scenario file"), path, overrides, robots_dir);
+}
+
+std::string resolvedScenarioText(const Scenario& scenario) {
+  return detail::emitResolved(scenario);
 }
 
 Scenario loadScenarioText(const std::string& text, const std::string& origin,

@@ -58,9 +58,9 @@ void commandWarnings(const Scenario& scenario, const Source& source,
         w.sampling_period;
     const double turn = std::clamp(clamped.z(), -w.max_step_yaw_change / shortest,
                                    w.max_step_yaw_change / shortest);
-    const double reach = gaitReach(clamped.head<2>(), turn, shortest, w.feasibility_x,
-                                   w.feasibility_y);
-    if (reach < 1.0) {
+    if (!gaitReachesCommand(clamped.head<2>(), turn, shortest, w.feasibility_x, w.feasibility_y)) {
+      const double reach =
+          gaitReach(clamped.head<2>(), turn, shortest, w.feasibility_x, w.feasibility_y);
       warnings->push_back(source.warning(
           key, "[" + formatNumber(v[0]) + ", " + formatNumber(v[1]) + ", " + formatNumber(v[2]) +
                    "] is beyond the reach of the gait (steps of " + number(shortest) +

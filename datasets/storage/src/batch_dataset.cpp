@@ -386,7 +386,7 @@ PreparedRun BatchDatasetWriter::prepare(const BatchRunRecord& record) {
   GroupImage& group = buildRunGroup(*runs, run.name, run.scenario, *record.result,
                                     record.clearances, record.multibody, record.goal, parts,
                                     record.fields);
-  writeStringAttribute(group, "scenario", run.scenario.resolved_yaml);
+  writeStringAttribute(group, "scenario", resolvedScenarioText(run.scenario));
   writeIntAttribute(group, "batch_index", static_cast<int>(run.index));
   std::vector<std::string> keys;
   for (const SweptValue& value : run.swept) {

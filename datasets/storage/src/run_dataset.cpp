@@ -66,7 +66,7 @@ void writeRunDataset(const std::string& path, const Scenario& scenario,
   writeIntAttribute(root, "schema_version", kRunDatasetSchemaVersion);
   writeStringAttribute(root, "wpg_version", WPG_VERSION_STRING);
   writeProvenanceAttributes(root);
-  writeStringAttribute(root, "scenario", scenario.resolved_yaml);
+  writeStringAttribute(root, "scenario", resolvedScenarioText(scenario));
   writeStringAttribute(root, "created_by", "wpg");  // wpg run, wpg replay or a program of yours
   RunGroupParts parts;
   if (prepared) parts.walk = prepared->image;

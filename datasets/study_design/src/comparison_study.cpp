@@ -366,7 +366,8 @@ ComparisonStudy loadComparisonStudy(const std::string& path, const BaseResolver&
                                       name + "' of another world x variant (rename one)");
     }
   }
-  study.runs = StudyRuns(total, [expansion](std::size_t index, bool scenario) {
+  study.runs = StudyRuns(total, [expansion](std::size_t index, StudyRuns::Make what) {
+    const bool scenario = what != StudyRuns::Make::kDescription;
     return expansion->make(index, scenario);
   });
   // Every run checked before any walk: a comparison is at most kMaxStudyRuns runs.

@@ -18,6 +18,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "compiled_sweep.hpp"
 #include "wpg/datasets/input/yaml_input.hpp"
 #include "wpg/qp/hessian_factor_cache.hpp"
 
@@ -167,52 +168,90 @@ struct SweepExpansion {
   int digits = 1;
   std::shared_ptr<qp::HessianFactorCache> hessian_factors;
 
-  StudyRun make(std::size_t index, bool with_scenario) const {
+  CompiledSweep compiled;  // the fast way to a run's scenario (compiled_sweep.hpp)
+
+  StudyRun make(std::size_t index, StudyRuns::Make what) const {
     StudyRun run;
     run.index = index;
     char number[32];
     std::snprintf(number, sizeof number, "%0*zu", digits, index);
     run.name = name + "_" + number;
+    // Each key's value; with a scenario, also its position in its list (a random key: its
+    // sample), for the compiled fields.
+    const bool with_scenario = what != StudyRuns::Make::kDescription;
+    std::vector<std::size_t> positions;
+    const auto take = [&](const SweptValue& value, std::size_t position) {
+      run.swept.push_back(value);
+      if (with_scenario) positions.push_back(position);
+    };
     run.swept.resize(grid.size());
+    if (with_scenario) positions.resize(grid.size());
     std::size_t rest = index / (zip_points * random_points);
     for (std::size_t k = grid.size(); k-- > 0;) {
-      run.swept[k] = grid[k].values[rest % grid[k].values.size()];
+      const std::size_t position = rest % grid[k].values.size();
+      run.swept[k] = grid[k].values[position];
+      if (with_scenario) positions[k] = position;
       rest /= grid[k].values.size();
     }
     const std::size_t zip_index = (index / random_points) % zip_points;
-    for (const KeyValues& key : zip) run.swept.push_back(key.values[zip_index]);
+    for (const KeyValues& key : zip) take(key.values[zip_index], zip_index);
     const std::size_t sample = index % random_points;
-    for (std::size_t k = 0; k < random.ranges.size(); ++k) run.swept.push_back(random.value(sample, k));
-    if (with_scenario) loadScenarioOf(&run);
+    for (std::size_t k = 0; k < random.ranges.size(); ++k) take(random.value(sample, k), sample);
+    if (with_scenario) {
+      run.from_fields = what == StudyRuns::Make::kScenario &&
+                        compiled.make(run.swept, positions, run.name, &run.scenario);
+      if (!run.from_fields) loadScenarioOf(&run);
+      nameWarnings(&run);
+      run.scenario.request.generator.hessian_factors = hessian_factors;
+    }
     return run;
+  }
+
+  // "key=value, ..." of the run's swept values, as its messages quote them.
+  static std::string describeValues(const StudyRun& run) {
+    std::string described;
+    for (const SweptValue& value : run.swept)
+      described += (described.empty() ? "" : ", ") + value.key + "=" + value.value;
+    return described;
   }
 
   // The base with the run's values, loaded and validated as `wpg run` does.
   void loadScenarioOf(StudyRun* run) const {
     std::vector<std::string> overrides = constants;
-    std::string described;
-    for (const SweptValue& value : run->swept) {
-      overrides.push_back(value.key + "=" + value.value);
-      described += (described.empty() ? "" : ", ") + value.key + "=" + value.value;
-    }
+    for (const SweptValue& value : run->swept) overrides.push_back(value.key + "=" + value.value);
     overrides.push_back("name=" + run->name);
     try {
       run->scenario = loadScenarioText(base_text, base_origin, overrides, robots_dir);
-      run->scenario.walking.validate();
-      run->scenario.request.validate();
-      // Its warnings, as its errors would read: the study, the run, the sweep.
-      for (std::string& warning : run->scenario.warnings) {
-        warning = path + ": run " + std::to_string(run->index) + " (" + described +
-                  "): " + detail::renameOverrides(warning, "sweep");
-      }
-    } catch (const std::exception& e) {  // InputError, or invalid_argument of validate()
+    } catch (const std::exception& e) {  // InputError
       // The loader calls the swept values --set overrides; here they come from the sweep.
-      throw InputError(path + ": run " + std::to_string(run->index) + " (" + described +
+      throw InputError(path + ": run " + std::to_string(run->index) + " (" + describeValues(*run) +
                        "): " + detail::renameOverrides(detail::oneLine(e.what()), "sweep"));
     }
-    run->scenario.request.generator.hessian_factors = hessian_factors;
+  }
+
+  // Its warnings, as its errors would read: the study, the run, the sweep.
+  void nameWarnings(StudyRun* run) const {
+    if (run->scenario.warnings.empty()) return;
+    const std::string described = describeValues(*run);
+    for (std::string& warning : run->scenario.warnings) {
+      warning = path + ": run " + std::to_string(run->index) + " (" + described +
+                "): " + detail::renameOverrides(warning, "sweep");
+    }
   }
 };
+
+// The swept keys in the order of Study::keys, for CompiledSweep.
+std::vector<SweptKey> sweptKeys(const SweepExpansion& expansion) {
+  std::vector<SweptKey> keys;
+  for (const auto* section : {&expansion.grid, &expansion.zip})
+    for (const KeyValues& key : *section)
+      keys.push_back({key.key, key.values.front().value, key.values});
+  for (std::size_t k = 0; k < expansion.random.ranges.size(); ++k) {
+    const RandomSweep::Range& range = expansion.random.ranges[k];
+    keys.push_back({range.key, expansion.random.value(0, k).value, {}, range.low, range.high});
+  }
+  return keys;
+}
 
 // FNV-1a, 64 bits: a stable digest of text (not for security, for "same study?").
 std::uint64_t fnv1a(const std::string& text, std::uint64_t hash) {
@@ -280,7 +319,7 @@ void checkStudyScenarios(Study* study, int threads) {
       StudyRun run = study->runs[indices[position]];
       checked[position] = {run.index, run.scenario.robot, run.scenario.replay,
                            run.scenario.goal.enabled};
-      digests[position] = std::move(run.scenario.resolved_yaml);
+      digests[position] = resolvedScenarioText(run.scenario);
       warnings[position] = std::move(run.scenario.warnings);
     } catch (const std::bad_alloc&) {
       out_of_memory = true;  // not the input's fault: exit 3, as anywhere else
@@ -493,8 +532,11 @@ Study loadStudy(const std::string& path, const BaseResolver& resolve_base,
   // speeds_weights_heights.yaml instead of 6000), and the factors are the same bits shared or
   // not (qp/hessian_factor_cache.hpp); it holds at most its budget, whatever the runs.
   expansion->hessian_factors = std::make_shared<qp::HessianFactorCache>();
-  study.runs = StudyRuns(total, [expansion](std::size_t index, bool scenario) {
-    return expansion->make(index, scenario);
+  expansion->compiled =
+      CompiledSweep(expansion->base_text, expansion->base_origin, robots_dir, expansion->constants,
+                    study.name + "_0", sweptKeys(*expansion));
+  study.runs = StudyRuns(total, [expansion](std::size_t index, StudyRuns::Make what) {
+    return expansion->make(index, what);
   });
   study.checked_runs = checkedRuns(grid_sizes, expansion->zip_points, expansion->random_points);
   checkStudyScenarios(&study, threads);

@@ -31,4 +31,10 @@ double gaitReach(const Eigen::Vector2d& velocity, double omega, double step_dura
                  const std::array<double, 5>& feasibility_x,
                  const std::array<double, 5>& feasibility_y, bool regular = false);
 
+// gaitReach(...) >= 1, the gait walks the whole command, without the bisection (4 of its
+// ~130 feasibility tests): what the scenario warnings ask of every command of every run.
+bool gaitReachesCommand(const Eigen::Vector2d& velocity, double omega, double step_duration,
+                        const std::array<double, 5>& feasibility_x,
+                        const std::array<double, 5>& feasibility_y, bool regular = false);
+
 }  // namespace wpg

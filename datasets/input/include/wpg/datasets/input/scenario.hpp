@@ -20,7 +20,7 @@ struct Scenario {
   std::string name;         // `name:`, also the HDF5 group /runs/<name>
   std::string robot;        // `robot:`, a folder of the robots directory
   std::string source_path;  // the scenario file, as given to loadScenario
-  // The robot's multibody model (walking.yaml's `multibody:`): not part of resolved_yaml, a
+  // The robot's multibody model (walking.yaml's `multibody:`): not part of the resolved text, a
   // stored run finds it again in its robot's folder.
   RobotMultibody multibody;
   // The robot's walking.yaml, then the scenario's `walking:` map, then the overrides.
@@ -41,10 +41,9 @@ struct Scenario {
   // filter_settings.mode (online: the paper's Fig. 3 loop | offline, the default | both) and
   // filter_settings.reinitialize_wpg (default false), wpg/dynamic_filter.hpp.
   wpg::DynamicFilterLoopSettings filter_loop;
-  // The whole scenario after merging the robot parameters and the overrides, emitted with
-  // yaml-cpp: every key explicit (all walking parameters, all generator settings). Loading it
-  // as a scenario file gives the same Scenario again (stored in every dataset).
-  std::string resolved_yaml;
+  // The robot's own walking.com_height (its walking.yaml), whatever the scenario sets: the
+  // plausible CoM heights of the warnings are relative to it.
+  double robot_com_height = 0.0;
   // What the loader warns about without refusing it (datasets/SCENARIOS.md, "Warnings"): a
   // commanded velocity the generator clamps, a value outside the robot's plausible range. One
   // line each, "FILE: key 'KEY': ...", like an InputError's; nothing of the walk depends on them.
@@ -72,5 +71,12 @@ Scenario loadScenario(const std::string& path, const std::vector<std::string>& o
 Scenario loadScenarioText(const std::string& text, const std::string& origin,
                           const std::vector<std::string>& overrides,
                           const std::string& robots_dir);
+
+// The whole scenario after merging the robot parameters and the overrides, as YAML text: every
+// key explicit (all walking parameters, all generator settings), numbers in their shortest
+// exact form. Loading it as a scenario file gives the same Scenario again. It is what every
+// dataset stores (the `scenario` attribute), made when the dataset is written: a study makes
+// its runs' scenarios by the million, and only the runs it writes need the text.
+std::string resolvedScenarioText(const Scenario& scenario);
 
 }  // namespace wpg::datasets

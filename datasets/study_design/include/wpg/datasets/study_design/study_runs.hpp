@@ -27,26 +27,35 @@ struct StudyRun {
   std::string name;                // <study>_<index>, zero-padded so that names sort by index
   std::vector<SweptValue> swept;   // one per Study::keys, same order
   Scenario scenario;               // base + swept values + name, loaded and validated
+  // The scenario was made from the study's compiled fields (compiled_sweep.hpp), not loaded
+  // from YAML: the same scenario, in microseconds.
+  bool from_fields = false;
 };
 
 class StudyRuns {
  public:
-  // Makes run `index` (< count): with `scenario` its scenario loaded and validated (throws
-  // InputError, one line naming the study file, the run and its values, when it is refused),
-  // else its index, name and swept values only. Called from any thread.
-  using Maker = std::function<StudyRun(std::size_t index, bool scenario)>;
+  // What a Maker makes of a run: its index, name and swept values only; with its scenario
+  // (made from the compiled fields where it can); with its scenario loaded from YAML (the base
+  // text with every value as an override: the reference the fields must equal; tests).
+  enum class Make { kDescription, kScenario, kLoadedScenario };
+  // Makes run `index` (< count); a scenario is validated (throws InputError, one line naming
+  // the study file, the run and its values, when it is refused). Called from any thread.
+  using Maker = std::function<StudyRun(std::size_t index, Make what)>;
 
   StudyRuns() = default;
   StudyRuns(std::size_t count, Maker maker) : count_(count), maker_(std::move(maker)) {}
 
   std::size_t size() const { return count_; }
   bool empty() const { return count_ == 0; }
-  // Run `index` with its scenario (a few hundred microseconds: the scenario is loaded).
-  StudyRun operator[](std::size_t index) const { return maker_(index, true); }
+  // Run `index` with its scenario (microseconds; a run that cannot be made from the compiled
+  // fields is loaded from YAML: a few hundred microseconds).
+  StudyRun operator[](std::size_t index) const { return maker_(index, Make::kScenario); }
+  // Run `index` with its scenario loaded from YAML, as it was before the compiled fields.
+  StudyRun loaded(std::size_t index) const { return maker_(index, Make::kLoadedScenario); }
   StudyRun front() const { return (*this)[0]; }
   StudyRun back() const { return (*this)[count_ - 1]; }
   // Run `index` without its scenario (its name and swept values: about a microsecond).
-  StudyRun describe(std::size_t index) const { return maker_(index, false); }
+  StudyRun describe(std::size_t index) const { return maker_(index, Make::kDescription); }
 
   // Every run in order, each made as it is reached (with its scenario).
   class Iterator {
