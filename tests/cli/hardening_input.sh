@@ -67,6 +67,11 @@ expansion_cap)
   sed -e 's/^name: tiny/name: samples/' study.yaml >samples.yaml
   printf '  random: {samples: 1073741824, seed: 1, keys: {walking.com_height: {uniform: [0.78, 0.84]}}}\n' >>samples.yaml
   refused 2 "samples.yaml: key .sweep.: expected at most 2147483647 runs" batch samples.yaml -o samples.h5 --no-plot
+  # More samples than the cap on their own: the message gives the cap, not "positive".
+  sed -e 's/^name: tiny/name: many_samples/' study.yaml >many.yaml
+  printf '  random: {samples: 4611686018427387904, seed: 1, keys: {walking.com_height: {uniform: [0.78, 0.84]}}}\n' >>many.yaml
+  refused 2 "many.yaml: key 'sweep.random.samples': expected a number of samples from 1 to 2147483647 (2^31 - 1, the cap on a study's runs), got 4611686018427387904" \
+    batch many.yaml -o many.h5 --no-plot
   # 2 x 10^7 runs: a study, but over one batch file's 10^7 rows: in slices.
   sed -e 's/^name: tiny/name: twenty_million/' study.yaml >slices.yaml
   printf '  random: {samples: 10000000, seed: 1, keys: {walking.com_height: {uniform: [0.78, 0.84]}}}\n' >>slices.yaml

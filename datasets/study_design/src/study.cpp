@@ -130,7 +130,8 @@ RandomSweep readRandom(const YAML::Node& node, const Source& source) {
       detail::readMap(node, "sweep.random", {"samples", "seed", "keys"},
                       "a map with samples, seed and keys", source);
   const int samples = detail::readInteger(detail::entry(entries, "samples"), "sweep.random.samples",
-                                          1, "a positive number of samples", source);
+                                          1, "a number of samples from 1 to 2147483647 (2^31 - 1, "
+                                          "the cap on a study's runs)", source);
   const int seed = detail::readInteger(detail::entry(entries, "seed"), "sweep.random.seed", 0,
                                        "a non-negative integer seed", source);
   RandomSweep random;
