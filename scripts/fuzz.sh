@@ -61,12 +61,12 @@ PY
 heap_seeds "$build/fuzz/seeds/fuzz_run_dataset_reader-heaps" "$dataset_seeds"
 heap_seeds "$build/fuzz/seeds/fuzz_shard_reader-heaps" "$repo/tests/fuzz/seeds/shard_reader"
 
-status=0
-for target in "${targets[@]}"; do
-  work="$build/fuzz/$target"
+# One target: its seeds and regression inputs, then new inputs for SECONDS; its report in
+# $work/report, printed by the caller (the targets run side by side).
+fuzz_one() {  # fuzz_one TARGET
+  local target=$1 work="$build/fuzz/$1"
   mkdir -p "$work/corpus"
-  seeds=()
-  extra=()
+  local seeds=() extra=()
   case "$target" in
     fuzz_scenario_loader)
       seeds=("$repo/datasets/scenarios" "$repo/tests/fuzz/seeds/scenario_loader")
@@ -81,17 +81,43 @@ for target in "${targets[@]}"; do
       seeds=("$repo/tests/fuzz/seeds/shard_reader" "$build/fuzz/seeds/fuzz_shard_reader-heaps") ;;
   esac
   [[ -d "$repo/tests/fuzz/regressions/$target" ]] && seeds+=("$repo/tests/fuzz/regressions/$target")
-  echo "fuzz: $target for ${seconds} s (log: $work/fuzz.log)"
   # -malloc_limit_mb: a dataset declaring more rows than memory must be refused, not allocated.
   if "$build/tests/fuzz/$target" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
        -malloc_limit_mb=1024 -print_final_stats=1 -artifact_prefix="$work/" "${extra[@]}" \
        "$work/corpus" "${seeds[@]}" >"$work/fuzz.log" 2>&1; then
     echo "fuzz: $target: ok, $(grep -m1 -o 'number_of_executed_units: [0-9]*' "$work/fuzz.log" \
-      | grep -o '[0-9]*$') executions, corpus $(find "$work/corpus" -type f | wc -l) inputs"
+      | grep -o '[0-9]*$') executions, corpus $(find "$work/corpus" -type f | wc -l) inputs" \
+      >"$work/report"
   else
+    { tail -n 80 "$work/fuzz.log"
+      echo "fuzz: error: $target failed (log: $work/fuzz.log; inputs: $work/crash-*, timeout-*, leak-*, oom-*)"
+    } >"$work/report"
+    return 1
+  fi
+}
+
+# The targets side by side, as many at a time as there are cores: each is one process on one
+# core, so CI's five 10 s runs take 30 s rather than 50 on two cores.
+status=0
+jobs_at_once="$(nproc)"
+for target in "${targets[@]}"; do
+  echo "fuzz: $target for ${seconds} s (log: $build/fuzz/$target/fuzz.log)"
+  rm -f "$build/fuzz/$target/report"
+  fuzz_one "$target" &
+  while (($(jobs -rp | wc -l) >= jobs_at_once)); do wait -n || true; done
+done
+wait || true
+# Each target's outcome is its report's (a job's exit status may be collected by `wait -n`).
+for target in "${targets[@]}"; do
+  report="$build/fuzz/$target/report"
+  if [[ ! -f "$report" ]]; then
+    echo "fuzz: error: $target ended without a report" >&2
     status=1
-    tail -n 80 "$work/fuzz.log" >&2
-    echo "fuzz: error: $target failed (log: $work/fuzz.log; inputs: $work/crash-*, timeout-*, leak-*, oom-*)" >&2
+  elif grep -q '^fuzz: error:' "$report"; then
+    cat "$report" >&2
+    status=1
+  else
+    cat "$report"
   fi
 done
 exit "$status"

@@ -26,7 +26,9 @@ READY = "document.body && document.body.dataset.wpgReady === '1'"
 with HeadlessChromium() as browser:
     for name, want, not_want in (("wall", "· blocked since t = 8.9 s at (1.29, -0.01) m", "success"),
                                  ("walk", "· success", "blocked")):
-        page = browser.open("file://" + os.path.join(folder, name + ".html"))
+        # Paused at the start (#t=0): a page opened without a time plays the walk first and
+        # publishes wpgReady when it stops, 30 s of waiting for the wall's walk.
+        page = browser.open("file://" + os.path.join(folder, name + ".html") + "#t=0")
         page.wait_for(READY)
         subtitle = page.evaluate("document.querySelector('#top .subtitle').textContent")
         assert want in subtitle and not_want not in subtitle, (name, subtitle)

@@ -120,8 +120,9 @@ export function scenePage(app, data) {
   };
   const start = walk.time[0];
   const end = walk.time[walk.time.length - 1];
-  // What tests (and scripts) read from the page: ready after the first frame, the time shown,
-  // and the robot's box on the screen [x0, y0, x1, y1] in CSS pixels.
+  // What tests (and scripts) read from the page: ready after the first frame drawn while paused
+  // (a page opened with #t=... is paused at once; one that plays publishes when it stops), the
+  // time shown, and the robot's box on the screen [x0, y0, x1, y1] in CSS pixels.
   const box = new THREE.Box3();
   const publish = () => {
     const canvas = view.renderer.domElement.getBoundingClientRect();
