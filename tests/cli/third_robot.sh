@@ -64,8 +64,8 @@ PY
   done
 }
 walk_and_replay kid 6 analytic
-# Not in the sanitizer tree (WPG_SANITIZED): there the numerical IK of kid7's check and replays
-# ran past the test's 300 s (38 s for the whole test in Release); the numerical IK runs under
-# ASan + UBSan in test_numerical_leg_ik.cpp (generated 6- and 7-joint legs, a step walked).
+# Not in the sanitizer tree (WPG_SANITIZED): the numerical IK runs under ASan + UBSan in
+# test_numerical_leg_ik.cpp (generated 6- and 7-joint legs, a step walked) and
+# test_walking_reach.cpp (the walkable heights with HRP-2's legs solved numerically).
 [[ "${WPG_SANITIZED:-0}" == 1 ]] || walk_and_replay kid7 7 numerical
 echo "ok"

@@ -22,8 +22,9 @@ std::vector<int> jointsToFrame(const RobotModel& model, const std::string& frame
 double straightLegLength(const RobotModel& model, const std::string& sole_frame);
 
 // The feet side by side (ankles `foot_separation` apart, soles on z = 0), the CoM above their
-// middle: the lowest and highest CoM heights the IK reaches, scanned every `step` metres from
-// 0 to 2 x the straight leg length (0, 0 when none is reached).
+// middle: the lowest and highest CoM heights the IK reaches on the grid k x `step` (k >= 1) up
+// to 2 x the straight leg length (0, 0 when none is reached): a coarse grid, refined at its
+// ends (walking_reach.cpp says when that differs from a scan of every height).
 struct ComHeightRange {
   double lowest = 0.0, highest = 0.0;  // [m]
 };
