@@ -56,8 +56,9 @@ build="$(realpath -m -- "${WPG_BUILD_DIR:-$repo/build}")"
 # docs/dependencies.md says what each is for: Eigen (libwpg), HDF5 + yaml-cpp + libdeflate (datasets), CLI11
 # (cli), FCL and OMPL with the Boost libraries OMPL's CMake configuration names (planning),
 # Simbody + urdfdom (robots), h5py + matplotlib + PyYAML (the figures, drawn by Debian's
-# /usr/bin/python3; PyYAML reads the scenario stored in a dataset), ccache (rebuilds).
-packages=(build-essential cmake ccache libeigen3-dev libhdf5-dev libdeflate-dev libcli11-dev libyaml-cpp-dev
+# /usr/bin/python3; PyYAML reads the scenario stored in a dataset), ccache (rebuilds), lld (the
+# linker, faster than GNU ld: cmake/wpg_linker.cmake).
+packages=(build-essential cmake ccache lld libeigen3-dev libhdf5-dev libdeflate-dev libcli11-dev libyaml-cpp-dev
           libfcl-dev libsimbody-dev liburdfdom-dev libompl-dev libboost-serialization-dev
           libboost-filesystem-dev libboost-system-dev python3-h5py python3-matplotlib
           python3-yaml)
