@@ -78,23 +78,21 @@ ComHeightRange walkableComHeights(const WalkingIk& ik, double foot_separation, d
     }
     return low == 0 ? ComHeightRange{} : ComHeightRange{low * step, high * step};
   }
-  for (int k = low - 1, misses = 0; k >= 1 && misses < kCoarse; --k) {
-    if (k % kCoarse != 0 && ok(k)) {
-      low = k;
-      misses = 0;
-    } else {
-      ++misses;
+  // The furthest reached height from `end` in `direction` (-1 down, +1 up) with fewer than
+  // kCoarse unreached ones in a row before it.
+  const auto widen = [&](int end, int direction) {
+    for (int k = end + direction, misses = 0; k >= 1 && k <= last && misses < kCoarse;
+         k += direction) {
+      if (k % kCoarse != 0 && ok(k)) {
+        end = k;
+        misses = 0;
+      } else {
+        ++misses;
+      }
     }
-  }
-  for (int k = high + 1, misses = 0; k <= last && misses < kCoarse; ++k) {
-    if (k % kCoarse != 0 && ok(k)) {
-      high = k;
-      misses = 0;
-    } else {
-      ++misses;
-    }
-  }
-  return {low * step, high * step};
+    return end;
+  };
+  return {widen(low, -1) * step, widen(high, +1) * step};
 }
 
 bool stepReachable(const WalkingIk& ik, const Eigen::Vector2d& step, double com_height) {
