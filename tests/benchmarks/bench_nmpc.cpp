@@ -18,6 +18,7 @@
 #include "wpg/pattern_generator.hpp"
 #include "wpg/walk_generator.hpp"
 #include "../common/obstacle_fields.hpp"
+#include "../common/source_dir.hpp"
 
 namespace {
 
@@ -171,7 +172,7 @@ BENCHMARK(BM_NmpcSolveColdStart)->Unit(benchmark::kMicrosecond);
 // A 20 s walk as `wpg run` does it, in one process: generation, interpolation at 5 ms and
 // the HDF5 dataset (written to a temporary file, then renamed).
 void BM_Walk20sWithDataset(benchmark::State& state) {
-  const std::string source = WPG_SOURCE_DIR;
+  const std::string source = wpg_test::sourceDir();
   const wpg::datasets::Scenario scenario = wpg::datasets::loadScenario(
       source + "/datasets/scenarios/walk_forward.yaml", {"duration=20"}, source + "/robots");
   const std::string path = "/tmp/wpg_bench_walk20_" + std::to_string(::getpid()) + ".h5";

@@ -22,6 +22,7 @@
 #include "wpg/robots/robot_model.hpp"
 #include "wpg/robots/walking_ik.hpp"
 #include "wpg/walk_generator.hpp"
+#include "../common/source_dir.hpp"
 
 namespace {
 
@@ -38,7 +39,7 @@ double meanOf(const std::vector<double>& values) {
   return values.empty() ? 0.0 : sum / static_cast<double>(values.size());
 }
 
-const std::string kSource = WPG_SOURCE_DIR;
+const std::string kSource = wpg_test::sourceDir();
 
 wpg::datasets::Scenario walkForward() {
   return wpg::datasets::loadScenario(kSource + "/datasets/scenarios/walk_forward.yaml",

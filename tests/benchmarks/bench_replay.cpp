@@ -14,11 +14,12 @@
 #include "wpg/robots/robot_model.hpp"
 #include "wpg/robots/walk_replay.hpp"
 #include "wpg/walk_generator.hpp"
+#include "../common/source_dir.hpp"
 
 namespace {
 
 void replay20sWalk(benchmark::State& state, bool filter, int threads = 1) {
-  const std::string source = WPG_SOURCE_DIR;
+  const std::string source = wpg_test::sourceDir();
   const wpg::datasets::Scenario scenario = wpg::datasets::loadScenario(
       source + "/datasets/scenarios/walk_forward.yaml", {"duration=20"}, source + "/robots");
   const wpg::WalkResult walk = wpg::generateWalk(scenario.walking, scenario.request);

@@ -13,12 +13,13 @@
 #include "wpg/datasets/input/scenario.hpp"
 #include "wpg/planning/goal_walk.hpp"
 #include "wpg/planning/route_planner.hpp"
+#include "../common/source_dir.hpp"
 
 namespace {
 
 wpg::datasets::Scenario shipped(const std::string& name,
                                 const std::vector<std::string>& overrides = {}) {
-  const std::string source = WPG_SOURCE_DIR;
+  const std::string source = wpg_test::sourceDir();
   return wpg::datasets::loadScenario(source + "/datasets/scenarios/" + name + ".yaml", overrides,
                                      source + "/robots");
 }

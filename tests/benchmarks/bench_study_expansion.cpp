@@ -12,10 +12,11 @@
 #include <string>
 
 #include "wpg/datasets/study_design/study.hpp"
+#include "../common/source_dir.hpp"
 
 namespace {
 
-const std::string kSource = WPG_SOURCE_DIR;
+const std::string kSource = wpg_test::sourceDir();
 
 // A study file of 10^7 runs in the temporary folder: its path.
 std::string tenMillionRunStudy() {

@@ -52,6 +52,18 @@ def inside_distance(vertices, p):
     return best
 
 
+def inside_distances(vertices, points):
+    """inside_distance of each row of `points` (N x 2), for one polygon."""
+    v = ccw(vertices)
+    best = np.full(len(points), math.inf)
+    for a, b in zip(v, np.roll(v, -1, axis=0)):
+        edge = b - a
+        outward = np.array([edge[1], -edge[0]]) / np.hypot(*edge)
+        d = points - a
+        best = np.minimum(best, -(outward[0] * d[:, 0] + outward[1] * d[:, 1]))
+    return best
+
+
 def rectangle(center, yaw, length, width):
     c, s = math.cos(yaw), math.sin(yaw)
     local = [(-length / 2, -width / 2), (length / 2, -width / 2), (length / 2, width / 2),
@@ -170,41 +182,51 @@ def recompute(run, scenario):
     if goal and known:
         iteration_times = run["mpc"]["time"][:]
         iteration_commands = run["mpc"]["command"][:]
-    ref = np.zeros((len(t), 2))
+    # The command of each sample: the goal walk's of the last iteration at or before it, then
+    # the schedule's entries in order (a later one wins), in the world frame by the yaw.
     commands = np.zeros((len(t), 3))
-    for i, ti in enumerate(t):
-        v = np.zeros(3)
-        if goal and known:
-            k = max(int(np.searchsorted(iteration_times, ti + 1e-9, side="right")) - 1, 0)
-            v = iteration_commands[k]
-        for entry in reference:
-            if entry["t"] <= ti + 1e-9:
-                v = np.array(entry["v"], dtype=float)
-        commands[i] = v
-        c, s = math.cos(yaw[i]), math.sin(yaw[i])
-        ref[i] = (c * v[0] - s * v[1], s * v[0] + c * v[1])
+    if goal and known:
+        k = np.maximum(np.searchsorted(iteration_times, t + 1e-9, side="right") - 1, 0)
+        commands[:] = iteration_commands[k]
+    for entry in reference:
+        commands[entry["t"] <= t + 1e-9] = np.array(entry["v"], dtype=float)
+    c, s = np.cos(yaw), np.sin(yaw)
+    ref = np.column_stack((c * commands[:, 0] - s * commands[:, 1],
+                           s * commands[:, 0] + c * commands[:, 1]))
     # The start left out: windows beginning within one cycle of the first non-zero command.
-    moving = next((i for i in range(len(t)) if np.any(commands[i] != 0.0)), 0)
+    nonzero = np.flatnonzero(np.any(commands != 0.0, axis=1))
+    moving = int(nonzero[0]) if len(nonzero) else 0
+    # Window i: the CoM's mean velocity over samples i - window .. i against the mean of the
+    # world command over samples i - window + 1 .. i.
+    i = np.arange(moving + 2 * window if known and window > 0 else len(t), len(t))
     errs = []
-    for i in range(moving + 2 * window if known and window > 0 else len(t), len(t)):
-        mean_v = (com[i, :2] - com[i - window, :2]) / (t[i] - t[i - window])
-        mean_ref = ref[i - window + 1:i + 1].mean(axis=0)
-        errs.append(np.hypot(*(mean_v - mean_ref)))
-    m["velocity_error_rms"] = float(np.sqrt(np.mean(np.square(errs)))) if errs else math.nan
-    m["velocity_error_max"] = float(np.max(errs)) if errs else math.nan
+    if len(i):
+        mean_v = (com[i, :2] - com[i - window, :2]) / (t[i] - t[i - window])[:, None]
+        windows = np.lib.stride_tricks.sliding_window_view(ref, window, axis=0)
+        mean_ref = windows[i - window + 1].mean(axis=-1)
+        errs = np.hypot(mean_v[:, 0] - mean_ref[:, 0], mean_v[:, 1] - mean_ref[:, 1])
+    m["velocity_error_rms"] = float(np.sqrt(np.mean(np.square(errs)))) if len(errs) else math.nan
+    m["velocity_error_max"] = float(np.max(errs)) if len(errs) else math.nan
 
     m.update(steady_tracking(w, t, run, reference))
 
-    # CoP margin: the sole (single support) or the hull of both soles (double support)
-    margins = []
-    for i in range(len(t)):
+    # CoP margin: the sole (single support) or the hull of both soles (double support). The
+    # support polygon only changes when the support does or a supporting foot moves: it is built
+    # once per distinct (support, supporting soles), and measured against their CoPs at once.
+    margins = np.empty(len(t))
+    stance = np.column_stack((support, left[:, [0, 1, 3]] * (support != 2)[:, None],
+                              right[:, [0, 1, 3]] * (support != 1)[:, None]))
+    _, stance_of = np.unique(stance, axis=0, return_inverse=True)
+    for k in range(stance_of.max() + 1 if len(t) else 0):
+        samples = np.flatnonzero(stance_of.ravel() == k)
+        i = samples[0]
         corners = []
         if support[i] != 2:
             corners.append(rectangle(left[i, :2], left[i, 3], w["foot_length"], w["foot_width"]))
         if support[i] != 1:
             corners.append(rectangle(right[i, :2], right[i, 3], w["foot_length"], w["foot_width"]))
         polygon = hull(np.vstack(corners)) if support[i] == 0 else corners[0]
-        margins.append(inside_distance(polygon, cop[i]))
+        margins[samples] = inside_distances(polygon, cop[samples, :2])
     m["cop_margin_min"] = float(np.min(margins))
     m["cop_margin_p05"] = quantile(margins, 0.05)
     m["cop_margin_median"] = quantile(margins, 0.5)

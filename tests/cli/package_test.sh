@@ -12,6 +12,18 @@ cmake="$1"; build_dir="$2"; downstream="$3"
 shift 3
 make_workdir
 prefix="$WORKDIR/prefix"
+# The downstream projects compile through ccache when it is installed, from copies of their
+# sources in this test's folder, with ccache's base folder there: every run compiles the same
+# relative paths, so that a warm cache compiles nothing (their three builds were 12 of the
+# test's 21 s on 2 cores).
+projects="$(dirname "$downstream")"
+mkdir "$WORKDIR/src"
+cp -r "$downstream" "$projects/downstream_core" "$projects/downstream_extensions" "$WORKDIR/src/"
+downstream="$WORKDIR/src/$(basename "$downstream")"
+if command -v ccache >/dev/null; then
+  set -- -DCMAKE_CXX_COMPILER_LAUNCHER=ccache "$@"
+  export CCACHE_BASEDIR="$WORKDIR" CCACHE_NOHASHDIR=1
+fi
 "$cmake" --install "$build_dir" --prefix "$prefix" >"$WORKDIR/install.log" 2>&1 \
   || { cat "$WORKDIR/install.log"; fail "cmake --install"; }
 [[ -f "$prefix/lib/cmake/wpg/wpgConfig.cmake" || -n "$(find "$prefix" -name wpgConfig.cmake)" ]] \

@@ -12,10 +12,11 @@
 #include "wpg/datasets/storage/run_dataset.hpp"
 #include "wpg/datasets/storage/run_dataset_reader.hpp"
 #include "wpg/walk_generator.hpp"
+#include "../common/source_dir.hpp"
 
 namespace {
 
-const std::string kSource = WPG_SOURCE_DIR;
+const std::string kSource = wpg_test::sourceDir();
 
 wpg::datasets::Scenario corridor() {
   return wpg::datasets::loadScenario(kSource + "/datasets/scenarios/corridor.yaml",

@@ -11,10 +11,11 @@
 #include "wpg/datasets/input/scenario.hpp"
 #include "wpg/walk_checks.hpp"
 #include "wpg/walk_generator.hpp"
+#include "../common/source_dir.hpp"
 
 namespace {
 
-const std::string kSource = WPG_SOURCE_DIR;
+const std::string kSource = wpg_test::sourceDir();
 
 wpg::datasets::Scenario load(const std::string& name,
                               const std::vector<std::string>& overrides = {}) {

@@ -13,10 +13,11 @@
 #include <unistd.h>
 
 #include "wpg/datasets/input/input_error.hpp"
+#include "../common/source_dir.hpp"
 
 namespace wpg_test {
 
-const std::string kSourceDir = WPG_SOURCE_DIR;
+const std::string kSourceDir = sourceDir();
 const std::string kRobotsDir = kSourceDir + "/robots";
 const std::string kScenariosDir = kSourceDir + "/datasets/scenarios";
 

@@ -24,6 +24,7 @@
 #include "wpg/datasets/input/input_error.hpp"
 #include "wpg/datasets/storage/run_dataset_reader.hpp"
 #include "wpg/datasets/input/scenario.hpp"
+#include "../common/source_dir.hpp"
 
 namespace {
 
@@ -92,7 +93,7 @@ extern "C" int LLVMFuzzerInitialize(int*, char***) {
 }
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  static const std::string robots = std::string(WPG_SOURCE_DIR) + "/robots";
+  static const std::string robots = std::string(wpg_test::sourceDir()) + "/robots";
   const wpg_fuzz::FileImage image = wpg_fuzz::decode(data, size, g_max_rows);
   if (!wpg_fuzz::writeHdf5(image, g_path)) propertyViolated("cannot create " + g_path);
   wpg_fuzz::applyImageDamage(image, g_path);

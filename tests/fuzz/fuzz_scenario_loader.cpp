@@ -19,13 +19,14 @@
 
 #include "wpg/datasets/input/input_error.hpp"
 #include "wpg/datasets/input/scenario.hpp"
+#include "../common/source_dir.hpp"
 
 namespace {
 
 constexpr std::size_t kMaxOverrides = 4;
 
 const std::string& robotsDirectory() {
-  static const std::string directory = std::string(WPG_SOURCE_DIR) + "/robots";
+  static const std::string directory = std::string(wpg_test::sourceDir()) + "/robots";
   return directory;
 }
 

@@ -42,6 +42,7 @@
 #include "wpg/datasets/input/input_error.hpp"
 #include "wpg/datasets/study_design/comparison_study.hpp"
 #include "wpg/datasets/study_design/study.hpp"
+#include "../common/source_dir.hpp"
 
 namespace {
 
@@ -73,7 +74,8 @@ std::string shippedScenario(const std::string& name) {
   for (const char c : name) {
     plain = plain && (std::isalnum(static_cast<unsigned char>(c)) || c == '_');
   }
-  const fs::path path = fs::path(WPG_SOURCE_DIR) / "datasets" / "scenarios" / (name + ".yaml");
+  const fs::path path =
+      fs::path(wpg_test::sourceDir()) / "datasets" / "scenarios" / (name + ".yaml");
   std::error_code ec;
   if (!plain || !fs::is_regular_file(path, ec)) {
     throw wpg::datasets::InputError("no shipped scenario '" + name + "'");
@@ -156,7 +158,7 @@ extern "C" int LLVMFuzzerInitialize(int*, char***) {
 }
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  static const std::string robots = std::string(WPG_SOURCE_DIR) + "/robots";
+  static const std::string robots = std::string(wpg_test::sourceDir()) + "/robots";
   const std::string input(reinterpret_cast<const char*>(data), size);
   const std::size_t separator = input.find('\0');
   const std::string text = input.substr(0, separator);

@@ -12,10 +12,11 @@
 #include "wpg/planning/obstacle_checks.hpp"
 #include "wpg/planning/world.hpp"
 #include "wpg/walk_generator.hpp"
+#include "../common/source_dir.hpp"
 
 namespace {
 
-const std::string kSource = WPG_SOURCE_DIR;
+const std::string kSource = wpg_test::sourceDir();
 
 struct Experiment {
   wpg::datasets::Scenario scenario;

@@ -12,7 +12,7 @@ sweep:
   grid:
     walking.weight_cop: [%s]
   zip:
-    duration: [120.0]
+    duration: [60.0]
 """ % ", ".join(str(300.0 + 10 * i) for i in range(120))
 
 INTERRUPTED = textwrap.dedent("""
@@ -45,7 +45,7 @@ def test_ctrl_c_stops_a_batch_within_a_run_and_leaves_it_resumable(tmp_path):
         folder = tmp_path / str(jobs)
         folder.mkdir()
         study, output, said = interrupted_batch(folder, jobs)
-        # 120 walks of 120 s take ~8 s on one core, ~70 ms each: stopped well within 1 s of the
+        # 120 walks of 60 s take ~4 s on one core, ~32 ms each: stopped well within 1 s of the
         # signal (at 1 s), not after the whole study.
         assert said.startswith("interrupted after "), said
         assert float(said.split()[2]) < 2.0, said

@@ -6,11 +6,12 @@
 #include <Eigen/Geometry>
 
 #include "wpg/robots/robot_model.hpp"
+#include "../common/source_dir.hpp"
 
 namespace wpg_test {
 
 inline const wpg::robots::RobotModel& hrp2() {
-  static const wpg::robots::RobotModel model(std::string(WPG_SOURCE_DIR) + "/robots/hrp2/hrp2.urdf");
+  static const wpg::robots::RobotModel model(std::string(sourceDir()) + "/robots/hrp2/hrp2.urdf");
   return model;
 }
 

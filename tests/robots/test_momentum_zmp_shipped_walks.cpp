@@ -18,10 +18,11 @@
 #include "wpg/robots/robot_model.hpp"
 #include "wpg/robots/walking_ik.hpp"
 #include "wpg/walk_generator.hpp"
+#include "../common/source_dir.hpp"
 
 namespace {
 
-const std::string kSource = WPG_SOURCE_DIR;
+const std::string kSource = wpg_test::sourceDir();
 
 std::vector<std::string> shippedScenarios() {
   std::vector<std::string> names;

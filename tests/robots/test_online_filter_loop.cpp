@@ -8,10 +8,11 @@
 #include "wpg/robots/online_filter_loop.hpp"
 #include "wpg/robots/walk_replay.hpp"
 #include "wpg/walk_generator.hpp"
+#include "../common/source_dir.hpp"
 
 namespace {
 
-const std::string kSource = WPG_SOURCE_DIR;
+const std::string kSource = wpg_test::sourceDir();
 
 wpg::WalkRequest forwardThen(const Eigen::Vector3d& later, double change_time, double duration) {
   wpg::WalkRequest request;

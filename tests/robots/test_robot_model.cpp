@@ -7,13 +7,14 @@
 #include <gtest/gtest.h>
 
 #include "wpg/robots/robot_model.hpp"
+#include "../common/source_dir.hpp"
 
 namespace {
 
 using wpg::robots::Pose;
 using wpg::robots::RobotModel;
 
-const std::string kUrdf = std::string(WPG_SOURCE_DIR) + "/robots/hrp2/hrp2.urdf";
+const std::string kUrdf = std::string(wpg_test::sourceDir()) + "/robots/hrp2/hrp2.urdf";
 
 const RobotModel& hrp2() {
   static const RobotModel model(kUrdf);

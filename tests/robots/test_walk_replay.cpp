@@ -5,10 +5,11 @@
 
 #include "wpg/robots/walk_replay.hpp"
 #include "wpg/walk_generator.hpp"
+#include "../common/source_dir.hpp"
 
 namespace {
 
-const std::string kSource = WPG_SOURCE_DIR;
+const std::string kSource = wpg_test::sourceDir();
 
 struct Case {
   const char* name;
