@@ -52,7 +52,7 @@ except ImportError as error:
            "packages python3-h5py python3-matplotlib python3-yaml" % (sys.executable, error))
     sys.exit(2)
 
-from run_figure.figure import draw, save_atomically  # noqa: E402
+from run_figure.figure import draw, figure_with_legend_room, save_atomically  # noqa: E402
 from run_figure.plan_figure import draw_plan_figure  # noqa: E402
 from run_figure.plan_reading import read_plan  # noqa: E402
 from run_figure.reading import read_runs  # noqa: E402
@@ -73,11 +73,11 @@ def draw_plan(runs, path, at_times):
         if not walk[0] <= t <= walk[1]:
             raise BadFile("--at %g: expected a time of the walk, in [%g, %g] s" % (t, *walk))
     scenario = run["scenario"]
-    fig = plt.figure(figsize=(15, 8))
+    fig, margins = figure_with_legend_room(15, 8)
     draw_plan_figure(fig, run, plan, at_times,
                      walking_number(scenario, "foot_length", DEFAULT_FOOT_LENGTH),
                      walking_number(scenario, "foot_width", DEFAULT_FOOT_WIDTH),
-                     scenario_obstacles(scenario), bool(scenario_pushes(scenario)))
+                     scenario_obstacles(scenario), bool(scenario_pushes(scenario)), margins)
     return fig
 
 

@@ -65,13 +65,48 @@ def png_metadata(source):
 def save_figure(fig, output, **savefig_options):
     """fig as a PNG at `output`, atomically: an exclusive temporary file beside it, renamed over
     it (a symlink, a FIFO or a half-written figure is never left at `output`)."""
+    _write_atomically(output, lambda stream: fig.savefig(stream, format="png", **savefig_options))
+
+
+def save_figure_cropped(fig, output, dpi, metadata, pad_inches=0.1):
+    """fig as a PNG at `output` (atomically, as save_figure), cropped to its drawing with
+    `pad_inches` of the background round it: what savefig(bbox_inches="tight") writes, from one
+    draw instead of two (tight draws the whole figure once to measure it, then again to write
+    it: a run's figure took 1.15 s of CPU with it, 0.98 s without, medians of 8 interleaved
+    runs). The figure is drawn at `dpi`, and the pixels that
+    are not the background bound the crop. A drawing that reaches the canvas's border may go on
+    past it, where only the tight bounding box sees it: then the figure is written with that."""
+    import numpy as np
+    from matplotlib.image import imsave
+
+    def write(stream):
+        fig.set_dpi(dpi)
+        fig.canvas.draw()
+        rgba = np.asarray(fig.canvas.buffer_rgba())
+        drawn = np.any(rgba != rgba[0, 0], axis=2)  # the corner: the background (nothing there)
+        rows, columns = np.flatnonzero(drawn.any(axis=1)), np.flatnonzero(drawn.any(axis=0))
+        pad = int(round(pad_inches * dpi))
+        height, width = drawn.shape
+        if (not len(rows) or rows[0] < pad or columns[0] < pad or rows[-1] >= height - pad
+                or columns[-1] >= width - pad):
+            fig.savefig(stream, format="png", dpi=dpi, bbox_inches="tight",
+                        pad_inches=pad_inches, metadata=metadata)
+            return
+        crop = rgba[rows[0] - pad:rows[-1] + pad + 1, columns[0] - pad:columns[-1] + pad + 1]
+        imsave(stream, np.ascontiguousarray(crop), format="png", dpi=dpi, metadata=metadata)
+
+    _write_atomically(output, write)
+
+
+def _write_atomically(output, write):
+    """write(stream) into an exclusive temporary file beside `output`, renamed over it."""
     import tempfile
     folder = os.path.dirname(os.path.abspath(output))
     fd, temporary = tempfile.mkstemp(prefix="." + os.path.basename(output) + ".",
                                      suffix=".tmp", dir=folder)
     try:
         with os.fdopen(fd, "wb") as stream:
-            fig.savefig(stream, format="png", **savefig_options)
+            write(stream)
         umask = os.umask(0)
         os.umask(umask)
         os.chmod(temporary, 0o666 & ~umask)

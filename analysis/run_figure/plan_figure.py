@@ -87,8 +87,12 @@ def draw_errors(ax, plan, errors, pushed):
     ax.legend(fontsize=7, loc="lower right")
 
 
-def draw_plan_figure(fig, run, plan, at_times, foot_length, foot_width, obstacles, pushed):
-    grid = fig.add_gridspec(3, 2, width_ratios=(1.2, 1.0), hspace=0.45, wspace=0.2)
+def draw_plan_figure(fig, run, plan, at_times, foot_length, foot_width, obstacles, pushed,
+                     margins=None):
+    """The panels on `fig`, in a grid with the `margins` given (bottom, top: figure.py's
+    figure_with_legend_room), matplotlib's defaults without."""
+    grid = fig.add_gridspec(3, 2, width_ratios=(1.2, 1.0), hspace=0.45, wspace=0.2,
+                            **(margins or {}))
     top = fig.add_subplot(grid[:, 0])
     x_axis = fig.add_subplot(grid[0, 1])
     y_axis = fig.add_subplot(grid[1, 1], sharex=x_axis)

@@ -12,6 +12,9 @@ so the figures are inspected before they are written):
                    and says that an iteration is above it, with its value
   goal_missed      "goal missed" is in the legend of a comparison's top view exactly when a
                    run drawn there missed the goal
+  cropped          plot_run.py's figures (the largest legend, the Fig. 6 row, two runs, the
+                   --plan figure) fit on their canvas, drawn once: the PNG is the drawing with
+                   0.1 in of background round it, never savefig's second, tight pass
 Exit 0, or 1 naming what is wrong.
 """
 import os
@@ -188,8 +191,47 @@ def goal_missed(work):
             print("%s %s: legend %s (%d runs missed the goal)" % (os.path.basename(study), name, labels, missed))
 
 
+def cropped(work):
+    import matplotlib.image
+    from run_figure.figure import draw, save_atomically
+    from run_figure.reading import read_runs
+    import plot_run
+    walks = {"goal": ("goal_unknown_obstacle",), "filtered": ("walk_forward", "--filter", "--set",
+                                                              "duration=6")}
+    for name, args in walks.items():
+        wpg("run", *args, "--no-plot", "-o", os.path.join(work, name + ".h5"))
+    wpg("batch", os.path.join(SOURCE, "tests", "cli", "studies", "tiny_batch.yaml"), "--no-plot",
+        "-o", os.path.join(work, "two.h5"))
+    two_pass = []
+    original = matplotlib.figure.Figure.savefig
+    matplotlib.figure.Figure.savefig = lambda self, *a, **k: two_pass.append(1) or original(
+        self, *a, **k)
+    try:
+        for name, plan in (("goal", False), ("filtered", False), ("two", False), ("goal", True)):
+            path = os.path.join(work, name + ".h5")
+            runs = read_runs(path)
+            fig = plot_run.draw_plan(runs, path, []) if plan else draw(runs, path)
+            png = os.path.join(work, name + (".plan" if plan else "") + ".png")
+            save_atomically(fig, png, path)
+            if two_pass:
+                fail("%s: the drawing does not fit on its canvas: written by the tight pass" % png)
+            image = matplotlib.image.imread(png)
+            drawn = np.any(image != image[0, 0], axis=2)
+            pad = int(round(0.1 * 110))
+            if drawn[:pad].any() or drawn[-pad:].any() or drawn[:, :pad].any() \
+                    or drawn[:, -pad:].any():
+                fail("%s: drawn within %d px of its border" % (png, pad))
+            for side, line in (("top", drawn[pad]), ("bottom", drawn[-pad - 1]),
+                               ("left", drawn[:, pad]), ("right", drawn[:, -pad - 1])):
+                if not line.any():
+                    fail("%s: more than %d px of background on the %s" % (png, pad, side))
+            print("%s: %d x %d px, drawn once and cropped" % (os.path.basename(png), *image.shape[1::-1]))
+    finally:
+        matplotlib.figure.Figure.savefig = original
+
+
 CASES = {"route_colour": route_colour, "legend_clear": legend_clear,
-         "solve_outlier": solve_outlier, "goal_missed": goal_missed}
+         "solve_outlier": solve_outlier, "goal_missed": goal_missed, "cropped": cropped}
 
 if __name__ == "__main__":
     case, WPG, work = sys.argv[1], sys.argv[2], sys.argv[3]
