@@ -62,8 +62,27 @@ def compare(path, a, b):
                 continue
             compare(f"{path}/{name}", a[name], b[name])
     else:
-        if not same_values(a[()], b[()]):
+        if not (same_stored_chunks(a, b) or same_values(a[()], b[()])):
             differences.append(f"{path}: values differ")
+
+
+def same_stored_chunks(a, b):
+    """Whether two chunked datasets of one type and shape store the same bytes in every chunk,
+    compressed as they are: then their values are the same, bit for bit, without inflating
+    them (which took a third of this script's time). False when anything differs, the values
+    are then compared."""
+    if a.chunks is None or a.chunks != b.chunks or a.shape != b.shape or a.dtype != b.dtype \
+            or a.compression != b.compression or a.dtype.kind in "OV":
+        return False
+    count = a.id.get_num_chunks()
+    if count != b.id.get_num_chunks():
+        return False
+    for i in range(count):
+        offset = a.id.get_chunk_info(i).chunk_offset
+        if b.id.get_chunk_info(i).chunk_offset != offset \
+                or a.id.read_direct_chunk(offset) != b.id.read_direct_chunk(offset):
+            return False
+    return True
 
 
 def main():
