@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <csignal>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -121,6 +122,11 @@ TEST_F(OutputFile, TemporaryIsExclusiveUnpredictableAndRemoved) {
 // A process killed by SIGTERM or SIGINT while its temporary file exists leaves nothing behind.
 TEST_F(OutputFile, TemporaryRemovedOnTermination) {
   for (const int signal_number : {SIGTERM, SIGINT}) {
+    // Started with the signal ignored (SIGINT, in a background job of a non-interactive
+    // shell), the process goes on after it: IgnoredSignalKeepsTheTemporary.
+    struct sigaction current {};
+    ::sigaction(signal_number, nullptr, &current);
+    if (current.sa_handler == SIG_IGN) continue;
     int ready[2];
     ASSERT_EQ(::pipe(ready), 0);
     const pid_t child = ::fork();
@@ -145,6 +151,25 @@ TEST_F(OutputFile, TemporaryRemovedOnTermination) {
     EXPECT_EQ(WTERMSIG(status), signal_number);  // the default action still ends it
     EXPECT_EQ(entries(), 0) << "signal " << signal_number;
   }
+}
+
+// A process started with SIGINT ignored (`wpg batch ... &` in a script: POSIX shells start
+// background jobs so) goes on after a SIGINT: its temporary output must stay, or the process
+// writes on into an unlinked file and cannot rename it at the end. The removal on a signal is
+// for signals that end the process. In a fresh process (a death test re-executes the binary),
+// so that no handler installed by an earlier test is inherited.
+TEST_F(OutputFile, IgnoredSignalKeepsTheTemporary) {
+  GTEST_FLAG_SET(death_test_style, "threadsafe");
+  const std::string target = (fs::path(folder_) / "out.h5").string();
+  EXPECT_EXIT(
+      {
+        ::signal(SIGINT, SIG_IGN);
+        TemporaryOutput temporary(target);
+        std::ofstream(temporary.path()) << "partly written";
+        ::raise(SIGINT);  // ignored, as it was when the process started
+        std::_Exit(fs::exists(temporary.path()) ? 0 : 1);
+      },
+      ::testing::ExitedWithCode(0), "");
 }
 
 }  // namespace

@@ -45,12 +45,18 @@ void removeTemporaries(int signal_number) {
   ::raise(signal_number);
 }
 
+// Not for a signal the process was started ignoring: a background job of a non-interactive
+// shell (`wpg batch ... &` in a script) starts with SIGINT ignored, and goes on after one; its
+// temporary output removed, it would write on into an unlinked file and fail to rename it.
 void installHandlers() {
   struct sigaction action {};
   action.sa_handler = removeTemporaries;
   sigemptyset(&action.sa_mask);
-  ::sigaction(SIGINT, &action, &previous_int);
-  ::sigaction(SIGTERM, &action, &previous_term);
+  for (const int signal_number : {SIGINT, SIGTERM}) {
+    struct sigaction& previous = signal_number == SIGINT ? previous_int : previous_term;
+    ::sigaction(signal_number, nullptr, &previous);
+    if (previous.sa_handler != SIG_IGN) ::sigaction(signal_number, &action, nullptr);
+  }
 }
 
 int publish(const std::string& path) {

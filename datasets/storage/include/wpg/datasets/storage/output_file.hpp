@@ -13,7 +13,8 @@
 //    exclusively (O_EXCL, mkstemp) with an unpredictable name in the target's folder (a symlink
 //    planted there cannot redirect the write), renamed over the target by commit() (atomic on
 //    one file system), removed by the destructor otherwise, and removed too when the process
-//    gets SIGINT or SIGTERM while it exists.
+//    gets SIGINT or SIGTERM while it exists (not a signal the process was started ignoring: it
+//    goes on after that one).
 #include <string>
 #include <vector>
 
