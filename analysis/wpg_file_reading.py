@@ -73,9 +73,9 @@ def save_figure_cropped(fig, output, dpi, metadata, pad_inches=0.1):
     `pad_inches` of the background round it: what savefig(bbox_inches="tight") writes, from one
     draw instead of two (tight draws the whole figure once to measure it, then again to write
     it: a run's figure took 1.15 s of CPU with it, 0.98 s without, medians of 8 interleaved
-    runs). The figure is drawn at `dpi`, and the pixels that
-    are not the background bound the crop. A drawing that reaches the canvas's border may go on
-    past it, where only the tight bounding box sees it: then the figure is written with that."""
+    runs). The figure is drawn at `dpi`, and the pixels that are not the background bound the
+    crop. A drawing that reaches the canvas's border may go on past it, where only the tight
+    bounding box sees it: then the figure is written with that."""
     import numpy as np
     from matplotlib.image import imsave
 

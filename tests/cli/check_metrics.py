@@ -43,13 +43,7 @@ def ccw(vertices):
 
 def inside_distance(vertices, p):
     """Signed distance inside a convex polygon to its nearest edge line (> 0 inside)."""
-    v = ccw(vertices)
-    best = math.inf
-    for a, b in zip(v, np.roll(v, -1, axis=0)):
-        edge = b - a
-        outward = np.array([edge[1], -edge[0]]) / np.hypot(*edge)
-        best = min(best, -np.dot(outward, p - a))
-    return best
+    return float(inside_distances(vertices, np.asarray(p, dtype=float)[None, :])[0])
 
 
 def inside_distances(vertices, points):
