@@ -113,14 +113,16 @@ Field readField(const H5::DataType& file_type, const H5::DataSpace& space,
   return field;
 }
 
-Field readDataset(const H5::DataSet& dataset, const FieldPlace& place) {
-  detail::checkVariableData(dataset, place.file, place.what);  // before HDF5 reads a heap
+Field readDataset(const H5::DataSet& dataset, const FieldPlace& place,
+                  detail::VariableDataChecker& checker) {
+  checker.check(dataset, place.file, place.what);  // before HDF5 reads a heap
   return readField(dataset.getDataType(), dataset.getSpace(), place,
                    [&](void* buffer, const H5::DataType& type) { dataset.read(buffer, type); });
 }
 
-Field readAttribute(const H5::Attribute& attribute, const FieldPlace& place) {
-  detail::checkVariableData(attribute, place.file, place.what);
+Field readAttribute(const H5::Attribute& attribute, const FieldPlace& place,
+                    detail::VariableDataChecker& checker) {
+  checker.check(attribute, place.file, place.what);
   return readField(attribute.getDataType(), attribute.getSpace(), place,
                    [&](void* buffer, const H5::DataType& type) { attribute.read(type, buffer); });
 }
@@ -208,8 +210,9 @@ class Comparison {
         const H5::DataSet dataset_a = a.openDataSet(name), dataset_b = b.openDataSet(name);
         compareAttributes(child, dataset_a, dataset_b, false);
         ++result.datasets_compared;
-        compareFields(child, false, readDataset(dataset_a, {path_a_, "dataset " + child}),
-                      readDataset(dataset_b, {path_b_, "dataset " + child}),
+        compareFields(child, false,
+                      readDataset(dataset_a, {path_a_, "dataset " + child}, checker_),
+                      readDataset(dataset_b, {path_b_, "dataset " + child}, checker_),
                       columnNames(dataset_a, {path_a_, "attribute " + child + "@columns"}));
       }
     }
@@ -220,6 +223,7 @@ class Comparison {
   const std::string& path_a_;
   const std::string& path_b_;
   std::set<std::pair<std::string, std::string>> visited_;
+  detail::VariableDataChecker checker_;  // both files' bytes and heaps, each read once
 
   bool ignoredByPattern(const std::string& path) const {
     for (const std::string& pattern : settings_.ignore_patterns) {
@@ -236,10 +240,9 @@ class Comparison {
     result.differences.push_back(std::move(difference));
   }
 
-  static std::vector<std::string> columnNames(const H5::H5Object& object,
-                                              const FieldPlace& place) {
+  std::vector<std::string> columnNames(const H5::H5Object& object, const FieldPlace& place) {
     if (!object.attrExists("columns")) return {};
-    const Field columns = readAttribute(object.openAttribute("columns"), place);
+    const Field columns = readAttribute(object.openAttribute("columns"), place, checker_);
     if (columns.kind != Field::Kind::kText || columns.texts.size() != 1) return {};
     return splitColumns(columns.texts[0]);
   }
@@ -261,8 +264,10 @@ class Comparison {
         continue;
       }
       ++result.attributes_compared;
-      compareFields(where, true, readAttribute(a.openAttribute(name), {path_a_, "attribute " + where}),
-                    readAttribute(b.openAttribute(name), {path_b_, "attribute " + where}), {});
+      compareFields(where, true,
+                    readAttribute(a.openAttribute(name), {path_a_, "attribute " + where}, checker_),
+                    readAttribute(b.openAttribute(name), {path_b_, "attribute " + where}, checker_),
+                    {});
     }
   }
 

@@ -33,7 +33,14 @@ constexpr int kMaxHeaderChunks = 256;
   throw InputError(file + ": " + what + ": damaged variable-length data (" + why + ")");
 }
 
-std::uint64_t headerAddress(hid_t object) {
+// Where an object's header is, and in which open file (H5Oget_info of an attribute
+// describes the object it is attached to).
+struct ObjectPlace {
+  unsigned long file_number = 0;
+  std::uint64_t header = 0;
+};
+
+ObjectPlace objectPlace(hid_t object) {
 #if H5_VERSION_GE(1, 12, 0)
   H5O_info2_t info;
   haddr_t address = HADDR_UNDEF;
@@ -41,14 +48,28 @@ std::uint64_t headerAddress(hid_t object) {
       H5VLnative_token_to_addr(object, info.token, &address) < 0) {
     throw H5::Exception("H5Oget_info3", "cannot find the object's header");
   }
-  return address;
+  return {info.fileno, address};
 #else
   H5O_info_t info;
   if (H5Oget_info2(object, &info, H5O_INFO_BASIC) < 0) {
     throw H5::Exception("H5Oget_info2", "cannot find the object's header");
   }
-  return info.addr;
+  return {info.fileno, info.addr};
 #endif
+}
+
+// True when elements of `type` are of variable length; refuses a variable-length type inside
+// another (a compound's member, an array's base), which wpg never writes.
+bool isVariable(hid_t type, const std::string& file, const std::string& what) {
+  const H5T_class_t type_class = H5Tget_class(type);
+  if (type_class == H5T_VLEN || (type_class == H5T_STRING && H5Tis_variable_str(type) > 0)) {
+    return true;
+  }
+  if (H5Tdetect_class(type, H5T_VLEN) > 0) {
+    throw InputError(file + ": " + what +
+                     ": variable-length data inside another type (not read: wpg writes none)");
+  }
+  return false;
 }
 
 // Calls `visit(type, data, size)` for each message of the header at `address`; returns why
@@ -187,27 +208,37 @@ void checkHeader(const FileBytes& bytes, HeapChecker& heaps, std::uint64_t addre
   }
 }
 
+// An identifier HDF5 handed over (H5Dget_type, H5Dget_space, ...), released on every path.
+// The C++ API's wrappers built from an identifier take a reference of their own, so wrapping
+// these would leave one behind per object checked.
+class OwnedId {
+ public:
+  OwnedId(hid_t id, const char* call) : id_(id) {
+    if (id_ < 0) throw H5::Exception(call, "failed");
+  }
+  ~OwnedId() { H5Idec_ref(id_); }
+  OwnedId(const OwnedId&) = delete;
+  OwnedId& operator=(const OwnedId&) = delete;
+  hid_t get() const { return id_; }
+
+ private:
+  hid_t id_;
+};
+
+// The heap IDs of a variable-length dataset (isVariable), checked.
 void checkDatasetData(const FileBytes& bytes, HeapChecker& heaps, hid_t dataset,
                       const std::string& file, const std::string& what) {
-  const H5::DataType type(H5Dget_type(dataset));
-  const H5T_class_t type_class = type.getClass();
-  const bool variable =
-      type_class == H5T_VLEN || (type_class == H5T_STRING && H5Tis_variable_str(type.getId()) > 0);
-  if (!variable) {
-    if (H5Tdetect_class(type.getId(), H5T_VLEN) > 0) {
-      throw InputError(file + ": " + what +
-                       ": variable-length data inside another type (not read: wpg writes none)");
-    }
-    return;
-  }
   std::uint64_t element_size = 1;
-  if (type_class == H5T_VLEN) {
-    const hid_t base = H5Tget_super(type.getId());
-    element_size = base >= 0 ? H5Tget_size(base) : 0;
-    if (base >= 0) H5Tclose(base);
+  {
+    const OwnedId type(H5Dget_type(dataset), "H5Dget_type");
+    if (H5Tget_class(type.get()) == H5T_VLEN) {
+      const hid_t base = H5Tget_super(type.get());
+      element_size = base >= 0 ? H5Tget_size(base) : 0;
+      if (base >= 0) H5Tclose(base);
+    }
   }
-  const H5::DataSpace space(H5Dget_space(dataset));
-  const hssize_t points = space.getSimpleExtentNpoints();
+  const hssize_t points =
+      H5Sget_simple_extent_npoints(OwnedId(H5Dget_space(dataset), "H5Dget_space").get());
   if (points < 0 || static_cast<std::uint64_t>(points) > kMaxReadElements) {
     refuse(file, what, "it declares too many elements");
   }
@@ -215,9 +246,11 @@ void checkDatasetData(const FileBytes& bytes, HeapChecker& heaps, hid_t dataset,
   if (count == 0) return;
   const haddr_t offset = H5Dget_offset(dataset);
   if (offset == HADDR_UNDEF) {
-    const H5::DSetCreatPropList creation(H5Dget_create_plist(dataset));
+    const OwnedId creation(H5Dget_create_plist(dataset), "H5Dget_create_plist");
     // Never written: HDF5 hands fill values (null strings) over, no heap read.
-    if (creation.getLayout() == H5D_CONTIGUOUS && H5Dget_storage_size(dataset) == 0) return;
+    if (H5Pget_layout(creation.get()) == H5D_CONTIGUOUS && H5Dget_storage_size(dataset) == 0) {
+      return;
+    }
     throw InputError(file + ": " + what +
                      ": expected variable-length data stored contiguously, as wpg writes it");
   }
@@ -253,7 +286,10 @@ herr_t visitObject(hid_t group, const char* name, const H5O_info_t* info, void* 
       const hid_t dataset = H5Dopen2(group, name, H5P_DEFAULT);
       if (dataset < 0) throw H5::Exception("H5Dopen2", "cannot open dataset " + path);
       try {
-        checkDatasetData(check.bytes, check.heaps, dataset, check.file, "dataset " + path);
+        const OwnedId type(H5Dget_type(dataset), "H5Dget_type");
+        if (isVariable(type.get(), check.file, "dataset " + path)) {
+          checkDatasetData(check.bytes, check.heaps, dataset, check.file, "dataset " + path);
+        }
       } catch (...) {
         H5Dclose(dataset);
         throw;
@@ -312,29 +348,48 @@ void checkSubtree(hid_t group, const std::string& file, const std::string& prefi
 
 }  // namespace
 
+struct VariableDataChecker::OpenFile {
+  explicit OpenFile(hid_t object) : bytes(object), heaps(bytes) {}
+  FileBytes bytes;
+  HeapChecker heaps;
+};
+
+VariableDataChecker::VariableDataChecker() = default;
+VariableDataChecker::~VariableDataChecker() = default;
+
+VariableDataChecker::OpenFile& VariableDataChecker::openFile(hid_t object,
+                                                             unsigned long file_number) {
+  std::unique_ptr<OpenFile>& open = files_[file_number];
+  if (!open) open = std::make_unique<OpenFile>(object);
+  return *open;
+}
+
+void VariableDataChecker::check(const H5::DataSet& dataset, const std::string& file,
+                                const std::string& what) {
+  const H5::DataType type = dataset.getDataType();
+  if (!isVariable(type.getId(), file, what)) return;
+  OpenFile& open = openFile(dataset.getId(), objectPlace(dataset.getId()).file_number);
+  checkDatasetData(open.bytes, open.heaps, dataset.getId(), file, what);
+}
+
+void VariableDataChecker::check(const H5::Attribute& attribute, const std::string& file,
+                                const std::string& what) {
+  const H5::DataType type = attribute.getDataType();
+  if (!isVariable(type.getId(), file, what)) return;
+  const ObjectPlace place = objectPlace(attribute.getId());
+  OpenFile& open = openFile(attribute.getId(), place.file_number);
+  const std::string name = attribute.getName();
+  checkHeader(open.bytes, open.heaps, place.header, name.c_str(), file, what);
+}
+
 void checkVariableData(const H5::DataSet& dataset, const std::string& file,
                        const std::string& what) {
-  const FileBytes bytes(dataset.getId());
-  HeapChecker heaps(bytes);
-  checkDatasetData(bytes, heaps, dataset.getId(), file, what);
+  VariableDataChecker().check(dataset, file, what);
 }
 
 void checkVariableData(const H5::Attribute& attribute, const std::string& file,
                        const std::string& what) {
-  const H5::DataType type = attribute.getDataType();
-  const H5T_class_t type_class = type.getClass();
-  if (type_class != H5T_VLEN && !(type_class == H5T_STRING && H5Tis_variable_str(type.getId()) > 0)) {
-    if (H5Tdetect_class(type.getId(), H5T_VLEN) > 0) {
-      throw InputError(file + ": " + what +
-                       ": variable-length data inside another type (not read: wpg writes none)");
-    }
-    return;
-  }
-  const FileBytes bytes(attribute.getId());
-  HeapChecker heaps(bytes);
-  // H5Oget_info of an attribute describes the object it is attached to.
-  const std::string name = attribute.getName();
-  checkHeader(bytes, heaps, headerAddress(attribute.getId()), name.c_str(), file, what);
+  VariableDataChecker().check(attribute, file, what);
 }
 
 void checkVariableDataUnder(const H5::Group& group, const std::string& file) {
