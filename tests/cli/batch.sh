@@ -19,12 +19,12 @@ cd "$WORKDIR"
 "$wpg" batch "$study" -o two.h5 -j 2 --no-plot >/dev/null 2>&1 || fail "-j 2: exit $?"
 [[ -s one.summary.csv && -s one.summary.md ]] || fail "no summary.csv/.md beside the batch file"
 check_png one.summary.png
-"$PYTHON" "$HERE/compare_batch_files.py" one.h5 two.h5 || fail "-j 1 and -j 2 files differ"
+oracle compare_batch_files.py one.h5 two.h5 || fail "-j 1 and -j 2 files differ"
 total="$("$PYTHON" -c "import h5py,sys; f=h5py.File(sys.argv[1]); print(f.attrs['run_count'])" one.h5)"
 [[ "$(($(wc -l <one.summary.csv) - 1))" == "$total" ]] || fail "summary.csv has not $total rows"
 
 "$wpg" analyze two.h5 --format json >metrics.json || fail "wpg analyze: exit $?"
-"$PYTHON" "$HERE/check_metrics.py" two.h5 metrics.json || fail "metrics disagree"
+oracle check_metrics.py two.h5 metrics.json || fail "metrics disagree"
 "$wpg" analyze two.h5 --format csv >metrics.csv || fail "wpg analyze --format csv: exit $?"
 [[ "$(($(wc -l <metrics.csv) - 1))" == "$total" ]] || fail "analyze csv has not $total rows"
 
@@ -78,11 +78,11 @@ if [[ -n "$damaged" ]]; then
 else
   grep -q "resuming, $done_runs of $total runs already" resume.err || fail "resume: $(cat resume.err)"
 fi
-"$PYTHON" "$HERE/compare_batch_files.py" one.h5 killed.h5 || fail "killed + resumed differs"
+oracle compare_batch_files.py one.h5 killed.h5 || fail "killed + resumed differs"
 
 sum_before="$(md5sum <killed.h5)"
 "$wpg" batch "$study" -o killed.h5 -j 2 --resume --no-plot >/dev/null 2>resume.err ||
   fail "--resume of a complete file: exit $?"
 grep -q "0/0 runs" resume.err || fail "--resume of a complete file ran something: $(cat resume.err)"
-"$PYTHON" "$HERE/compare_batch_files.py" one.h5 killed.h5 || fail "complete file changed by --resume"
+oracle compare_batch_files.py one.h5 killed.h5 || fail "complete file changed by --resume"
 echo "ok"

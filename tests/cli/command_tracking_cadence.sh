@@ -20,7 +20,7 @@ fast=(--set duration=30 --set 'reference[1].v[1]=0.15')
 "$wpg" run walk_sideways --no-plot -o shipped.h5 >/dev/null || fail "run (shipped): exit $?"
 for file in adaptive.h5 fixed.h5; do
   "$wpg" analyze "$file" --format json >"$file.json" || fail "analyze $file: exit $?"
-  "$PYTHON" "$HERE/check_metrics.py" "$file" "$file.json" || fail "metrics of $file disagree"
+  oracle check_metrics.py "$file" "$file.json" || fail "metrics of $file disagree"
 done
 "$PYTHON" - adaptive.h5.json fixed.h5.json adaptive.h5 fixed.h5 shipped.h5 <<'PY' || fail "the command beyond the 0.8 s reach is not tracked"
 import json, sys

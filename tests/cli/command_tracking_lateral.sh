@@ -22,7 +22,7 @@ status=0
 "$wpg" run walk_sideways --no-plot -o shipped.h5 >/dev/null || fail "run (shipped): exit $?"
 for file in sideways.h5 paper.h5; do
   "$wpg" analyze "$file" --format json >"$file.json" || fail "analyze $file: exit $?"
-  "$PYTHON" "$HERE/check_metrics.py" "$file" "$file.json" || fail "metrics of $file disagree"
+  oracle check_metrics.py "$file" "$file.json" || fail "metrics of $file disagree"
 done
 "$PYTHON" - sideways.h5.json paper.h5.json shipped.h5 <<'PY' || fail "the lateral command is not followed"
 import json, sys

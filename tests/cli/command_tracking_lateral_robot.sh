@@ -16,7 +16,7 @@ for vy in 0.05 0.1 0.15 -0.1; do
     || fail "vy $vy: exit $?: $(cat "$vy.err")"
   [[ ! -s "$vy.err" ]] || fail "vy $vy: $(cat "$vy.err")"
   "$wpg" analyze "$vy.h5" --format json >"$vy.json" || fail "analyze: exit $?"
-  "$PYTHON" "$HERE/check_metrics.py" "$vy.h5" "$vy.json" || fail "metrics of vy $vy disagree"
+  oracle check_metrics.py "$vy.h5" "$vy.json" || fail "metrics of vy $vy disagree"
   "$PYTHON" - "$vy.json" "$vy" <<'PY' || fail "vy $2 not followed"
 import json, sys
 run = json.load(open(sys.argv[1]))["walk_sideways"]

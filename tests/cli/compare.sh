@@ -22,9 +22,9 @@ for file in study.h5 summary.csv summary.md; do
 done
 for figure in success_rates time_to_goal top_field top_trap; do check_png "one/$figure.png"; done
 [[ ! -e two/success_rates.png ]] || fail "--no-plot drew figures"
-"$PYTHON" "$HERE/compare_batch_files.py" one/study.h5 two/study.h5 || fail "-j 1 and -j 2 differ"
+oracle compare_batch_files.py one/study.h5 two/study.h5 || fail "-j 1 and -j 2 differ"
 [[ "$(($(wc -l <one/summary.csv) - 1))" == 4 ]] || fail "summary.csv has not 4 rows (2 worlds x 2 variants)"
-"$PYTHON" "$HERE/check_compare_table.py" one/study.h5 one/summary.csv || fail "the table disagrees with the runs"
+oracle check_compare_table.py one/study.h5 one/summary.csv || fail "the table disagrees with the runs"
 # The console never rounds a failure away: a run whose step centre entered a margin by
 # 1.07e-5 m (its shard's summary edited, then merged, which prints the table as compare does)
 # is printed below zero, as summary.csv has it, not as 0.000 m; a clearance within the
@@ -52,5 +52,5 @@ assert -1e-9 < float(rows["trap", "nmpc_only"]["clearance_min"]) < 0, rows["trap
 assert printed["trap", "nmpc_only"] == "0.000", printed
 PY
 "$wpg" compare "$study" -o one -j 2 --no-plot >/dev/null 2>&1 || fail "again into one/: exit $?"
-"$PYTHON" "$HERE/compare_batch_files.py" one/study.h5 two/study.h5 || fail "rerun differs"
+oracle compare_batch_files.py one/study.h5 two/study.h5 || fail "rerun differs"
 echo "ok"

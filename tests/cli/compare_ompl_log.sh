@@ -11,7 +11,7 @@ make_workdir
 "$wpg" compare "$study" -o "$WORKDIR/out" -j 2 --no-plot --ompl-log "$WORKDIR/logs" >"$WORKDIR/stdout" \
   || fail "compare --ompl-log: exit status $?"
 grep -q "OMPL logs" "$WORKDIR/stdout" || fail "compare does not name the logs: $(cat "$WORKDIR/stdout")"
-"$PYTHON" "$HERE/check_ompl_log.py" "$WORKDIR/logs" "$WORKDIR/out/study.h5" || fail "the OMPL logs"
+oracle check_ompl_log.py "$WORKDIR/logs" "$WORKDIR/out/study.h5" || fail "the OMPL logs"
 grep -q "database $WORKDIR/logs/benchmark.db" "$WORKDIR/stdout" || fail "compare does not name the database"
 "$PYTHON" "$HERE/check_ompl_database.py" "$WORKDIR/logs" || fail "the Planner Arena database"
 

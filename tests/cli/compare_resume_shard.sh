@@ -22,7 +22,7 @@ total="$("$PYTHON" -c "import h5py,sys; print(h5py.File(sys.argv[1])['batch/summ
 
 # Velocity metrics of the goal walks: analyze = the run-time summary = the recomputation.
 "$wpg" analyze one/study.h5 --format json >metrics.json || fail "wpg analyze: exit $?"
-"$PYTHON" "$HERE/check_metrics.py" one/study.h5 metrics.json || fail "metrics disagree with check_metrics.py"
+oracle check_metrics.py one/study.h5 metrics.json || fail "metrics disagree with check_metrics.py"
 "$PYTHON" - one/study.h5 metrics.json <<'PY' || fail "analyze differs from the run-time summary"
 import json, math, sys, h5py
 metrics = json.load(open(sys.argv[2]))
@@ -78,14 +78,14 @@ done
 if [[ "$partial" == yes ]]; then
   grep -q "resuming, $done_runs of $total runs already" resume.err || fail "resume: $(cat resume.err)"
 fi
-"$PYTHON" "$HERE/compare_batch_files.py" one/study.h5 killed/study.h5 || fail "killed + resumed differs"
+oracle compare_batch_files.py one/study.h5 killed/study.h5 || fail "killed + resumed differs"
 diff <(keep_columns one/summary.csv) <(keep_columns killed/summary.csv) || fail "summary.csv differs"
 
 # --resume of a complete study: nothing run, the same contents.
 "$wpg" compare "$study" -o killed -j 2 --resume --no-plot >/dev/null 2>resume.err ||
   fail "--resume of a complete study: exit $?"
 grep -q "0/0 runs" resume.err || fail "--resume of a complete study ran something: $(cat resume.err)"
-"$PYTHON" "$HERE/compare_batch_files.py" one/study.h5 killed/study.h5 || fail "complete study changed by --resume"
+oracle compare_batch_files.py one/study.h5 killed/study.h5 || fail "complete study changed by --resume"
 
 # --resume of a study file of another study (other seeds): refused, the file untouched.
 sed -e 's/^seeds: .*/seeds: [7, 8]/' "$study" >other_seeds.yaml
@@ -116,10 +116,10 @@ PY
 "$wpg" merge sharded/study.h5 sharded/study.shards --no-plot >stdout 2>stderr ||
   fail "merge: exit $? ($(cat stderr))"
 grep -q "wrote sharded/study.h5 ($total runs)" stdout || fail "merge: $(cat stdout)"
-"$PYTHON" "$HERE/compare_batch_files.py" one/study.h5 sharded/study.h5 || fail "merged slices differ from one run"
+oracle compare_batch_files.py one/study.h5 sharded/study.h5 || fail "merged slices differ from one run"
 diff <(keep_columns one/summary.csv) <(keep_columns sharded/summary.csv) || fail "merged summary.csv differs"
 [[ -s sharded/summary.md ]] || fail "no summary.md beside the merged study"
-"$PYTHON" "$HERE/check_compare_table.py" sharded/study.h5 sharded/summary.csv || fail "the merged table disagrees with the runs"
+oracle check_compare_table.py sharded/study.h5 sharded/summary.csv || fail "the merged table disagrees with the runs"
 
 # --ompl-log with --shard is a usage error (the logs describe the whole study).
 status=0

@@ -119,7 +119,7 @@ second_writer | resume_in_use)
   ((checks == 0)) || exit "$checks"
   wait "$first" || first_status=$?
   [[ $first_status == 0 ]] || fail "the first batch: exit $first_status ($(cat first.err))"
-  "$PYTHON" "$HERE/compare_batch_files.py" reference.h5 out.h5 || fail "the first batch's file differs"
+  oracle compare_batch_files.py reference.h5 out.h5 || fail "the first batch's file differs"
   ;;
 merge_copy_full)
   # The index of copies cannot be written (a file size limit, as a full disk): exit 3, no

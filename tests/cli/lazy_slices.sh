@@ -68,7 +68,7 @@ for k in 0 1 2 3 4; do
     fail "--shard $k/5: exit $? ($(cat stderr))"
 done
 "$wpg" merge five.h5 five/part-*.h5 --no-plot >/dev/null 2>stderr || fail "merge of 5: $(cat stderr)"
-"$PYTHON" "$HERE/compare_batch_files.py" one.h5 five.h5 || fail "5 slices merged differ from -j 1"
+oracle compare_batch_files.py one.h5 five.h5 || fail "5 slices merged differ from -j 1"
 
 # Slice 1/2 loses its last 3 runs (their groups removed, their rows not done): --resume runs
 # them again, and the merged slices are -j 1's runs.
@@ -89,5 +89,5 @@ PY
 "$wpg" batch "$study" -o two/part-1.h5 --shard 1/2 --resume --no-plot >stdout 2>stderr ||
   fail "--resume of 1/2: exit $? ($(cat stderr))"
 "$wpg" merge two.h5 two/part-*.h5 --no-plot >/dev/null 2>stderr || fail "merge of 2: $(cat stderr)"
-"$PYTHON" "$HERE/compare_batch_files.py" one.h5 two.h5 || fail "a resumed slice merged differs from -j 1"
+oracle compare_batch_files.py one.h5 two.h5 || fail "a resumed slice merged differs from -j 1"
 echo ok

@@ -83,7 +83,7 @@ if [[ -n "$mpirun" ]]; then
   OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 "$mpirun" --oversubscribe -np 2 \
     "$wpg" batch "$study" -o mpi/lean.h5 --no-plot --fields summary,footsteps >stdout 2>stderr ||
     fail "mpirun -np 2 --fields: exit $? ($(cat stderr))"
-  "$PYTHON" "$HERE/compare_batch_files.py" lean.h5 mpi/lean.h5 || fail "lean under MPI differs"
+  oracle compare_batch_files.py lean.h5 mpi/lean.h5 || fail "lean under MPI differs"
 fi
 
 # Read as a walk: one line saying what the lean run lacks (the sanitizer tree, WPG_SANITIZED,

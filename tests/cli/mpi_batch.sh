@@ -34,7 +34,7 @@ total="$("$PYTHON" -c "import h5py,sys; print(h5py.File(sys.argv[1])['batch/summ
   fail "mpirun -np 3: exit $? ($(cat stderr))"
 grep -q "3 ranks x 1 workers; rank 0 answered" stderr || fail "no rank 0 statistics: $(cat stderr)"
 [[ -s mpi/out.summary.csv ]] || fail "no summary.csv beside the index"
-"$PYTHON" "$HERE/compare_batch_files.py" one.h5 mpi/out.h5 || fail "mpirun -np 3 differs from -j 1"
+oracle compare_batch_files.py one.h5 mpi/out.h5 || fail "mpirun -np 3 differs from -j 1"
 "$PYTHON" - mpi/out.h5 <<'PY' || fail "bad shard layout"
 import sys, h5py
 ranks = set()
@@ -99,12 +99,12 @@ grep -Eq "resuming, [0-9]+ of $total runs already" resume.err || fail "resume: $
 if ! grep -q "moved to" resume.err; then
   grep -q "resuming, $done_runs of $total runs already" resume.err || fail "resume: $(cat resume.err)"
 fi
-"$PYTHON" "$HERE/compare_batch_files.py" one.h5 killed/out.h5 || fail "killed + resumed differs"
+oracle compare_batch_files.py one.h5 killed/out.h5 || fail "killed + resumed differs"
 
 "${mpi[@]}" -np 2 "$wpg" batch "$study" -o killed/out.h5 --resume --no-plot >/dev/null 2>resume.err ||
   fail "--resume of a complete study: exit $?"
 grep -q "resuming, $total of $total" resume.err || fail "--resume of a complete study: $(cat resume.err)"
-"$PYTHON" "$HERE/compare_batch_files.py" one.h5 killed/out.h5 || fail "complete study changed by --resume"
+oracle compare_batch_files.py one.h5 killed/out.h5 || fail "complete study changed by --resume"
 
 # A shard HDF5 cannot open (what a kill inside a write may leave: truncated here) is moved
 # aside and its runs are run again.
@@ -115,7 +115,7 @@ mv truncated.h5 killed/out.shards/rank-1.h5
 grep -q "rank-1.h5 cannot be read by HDF5.*moved to killed/out.shards/rank-1.h5.damaged" resume.err ||
   fail "the damaged shard was not moved aside: $(cat resume.err)"
 [[ -f killed/out.shards/rank-1.h5.damaged ]] || fail "no rank-1.h5.damaged"
-"$PYTHON" "$HERE/compare_batch_files.py" one.h5 killed/out.h5 || fail "resumed without the damaged shard differs"
+oracle compare_batch_files.py one.h5 killed/out.h5 || fail "resumed without the damaged shard differs"
 
 refused() {  # refused EXPECTED ARGS...: exit 2, one error line naming EXPECTED
   local expected="$1"; shift

@@ -15,8 +15,8 @@ cd "$WORKDIR"
 "$mpirun" --oversubscribe -np 3 "$wpg" compare "$study" -o mpi --no-plot >stdout 2>stderr ||
   fail "mpirun -np 3 compare: exit $? ($(cat stderr))"
 [[ -d mpi/study.shards ]] || fail "no shard folder"
-"$PYTHON" "$HERE/compare_batch_files.py" one/study.h5 mpi/study.h5 || fail "MPI compare differs from -j 1"
-"$PYTHON" "$HERE/check_compare_table.py" mpi/study.h5 mpi/summary.csv || fail "the table disagrees with the runs"
+oracle compare_batch_files.py one/study.h5 mpi/study.h5 || fail "MPI compare differs from -j 1"
+oracle check_compare_table.py mpi/study.h5 mpi/summary.csv || fail "the table disagrees with the runs"
 # summary.csv: the same but the wall-time columns (planning and NMPC times).
 keep() {
   "$PYTHON" -c "
@@ -30,5 +30,5 @@ diff <(keep one/summary.csv) <(keep mpi/summary.csv) || fail "summary.csv differ
   fail "mpirun -np 2 compare --resume: exit $? ($(cat stderr))"
 total="$("$PYTHON" -c "import h5py,sys; print(h5py.File(sys.argv[1])['batch/summary/done'].size)" one/study.h5)"
 grep -q "resuming, $total of $total" stderr || fail "--resume of a complete MPI study: $(cat stderr)"
-"$PYTHON" "$HERE/compare_batch_files.py" one/study.h5 mpi/study.h5 || fail "MPI --resume changed the study"
+oracle compare_batch_files.py one/study.h5 mpi/study.h5 || fail "MPI --resume changed the study"
 echo "ok"

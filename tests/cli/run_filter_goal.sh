@@ -24,7 +24,7 @@ for mode in online closed_loop; do
   grep -Eq '^goal      reached in [0-9.]+ s' "$WORKDIR/stdout" || fail "mode $mode: goal not reached"
   grep -q "^filter    $mode" "$WORKDIR/stdout" || fail "mode $mode: no filter line"
   check_run_file "$WORKDIR/$mode.h5"
-  "$PYTHON" "$HERE/check_goal_run.py" "$WORKDIR/$mode.h5" || fail "mode $mode: bad goal run"
+  oracle check_goal_run.py "$WORKDIR/$mode.h5" || fail "mode $mode: bad goal run"
 done
 check_multibody "$WORKDIR/online.h5" --filtered --min-reduction 3 --min-reduction-max 1 \
   --mode online

@@ -9,7 +9,7 @@ source "$(dirname "$0")/common.sh"
 wpg="$1"; scenario="$2"; shift 2
 make_workdir
 status=0
-"$wpg" run "$scenario" -o "$WORKDIR/run.h5" >"$WORKDIR/stdout" 2>"$WORKDIR/stderr" || status=$?
+"$wpg" run "$scenario" "${figure_options[@]}" -o "$WORKDIR/run.h5" >"$WORKDIR/stdout" 2>"$WORKDIR/stderr" || status=$?
 cat "$WORKDIR/stdout"; cat "$WORKDIR/stderr" >&2
 [[ $status == 0 ]] || fail "exit status $status"
 [[ ! -s "$WORKDIR/stderr" ]] || fail "unexpected output on stderr"
@@ -20,5 +20,5 @@ centre="$(sed -n 's/^obstacles .*(the NMPC.s constraint) \(-\{0,1\}[0-9.]*\) m.*
 [[ -n "$centre" ]] || fail "no obstacles line"
 awk -v c="$centre" 'BEGIN { exit !(c >= 0) }' || fail "a step centre is inside a margin: $centre m"
 check_run_file "$WORKDIR/run.h5"
-"$PYTHON" "$HERE/check_goal_run.py" "$WORKDIR/run.h5" "$@" || fail "bad goal run"
+oracle check_goal_run.py "$WORKDIR/run.h5" "$@" || fail "bad goal run"
 echo "ok"

@@ -7,6 +7,6 @@ source "$(dirname "$0")/common.sh"
 wpg="$1"
 make_workdir
 "$wpg" run walk_forward --set duration=3 --no-plot -o "$WORKDIR/short.h5" || fail "exit status $?"
-"$PYTHON" "$HERE/check_run_file.py" "$WORKDIR/short.h5" --duration 3 || fail "bad dataset"
+oracle check_run_file.py "$WORKDIR/short.h5" --duration 3 || fail "bad dataset"
 [[ ! -e "$WORKDIR/short.png" ]] || fail "--no-plot drew a figure"
 echo "ok"

@@ -40,7 +40,7 @@ PY
 "$wpg" merge index.h5 shards/part-0.h5 shards/part-1.h5 shards/part-2.h5 --no-plot >stdout 2>stderr ||
   fail "merge: exit $? ($(cat stderr))"
 [[ -s index.summary.csv && -s index.summary.md ]] || fail "no summary.csv/.md beside the index"
-"$PYTHON" "$HERE/compare_batch_files.py" one.h5 index.h5 || fail "merged shards differ from -j 1"
+oracle compare_batch_files.py one.h5 index.h5 || fail "merged shards differ from -j 1"
 "$PYTHON" - index.h5 <<'PY' || fail "the index does not link its runs with relative paths"
 import sys, h5py
 with h5py.File(sys.argv[1], "r") as f:
@@ -57,11 +57,11 @@ PY
 
 # The folder moved elsewhere, read from another working directory: the links still resolve.
 mkdir moved && mv index.h5 shards moved/
-(cd / && "$PYTHON" "$HERE/compare_batch_files.py" "$WORKDIR/one.h5" "$WORKDIR/moved/index.h5") ||
+(cd / && oracle compare_batch_files.py "$WORKDIR/one.h5" "$WORKDIR/moved/index.h5") ||
   fail "the moved index does not read as before"
 
 "$wpg" merge flat.h5 moved/shards --copy --no-plot >/dev/null 2>&1 || fail "merge --copy: exit $?"
-"$PYTHON" "$HERE/compare_batch_files.py" one.h5 flat.h5 || fail "merge --copy differs from -j 1"
+oracle compare_batch_files.py one.h5 flat.h5 || fail "merge --copy differs from -j 1"
 "$PYTHON" -c "
 import sys, h5py
 f = h5py.File(sys.argv[1], 'r')
