@@ -24,12 +24,6 @@ oracle() {
   "$PYTHON" "$HERE/$1" "${@:2}"
 }
 
-# The options of a command whose figure the test does not look at: none, or --no-plot in the
-# sanitizer tree (WPG_SANITIZED), where drawing it is Python's work (1.5 s of CPU a figure).
-# shellcheck disable=SC2034  # used by the scripts that source this file
-figure_options=()
-[[ "${WPG_SANITIZED:-0}" != 1 ]] || figure_options=(--no-plot)
-
 # check_run_file FILE.h5 [ARGS...]: the schema's datasets are there, with consistent shapes.
 check_run_file() { oracle check_run_file.py "$@" || fail "bad dataset $1"; }
 

@@ -9,12 +9,12 @@ source "$(dirname "$0")/common.sh"
 wpg="$1"; scenario="$2"; shift 2
 make_workdir
 status=0
-"$wpg" run "$scenario" "${figure_options[@]}" -o "$WORKDIR/run.h5" "$@" >"$WORKDIR/stdout" 2>"$WORKDIR/stderr" || status=$?
+"$wpg" run "$scenario" -o "$WORKDIR/run.h5" "$@" >"$WORKDIR/stdout" 2>"$WORKDIR/stderr" || status=$?
 cat "$WORKDIR/stdout"; cat "$WORKDIR/stderr" >&2
 [[ $status == 1 ]] || fail "exit status $status, expected 1"
 [[ "$(wc -l <"$WORKDIR/stderr")" == 1 ]] || fail "expected one line on stderr"
 grep -q "goal not reached" "$WORKDIR/stderr" || fail "stderr does not say the goal was not reached"
 grep -q '^goal      not reached (' "$WORKDIR/stdout" || fail "no 'goal      not reached' line"
 check_run_file "$WORKDIR/run.h5"
-oracle check_goal_run.py "$WORKDIR/run.h5" --not-reached || fail "bad goal run"
+"$PYTHON" "$HERE/check_goal_run.py" "$WORKDIR/run.h5" --not-reached || fail "bad goal run"
 echo "ok"
