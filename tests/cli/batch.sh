@@ -84,5 +84,6 @@ sum_before="$(md5sum <killed.h5)"
 "$wpg" batch "$study" -o killed.h5 -j 2 --resume --no-plot >/dev/null 2>resume.err ||
   fail "--resume of a complete file: exit $?"
 grep -q "0/0 runs" resume.err || fail "--resume of a complete file ran something: $(cat resume.err)"
-oracle compare_batch_files.py one.h5 killed.h5 || fail "complete file changed by --resume"
+# Nothing run, nothing written: the file is the same, byte for byte (stronger than the oracle).
+[[ "$(md5sum <killed.h5)" == "$sum_before" ]] || fail "--resume of a complete file changed it"
 echo "ok"
