@@ -34,6 +34,23 @@ if grep -q "the viewer is not built" "$WORKDIR/probe.err"; then
 else
   rm -rf "$WORKDIR/probe" "$WORKDIR/probe.err"
   expect_bad "unknown run" "no run /runs/nobody" "$WORKDIR/walk.h5" --run nobody
+  # A study whose last run the reader refuses (its com cut to 1 column): refused after the
+  # first run's page data was spooled (study_dashboard.cpp), and still nothing written in the
+  # page's folder, no run page, no temporary file.
+  "$wpg" batch "$HERE/studies/tiny_batch.yaml" -o "$WORKDIR/study/tiny.h5" --no-plot \
+    >/dev/null 2>&1 || fail "batch: exit status $?"
+  "$PYTHON" - "$WORKDIR/study/tiny.h5" <<'PY'
+import sys, h5py
+with h5py.File(sys.argv[1], "r+") as f:
+    run = f["runs"][sorted(f["runs"])[-1]]
+    com = run["com"][:, :1]
+    del run["com"]
+    run["com"] = com
+PY
+  ls -A "$WORKDIR/study" >"$WORKDIR/study.before"
+  expect_bad "a study with a damaged run" "tiny_1/com" "$WORKDIR/study/tiny.h5"
+  ls -A "$WORKDIR/study" | diff "$WORKDIR/study.before" - ||
+    fail "a study with a damaged run: files left in its folder"
   # Route plans are bounded (datasets/SCHEMA.md, "Reading"): 2000 plans each naming all 1000
   # rows of routes (a 2 M-waypoint page from a small file), and 10001 plans.
   plans() {  # plans FILE PLANS ROUTE_ROWS SAME_ROWS: a plans/ group in the run of FILE

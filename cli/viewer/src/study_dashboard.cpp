@@ -9,6 +9,7 @@
 
 #include "wpg/datasets/input/input_error.hpp"
 #include "wpg/datasets/storage/batch_dataset.hpp"
+#include "spool_file.hpp"
 #include "wpg/viewer/run_scene.hpp"
 
 namespace fs = std::filesystem;
@@ -129,8 +130,13 @@ DashboardPages writeDashboard(const ViewerAssets& assets, const DashboardPlan& p
   }
   json.endArray();
 
-  // First every run is read (a run the readers refuse stops the command before anything is
-  // written) and its top view kept; then the run pages, then the dashboard.
+  // Every run is read once: its top view goes into the dashboard and its page's data into a
+  // spool (an anonymous temporary file, spool_file.hpp). The pages are written from the spool
+  // once every run has been read, so that a run the readers refuse stops the command before
+  // anything is written. Reading every run a second time for its page instead took half of
+  // `wpg view` of a study.
+  const std::string back = "../" + page_path.filename().string();
+  SpoolFile spool(page);
   json.key("runs").beginArray();
   std::size_t next = 0;  // in plan.finished
   for (std::size_t row = 0; row < table.rows; ++row) {
@@ -144,6 +150,7 @@ DashboardPages writeDashboard(const ViewerAssets& assets, const DashboardPlan& p
     json.key("top");
     writeTopView(json, run);
     json.endObject();
+    spool.append(runSceneJson(run, back, table.study + " dashboard"));
     ++next;
   }
   json.endArray();
@@ -158,11 +165,8 @@ DashboardPages writeDashboard(const ViewerAssets& assets, const DashboardPlan& p
   fs::create_directories(pages.runs_folder);
   // One script for every run page (a study of 100 runs would hold 100 copies otherwise).
   writeTextFile((fs::path(pages.runs_folder) / "wpg_viewer.js").string(), assets.script);
-  const std::string back = "../" + page_path.filename().string();
   for (std::size_t i = 0; i < plan.finished.size(); ++i) {
-    const LoadedRun run = loadRun(batch_file, names[plan.finished[i]], robots_directory);
-    writePage(assets, plan.run_pages[i], runSceneJson(run, back, table.study + " dashboard"),
-              "wpg_viewer.js");
+    writePage(assets, plan.run_pages[i], spool.read(i), "wpg_viewer.js");
     ++pages.runs;
   }
   writePage(assets, page, json.text());
