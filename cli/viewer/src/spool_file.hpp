@@ -25,7 +25,6 @@ class SpoolFile {
 
   void append(const std::string& piece);    // throws std::runtime_error (a full disk)
   std::string read(std::size_t index) const;  // the index-th piece appended
-  std::size_t size() const { return pieces_.size(); }
 
  private:
   int fd_ = -1;

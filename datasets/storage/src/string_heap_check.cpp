@@ -225,17 +225,14 @@ class OwnedId {
   hid_t id_;
 };
 
-// The heap IDs of a variable-length dataset (isVariable), checked.
-void checkDatasetData(const FileBytes& bytes, HeapChecker& heaps, hid_t dataset,
+// The heap IDs of a dataset whose `type` is variable-length (isVariable), checked.
+void checkDatasetData(const FileBytes& bytes, HeapChecker& heaps, hid_t dataset, hid_t type,
                       const std::string& file, const std::string& what) {
   std::uint64_t element_size = 1;
-  {
-    const OwnedId type(H5Dget_type(dataset), "H5Dget_type");
-    if (H5Tget_class(type.get()) == H5T_VLEN) {
-      const hid_t base = H5Tget_super(type.get());
-      element_size = base >= 0 ? H5Tget_size(base) : 0;
-      if (base >= 0) H5Tclose(base);
-    }
+  if (H5Tget_class(type) == H5T_VLEN) {
+    const hid_t base = H5Tget_super(type);
+    element_size = base >= 0 ? H5Tget_size(base) : 0;
+    if (base >= 0) H5Tclose(base);
   }
   const hssize_t points =
       H5Sget_simple_extent_npoints(OwnedId(H5Dget_space(dataset), "H5Dget_space").get());
@@ -288,7 +285,8 @@ herr_t visitObject(hid_t group, const char* name, const H5O_info_t* info, void* 
       try {
         const OwnedId type(H5Dget_type(dataset), "H5Dget_type");
         if (isVariable(type.get(), check.file, "dataset " + path)) {
-          checkDatasetData(check.bytes, check.heaps, dataset, check.file, "dataset " + path);
+          checkDatasetData(check.bytes, check.heaps, dataset, type.get(), check.file,
+                           "dataset " + path);
         }
       } catch (...) {
         H5Dclose(dataset);
@@ -369,7 +367,7 @@ void VariableDataChecker::check(const H5::DataSet& dataset, const std::string& f
   const H5::DataType type = dataset.getDataType();
   if (!isVariable(type.getId(), file, what)) return;
   OpenFile& open = openFile(dataset.getId(), objectPlace(dataset.getId()).file_number);
-  checkDatasetData(open.bytes, open.heaps, dataset.getId(), file, what);
+  checkDatasetData(open.bytes, open.heaps, dataset.getId(), type.getId(), file, what);
 }
 
 void VariableDataChecker::check(const H5::Attribute& attribute, const std::string& file,
